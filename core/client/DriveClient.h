@@ -1,0 +1,93 @@
+#pragma once
+
+#include "client/Reply.h"
+#include "link/ConnectionSettings.h"
+#include "parameters/DriveDescription.h"
+
+#include <QFuture>
+#include <QObject>
+
+#include <memory>
+
+namespace DriveDesk {
+
+class ClientWorker;
+class QThreadHolder;
+
+struct ClientOptions {
+    int timeoutMs = 0;   // 0: derived from the baud rate and the longest telegram
+    int retries = 3;     // on timeout, BCC/transmission/framing errors and busy (ack 6)
+    int maxInFlight = 4; // HSP5 only (the drive's limit); DIN66019(II) is always 1
+};
+
+struct ScanOptions {
+    bool values = true;       // read the value of every set
+    bool plaintexts = true;   // services 7, 9, 12
+    QList<quint8> groupPages; // empty: try every group address 00xxh..FFxxh
+};
+
+// A note on the wire for the telegram monitor.
+struct TrafficRecord {
+    enum class Kind : quint8 { Sent, Received, Error };
+    Kind kind = Kind::Sent;
+    qint64 msecsSinceEpoch = 0;
+    QByteArray bytes;
+    QString meaning; // describe(telegram) or the decode error
+};
+
+// The only way the rest of DriveDesk talks to a drive. The facade lives in the caller's
+// thread; the protocol work happens in a worker QObject on its own QThread. Every method is
+// thread-safe and returns at once; results arrive as QFutures (progress and cancel included).
+class DriveClient : public QObject
+{
+    Q_OBJECT
+public:
+    enum class State : quint8 { Disconnected, Connecting, Connected, Lost };
+    Q_ENUM(State)
+
+    explicit DriveClient(ConnectionSettings settings, ClientOptions options = {},
+                         QObject *parent = nullptr);
+    ~DriveClient() override;
+
+    const ConnectionSettings &settings() const { return m_settings; }
+    State state() const { return m_state; }
+
+    void connectToDrive();
+    void disconnectFromDrive();
+
+    // Queues a request. Invoke ids and the DIN66019II selection are the client's business.
+    QFuture<Reply> send(const Telegram &request);
+    // Typed conveniences over send().
+    QFuture<Reply> readValue(quint16 address, quint8 setMask);           // service 0
+    QFuture<Reply> writeValue(quint16 address, qint32 value, quint8 setMask);
+    QFuture<Reply> readValueStandard(quint16 address, quint8 set);      // service 1 (DIN66019: -1)
+    QFuture<Reply> writeValueStandard(quint16 address, qint32 value, quint8 set);
+    QFuture<Reply> resetToDefault(quint16 address, quint8 setMask);      // service 32 write
+    QFuture<Reply> readScope();                                          // service 18
+
+    // DIN66019II: which of the addresses answer (service 0 read of `probeAddress`).
+    QFuture<QList<int>> findDrives(int first = 0, int last = 239, quint16 probeAddress = 0x0000);
+    // Discovers groups, parameters, metadata and values. Progress in 0..1000; cancellable.
+    QFuture<DriveDescription> scan(ScanOptions options = {});
+
+    // Drops every queued and in-flight request (they finish as Cancelled).
+    void cancelAll();
+
+signals:
+    void stateChanged(DriveDesk::DriveClient::State state);
+    void connected();
+    void connectionFailed(const QString &reason);
+    void linkLost(const QString &reason);
+    void traffic(const DriveDesk::TrafficRecord &record);
+
+private:
+    void setState(State state);
+
+    ConnectionSettings m_settings;
+    ClientOptions m_options;
+    State m_state = State::Disconnected;
+    std::unique_ptr<QThreadHolder> m_thread;
+    ClientWorker *m_worker = nullptr; // owned by its thread, deleted on finished
+};
+
+} // namespace DriveDesk

@@ -1,0 +1,41 @@
+#pragma once
+
+#include "protocol/Telegram.h"
+
+#include <QMetaType>
+#include <QString>
+
+namespace DriveDesk {
+
+// The outcome of one request sent through the client.
+struct Reply {
+    enum class Status : quint8 {
+        Ok,           // answered with ack 0
+        Refused,      // answered with an error acknowledge: see response.ack
+        Timeout,      // no valid answer after every retry
+        LinkLost,     // the link went away while the request was queued or in flight
+        Cancelled,
+        NotConnected,
+        Unsupported,  // the protocol cannot express this request (encode failed)
+        NoReply,      // DIN66019II broadcast and group writes are never answered: sent, not confirmed
+    };
+
+    Status status = Status::NotConnected;
+    Telegram request;
+    Telegram response; // valid for Ok and Refused
+    int attempts = 0;
+    QString detail;    // what went wrong in transport terms, e.g. "3 BCC errors"
+
+    bool ok() const { return status == Status::Ok; }
+    Ack ack() const { return response.ack; }
+    template<typename T> const T *data() const { return ok() ? response.as<T>() : nullptr; }
+    // A sentence for a user: "drive refused: data invalid", "no answer from the drive after 4
+    // attempts (timeout 60 ms)".
+    QString message(Language language = Language::English) const;
+};
+
+QString statusName(Reply::Status status);
+
+} // namespace DriveDesk
+
+Q_DECLARE_METATYPE(DriveDesk::Reply)

@@ -1,0 +1,35 @@
+#pragma once
+
+#include <QByteArray>
+#include <QObject>
+#include <QString>
+
+namespace DriveDesk {
+
+// The byte pipe to a drive: serial port, TCP socket to a serial device server, or the
+// simulated drive in process. The client sees no difference between them.
+// Thread: a link lives in the client's worker thread and is used only from there.
+class Link : public QObject
+{
+    Q_OBJECT
+public:
+    using QObject::QObject;
+    ~Link() override = default;
+
+    // Starts opening; ends in opened() or failed().
+    virtual void open() = 0;
+    virtual void close() = 0;
+    virtual bool isOpen() const = 0;
+    virtual void send(const QByteArray &bytes) = 0;
+    // E.g. "serial /dev/ttyUSB0 38400 8E1", "tcp 127.0.0.1:4001", "simulated drive".
+    virtual QString description() const = 0;
+
+signals:
+    void opened();
+    void received(const QByteArray &bytes);
+    // Opening failed, or the open link was lost (unplugged adapter, closed socket). Reported
+    // at once; the link is closed afterwards.
+    void failed(const QString &reason);
+};
+
+} // namespace DriveDesk

@@ -1,0 +1,1 @@
+# tests of the shared service layer (Telegram, Acknowledge)
