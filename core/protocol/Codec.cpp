@@ -1,7 +1,5 @@
 #include "Codec.h"
 
-#include "din/DinCodec.h"
-#include "hsp5/Hsp5Codec.h"
 
 namespace DriveDesk {
 
@@ -25,13 +23,6 @@ QString decodeErrorKindName(DecodeError::Kind kind)
     case DecodeError::Kind::UnexpectedByte: return QStringLiteral("unexpected bytes");
     }
     return QString();
-}
-
-std::unique_ptr<ProtocolCodec> makeCodec(Protocol protocol)
-{
-    if (protocol == Protocol::Hsp5)
-        return std::make_unique<Hsp5Codec>();
-    return std::make_unique<DinCodec>(protocol);
 }
 
 QString protocolName(Protocol protocol)

@@ -74,6 +74,7 @@ public:
     virtual int bitsPerCharacter() const = 0;
 };
 
+// In drivedesk_codecs.
 std::unique_ptr<ProtocolCodec> makeCodec(Protocol protocol);
 
 QString protocolName(Protocol protocol);                 // "hsp5", "din66019ii", "din66019"

@@ -1,1 +1,0 @@
-target_sources(drivedesk_core PRIVATE)

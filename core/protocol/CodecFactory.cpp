@@ -1,0 +1,15 @@
+#include "Codec.h"
+
+#include "din/DinCodec.h"
+#include "hsp5/Hsp5Codec.h"
+
+namespace DriveDesk {
+
+std::unique_ptr<ProtocolCodec> makeCodec(Protocol protocol)
+{
+    if (protocol == Protocol::Hsp5)
+        return std::make_unique<Hsp5Codec>();
+    return std::make_unique<DinCodec>(protocol);
+}
+
+} // namespace DriveDesk

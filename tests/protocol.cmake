@@ -1,1 +1,0 @@
-# tests of the shared service layer (Telegram, Acknowledge)
