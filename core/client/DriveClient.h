@@ -12,7 +12,7 @@
 namespace DriveDesk {
 
 class ClientWorker;
-class QThreadHolder;
+class QThread;
 
 struct ClientOptions {
     int timeoutMs = 0;   // 0: derived from the baud rate and the longest telegram
@@ -86,7 +86,7 @@ private:
     ConnectionSettings m_settings;
     ClientOptions m_options;
     State m_state = State::Disconnected;
-    std::unique_ptr<QThreadHolder> m_thread;
+    QThread *m_thread = nullptr; // owned; stopped and joined in the destructor
     ClientWorker *m_worker = nullptr; // owned by its thread, deleted on finished
 };
 

@@ -74,6 +74,8 @@ struct DriveDescription {
     int language = 0;
     QString identification; // service 13 function 1, where the drive has it
     QList<GroupDescription> groups;
+    // Why the scan stopped early (cancelled, link lost), empty when it read everything.
+    QString incompleteReason;
 
     int parameterCount() const;
     const ParameterDescription *find(quint16 address) const;

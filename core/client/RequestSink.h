@@ -1,0 +1,23 @@
+#pragma once
+
+#include "client/Reply.h"
+
+#include <functional>
+
+namespace DriveDesk {
+
+// Where the drive scan and other multi-step jobs put their requests. The client worker is
+// one; a test can put a simulated drive behind another.
+// Thread: submit() and `done` both run in the sink's thread.
+class RequestSink
+{
+public:
+    virtual ~RequestSink() = default;
+    // Queues a request; `done` runs once when it finished in any way (ok, refused, failed,
+    // cancelled). The sink keeps at most as many in flight as the protocol allows.
+    virtual void submit(const Telegram &request, std::function<void(const Reply &)> done) = 0;
+    // Cancels every request this sink still holds; their `done` run with Cancelled.
+    virtual void cancelPending() = 0;
+};
+
+} // namespace DriveDesk
