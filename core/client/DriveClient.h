@@ -24,6 +24,8 @@ struct ScanOptions {
     bool values = true;       // read the value of every set
     bool plaintexts = true;   // services 7, 9, 12
     QList<quint8> groupPages; // empty: try every group address 00xxh..FFxxh
+    bool parameters = true;   // false: groups only (services 10, 11)
+    QList<quint16> onlyParameters; // non-empty: just these parameters of the groups found
 };
 
 // A note on the wire for the telegram monitor.

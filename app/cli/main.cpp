@@ -1,0 +1,33 @@
+// drivedesk-cli: DriveDesk on the command line.
+#include "cli/CliRunner.h"
+#include "cli/CommandLine.h"
+
+#include <QCoreApplication>
+#include <QTimer>
+
+#include <cstdio>
+
+int main(int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("drivedesk-cli"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(DRIVEDESK_VERSION));
+
+    QString error;
+    QString help;
+    const auto request = DriveDesk::parseCommandLine(QCoreApplication::arguments(), &error, &help);
+    if (!request) {
+        if (!help.isEmpty() && error.isEmpty()) {
+            std::fputs(qPrintable(help), stdout);
+            return 0;
+        }
+        std::fprintf(stderr, "drivedesk-cli: %s\n\n%s", qPrintable(error), qPrintable(help));
+        return 2;
+    }
+
+    DriveDesk::CliRunner runner(*request);
+    QObject::connect(&runner, &DriveDesk::CliRunner::finished, &app, &QCoreApplication::exit,
+                     Qt::QueuedConnection);
+    QTimer::singleShot(0, &runner, &DriveDesk::CliRunner::start);
+    return app.exec();
+}

@@ -1,0 +1,277 @@
+#include "CliRunner.h"
+
+#include "cli/ParameterTable.h"
+#include "parameters/DisplayScaling.h"
+#include "parameters/ParameterDocument.h"
+#include "parameters/ParameterId.h"
+#include "parameters/ParameterProperties.h"
+#include "parameters/Plaintexts.h"
+
+#include <QFutureWatcher>
+
+#include <cstdio>
+#include <unistd.h>
+
+namespace DriveDesk {
+
+namespace {
+
+QString setListText(quint8 mask)
+{
+    if (mask == 0xFF)
+        return QStringLiteral("all sets");
+    QStringList sets;
+    for (int s = 0; s < kParameterSets; ++s) {
+        if (mask & (1u << s))
+            sets << QString::number(s);
+    }
+    return (sets.size() == 1 ? QStringLiteral("set ") : QStringLiteral("sets ")) + sets.join(QLatin1Char(','));
+}
+
+} // namespace
+
+CliRunner::CliRunner(CliRequest request, QObject *parent)
+    : QObject(parent)
+    , m_request(std::move(request))
+    , m_out(stdout)
+    , m_err(stderr)
+{}
+
+CliRunner::~CliRunner() = default;
+
+void CliRunner::start()
+{
+    ClientOptions options;
+    options.timeoutMs = m_request.timeoutMs;
+    m_client = std::make_unique<DriveClient>(m_request.connection, options);
+    connect(m_client.get(), &DriveClient::connected, this, &CliRunner::runCommand);
+    connect(m_client.get(), &DriveClient::connectionFailed, this, [this](const QString &reason) {
+        fail(3, QStringLiteral("cannot connect to %1: %2")
+                    .arg(m_request.connection.displayName(), reason));
+    });
+    m_client->connectToDrive();
+}
+
+void CliRunner::runCommand()
+{
+    switch (m_request.command) {
+    case CliRequest::Command::Info: runInfo(); break;
+    case CliRequest::Command::Scan: runScan(); break;
+    case CliRequest::Command::Read: runRead(); break;
+    case CliRequest::Command::Write: runWrite(); break;
+    }
+}
+
+void CliRunner::scan(const ScanOptions &options, std::function<void(const DriveDescription &)> next)
+{
+    auto *watcher = new QFutureWatcher<DriveDescription>(this);
+    const bool showProgress = !m_request.quiet && isatty(STDERR_FILENO);
+    if (showProgress) {
+        connect(watcher, &QFutureWatcher<DriveDescription>::progressTextChanged, this,
+                [this, watcher](const QString &text) {
+                    const int range = std::max(1, watcher->progressMaximum());
+                    m_err << QStringLiteral("\r\x1b[K[%1%] %2")
+                                 .arg(watcher->progressValue() * 100 / range, 3)
+                                 .arg(text)
+                          << Qt::flush;
+                });
+    }
+    connect(watcher, &QFutureWatcher<DriveDescription>::finished, this,
+            [this, watcher, showProgress, next = std::move(next)] {
+                if (showProgress)
+                    m_err << QStringLiteral("\r\x1b[K") << Qt::flush;
+                const DriveDescription description = watcher->future().result();
+                watcher->deleteLater();
+                next(description);
+            });
+    watcher->setFuture(m_client->scan(options));
+}
+
+void CliRunner::runInfo()
+{
+    ScanOptions groupsOnly;
+    groupsOnly.parameters = false;
+    groupsOnly.values = false;
+    groupsOnly.plaintexts = false;
+    scan(groupsOnly, [this](const DriveDescription &drive) {
+        if (!drive.incompleteReason.isEmpty())
+            return fail(1, QStringLiteral("could not read the groups: ") + drive.incompleteReason);
+        // The identification parameters live in the Sy group (page 00h).
+        ScanOptions system;
+        system.groupPages = {0};
+        scan(system, [this, drive](const DriveDescription &systemGroup) {
+            m_out << ParameterTable::info(drive, systemGroup, language());
+            if (!systemGroup.incompleteReason.isEmpty())
+                return fail(1, systemGroup.incompleteReason);
+            done();
+        });
+    });
+}
+
+void CliRunner::runScan()
+{
+    ScanOptions options;
+    options.values = m_request.values;
+    scan(options, [this](const DriveDescription &drive) {
+        if (m_request.format == CliRequest::Format::Json)
+            m_out << QString::fromUtf8(ParameterDocument::toJson(drive));
+        else
+            m_out << ParameterTable::scan(drive, m_request.values, language());
+        m_out.flush();
+        if (!drive.incompleteReason.isEmpty())
+            return fail(1, QStringLiteral("scan incomplete: ") + drive.incompleteReason);
+        done();
+    });
+}
+
+void CliRunner::lookUpParameter(
+    std::function<void(const GroupDescription &, const ParameterDescription &)> next)
+{
+    ScanOptions groupsOnly;
+    groupsOnly.parameters = false;
+    scan(groupsOnly, [this, next = std::move(next)](const DriveDescription &drive) {
+        if (!drive.incompleteReason.isEmpty())
+            return fail(1, QStringLiteral("could not read the groups: ") + drive.incompleteReason);
+        QString error;
+        const auto address = ParameterId::parse(m_request.parameter, drive, &error);
+        if (!address)
+            return fail(2, error);
+        ScanOptions one;
+        one.groupPages = {quint8(*address >> 8)};
+        one.onlyParameters = {*address};
+        one.values = false;
+        scan(one, [this, address = *address, next](const DriveDescription &found) {
+            const ParameterDescription *parameter = found.find(address);
+            if (!found.incompleteReason.isEmpty())
+                return fail(1, found.incompleteReason);
+            if (!parameter || found.groups.isEmpty())
+                return fail(2, QStringLiteral("the drive has no parameter %1").arg(m_request.parameter));
+            if (!parameter->error.isEmpty())
+                return fail(1, QStringLiteral("%1: %2").arg(m_request.parameter, parameter->error));
+            next(found.groups.constFirst(), *parameter);
+        });
+    });
+}
+
+void CliRunner::runRead()
+{
+    lookUpParameter([this](const GroupDescription &group, const ParameterDescription &parameter) {
+        const QString id = parameterId(group.id, parameter.number());
+        QFuture<Reply> reply = m_request.set
+                                   ? m_client->readValue(parameter.address, quint8(1u << *m_request.set))
+                                   : m_client->readValueStandard(parameter.address, 0);
+        const QString where = m_request.set ? QStringLiteral("set %1").arg(*m_request.set)
+                                            : QStringLiteral("active set");
+        reply.then(this, [this, id, where, parameter](const Reply &r) {
+            if (!r.ok())
+                return fail(1, QStringLiteral("%1: %2").arg(id, r.message(language())));
+            const qint32 raw = r.data<ParameterValue>()->value;
+            m_out << QStringLiteral("%1  %2 = %3  (raw %4, %5)\n")
+                         .arg(id, parameter.name, valueText(parameter, raw))
+                         .arg(raw)
+                         .arg(where);
+            done();
+        });
+    });
+}
+
+void CliRunner::runWrite()
+{
+    lookUpParameter([this](const GroupDescription &group, const ParameterDescription &parameter) {
+        const QString id = parameterId(group.id, parameter.number());
+        QString error;
+        std::optional<qint32> raw;
+        if (m_request.raw) {
+            bool ok = false;
+            const QString text = m_request.value.trimmed();
+            const qint64 n = text.startsWith(QLatin1String("0x"), Qt::CaseInsensitive)
+                                 ? text.mid(2).toLongLong(&ok, 16)
+                                 : text.toLongLong(&ok);
+            if (ok && n >= std::numeric_limits<qint32>::min() && n <= std::numeric_limits<qint32>::max())
+                raw = qint32(n);
+            else
+                error = QStringLiteral("'%1' is not a raw 32-bit integer").arg(m_request.value);
+        } else {
+            const Plaintexts plaintexts(parameter.plaintexts, DisplayScaling(parameter.scaling));
+            QString plaintextError;
+            if (!plaintexts.isEmpty())
+                raw = plaintexts.value(m_request.value, &plaintextError);
+            if (!raw)
+                raw = DisplayScaling(parameter.scaling).parse(m_request.value, &error);
+            if (!raw && !plaintextError.isEmpty())
+                error = plaintextError + QStringLiteral("; ") + error;
+        }
+        if (!raw)
+            return fail(2, QStringLiteral("%1: %2").arg(id, error));
+        if (*raw < parameter.minimum || *raw > parameter.maximum) {
+            return fail(2, QStringLiteral("%1: %2 is outside the limits %3 .. %4; nothing was written")
+                               .arg(id, valueText(parameter, *raw), valueText(parameter, parameter.minimum),
+                                    valueText(parameter, parameter.maximum)));
+        }
+        const quint8 mask = m_request.setMask;
+        QFuture<Reply> reply = mask ? m_client->writeValue(parameter.address, *raw, mask)
+                                    : m_client->writeValueStandard(parameter.address, *raw, 0);
+        reply.then(this, [this, id, parameter, mask](const Reply &r) {
+            if (!r.ok())
+                return fail(1, QStringLiteral("%1: %2").arg(id, r.message(language())));
+            readBack(parameter, mask);
+        });
+    });
+}
+
+// A write counts only once the drive shows the value: read every written set back.
+void CliRunner::readBack(const ParameterDescription &parameter, quint8 setMask)
+{
+    const QString id = m_request.parameter;
+    QList<QFuture<Reply>> reads;
+    if (setMask == 0) {
+        reads << m_client->readValueStandard(parameter.address, 0);
+    } else {
+        for (int s = 0; s < kParameterSets; ++s) {
+            if (setMask & (1u << s))
+                reads << m_client->readValue(parameter.address, quint8(1u << s));
+        }
+    }
+    QtFuture::whenAll(reads.begin(), reads.end())
+        .then(this, [this, id, parameter, setMask](const QList<QFuture<Reply>> &results) {
+            QStringList shown;
+            for (const QFuture<Reply> &future : results) {
+                const Reply r = future.result();
+                if (!r.ok())
+                    return fail(1, QStringLiteral("%1: written, but reading it back failed: %2")
+                                       .arg(id, r.message(language())));
+                shown << valueText(parameter, r.data<ParameterValue>()->value);
+            }
+            shown.removeDuplicates();
+            m_out << QStringLiteral("%1  %2 = %3  (%4)\n")
+                         .arg(id, parameter.name, shown.join(QStringLiteral(" / ")),
+                              setMask ? setListText(setMask) : QStringLiteral("active set"));
+            done();
+        });
+}
+
+QString CliRunner::valueText(const ParameterDescription &parameter, qint32 raw) const
+{
+    return ParameterTable::valueText(parameter, raw);
+}
+
+void CliRunner::fail(int exitCode, const QString &message)
+{
+    if (m_finished)
+        return;
+    m_finished = true;
+    m_out.flush();
+    m_err << QStringLiteral("drivedesk-cli: ") << message << Qt::endl;
+    emit finished(exitCode);
+}
+
+void CliRunner::done()
+{
+    if (m_finished)
+        return;
+    m_finished = true;
+    m_out.flush();
+    emit finished(0);
+}
+
+} // namespace DriveDesk

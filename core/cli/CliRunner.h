@@ -1,0 +1,53 @@
+#pragma once
+
+#include "cli/CommandLine.h"
+#include "client/DriveClient.h"
+
+#include <QObject>
+#include <QTextStream>
+
+#include <memory>
+
+namespace DriveDesk {
+
+// Runs one drivedesk-cli command against a drive: connects, does the work asynchronously
+// through the client, prints the result, and ends with finished(exit code).
+// Exit codes: 0 done, 1 the drive refused or the work could not be completed,
+// 2 bad input (refused before anything was sent), 3 no connection.
+class CliRunner : public QObject
+{
+    Q_OBJECT
+public:
+    explicit CliRunner(CliRequest request, QObject *parent = nullptr);
+    ~CliRunner() override;
+
+    void start();
+
+signals:
+    void finished(int exitCode);
+
+private:
+    void runCommand();
+    void runInfo();
+    void runScan();
+    void runRead();
+    void runWrite();
+    // Finds the parameter named on the command line and reads its metadata, then calls next.
+    void lookUpParameter(std::function<void(const GroupDescription &, const ParameterDescription &)> next);
+    void readBack(const ParameterDescription &parameter, quint8 setMask);
+    // Scans with progress on stderr and hands the result to done.
+    void scan(const ScanOptions &options, std::function<void(const DriveDescription &)> done);
+
+    void fail(int exitCode, const QString &message);
+    void done();
+    QString valueText(const ParameterDescription &parameter, qint32 raw) const;
+    Language language() const { return m_request.connection.language; }
+
+    CliRequest m_request;
+    std::unique_ptr<DriveClient> m_client;
+    QTextStream m_out;
+    QTextStream m_err;
+    bool m_finished = false;
+};
+
+} // namespace DriveDesk

@@ -1,0 +1,220 @@
+#include "CommandLine.h"
+
+#include <QCommandLineParser>
+#include <QRegularExpression>
+
+namespace DriveDesk {
+
+namespace {
+
+QString usage()
+{
+    return QStringLiteral(
+        "Usage: drivedesk-cli --connect TARGET [options] COMMAND [arguments]\n"
+        "\n"
+        "Talks to a KEB drive over HSP5, DIN66019II or DIN66019.\n"
+        "\n"
+        "Connection:\n"
+        "  --connect TARGET     tcp:HOST:PORT, serial:DEVICE or sim (the simulated drive)\n"
+        "  --protocol NAME      hsp5 (default), din66019ii or din66019\n"
+        "  --address N          drive address on a DIN66019(II) bus, 0..239 (default 1)\n"
+        "  --baud N             baud rate (default 38400)\n"
+        "  --language en|de     language of the drive's texts and of messages (default en)\n"
+        "  --timeout MS         answer timeout per request (default: from the baud rate)\n"
+        "  --quiet              no progress on standard error\n"
+        "\n"
+        "Commands:\n"
+        "  info                         identification, groups and parameter counts\n"
+        "  scan [--format json|table] [--values]\n"
+        "                               every parameter with its metadata (and values)\n"
+        "  read PARAM [--set N]         one value; PARAM is ru.3, ru.03 or 0x0203\n"
+        "  write PARAM VALUE [--sets LIST] [--raw]\n"
+        "                               VALUE in display units (12.50) or a plaintext,\n"
+        "                               raw with --raw; LIST like 0,2-4 or all\n");
+}
+
+} // namespace
+
+std::optional<quint8> parseSetList(const QString &text, QString *error)
+{
+    const QString list = text.trimmed().toLower();
+    if (list == QLatin1String("all"))
+        return quint8(0xFF);
+    quint8 mask = 0;
+    for (const QString &part : list.split(QLatin1Char(','))) {
+        const QStringList bounds = part.trimmed().split(QLatin1Char('-'));
+        bool okFirst = false;
+        bool okLast = false;
+        const int first = bounds.value(0).toInt(&okFirst);
+        const int last = bounds.size() == 2 ? bounds[1].toInt(&okLast) : first;
+        okLast = bounds.size() == 2 ? okLast : okFirst;
+        if (bounds.size() > 2 || !okFirst || !okLast || first < 0 || last > 7 || first > last) {
+            *error = QStringLiteral("'%1' is not a set list: use sets 0..7 like 0,2-4 or all")
+                         .arg(text);
+            return std::nullopt;
+        }
+        for (int set = first; set <= last; ++set)
+            mask |= quint8(1u << set);
+    }
+    return mask;
+}
+
+std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString *error,
+                                           QString *helpText)
+{
+    QCommandLineParser parser;
+    parser.setOptionsAfterPositionalArgumentsMode(QCommandLineParser::ParseAsOptions);
+    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
+                                  QStringLiteral("help"));
+    const QCommandLineOption connect(QStringLiteral("connect"), {}, QStringLiteral("target"));
+    const QCommandLineOption protocol(QStringLiteral("protocol"), {}, QStringLiteral("name"));
+    const QCommandLineOption address(QStringLiteral("address"), {}, QStringLiteral("n"));
+    const QCommandLineOption baud(QStringLiteral("baud"), {}, QStringLiteral("n"));
+    const QCommandLineOption language(QStringLiteral("language"), {}, QStringLiteral("lang"));
+    const QCommandLineOption timeout(QStringLiteral("timeout"), {}, QStringLiteral("ms"));
+    const QCommandLineOption quiet(QStringLiteral("quiet"), QStringLiteral("quiet"));
+    const QCommandLineOption format(QStringLiteral("format"), {}, QStringLiteral("format"));
+    const QCommandLineOption values(QStringLiteral("values"), QStringLiteral("values"));
+    const QCommandLineOption set(QStringLiteral("set"), {}, QStringLiteral("n"));
+    const QCommandLineOption sets(QStringLiteral("sets"), {}, QStringLiteral("list"));
+    const QCommandLineOption raw(QStringLiteral("raw"), QStringLiteral("raw"));
+    parser.addOptions({help, connect, protocol, address, baud, language, timeout, quiet, format,
+                       values, set, sets, raw});
+    *helpText = usage();
+
+    // A negative value ("write uF.07 -5") is not an option: shield such words from the parser.
+    QStringList shielded = arguments;
+    QStringList negatives;
+    static const QRegularExpression negativeNumber(QStringLiteral("^-[0-9.,]"));
+    for (qsizetype i = 1; i < shielded.size(); ++i) {
+        if (negativeNumber.match(shielded[i]).hasMatch()) {
+            negatives << shielded[i];
+            shielded[i] = QStringLiteral("\x01%1").arg(negatives.size() - 1);
+        }
+    }
+    if (!parser.parse(shielded)) {
+        *error = parser.errorText();
+        return std::nullopt;
+    }
+    if (parser.isSet(help)) {
+        error->clear();
+        return std::nullopt;
+    }
+    helpText->clear();
+
+    CliRequest request;
+    if (!parser.isSet(connect)) {
+        *error = QStringLiteral("--connect is missing: give tcp:HOST:PORT, serial:DEVICE or sim");
+        return std::nullopt;
+    }
+    if (!request.connection.parseTarget(parser.value(connect), error))
+        return std::nullopt;
+    if (parser.isSet(protocol)) {
+        const auto p = protocolFromName(parser.value(protocol));
+        if (!p) {
+            *error = QStringLiteral("unknown protocol '%1': use hsp5, din66019ii or din66019")
+                         .arg(parser.value(protocol));
+            return std::nullopt;
+        }
+        request.connection.protocol = *p;
+    }
+    auto integer = [&](const QCommandLineOption &option, int low, int high, int *out) {
+        if (!parser.isSet(option))
+            return true;
+        bool ok = false;
+        const int n = parser.value(option).toInt(&ok);
+        if (!ok || n < low || n > high) {
+            *error = QStringLiteral("--%1 %2: expected a number from %3 to %4")
+                         .arg(option.names().constFirst(), parser.value(option))
+                         .arg(low)
+                         .arg(high);
+            return false;
+        }
+        *out = n;
+        return true;
+    };
+    int baudRate = request.connection.baudRate;
+    int setNumber = -1;
+    if (!integer(address, 0, 239, &request.connection.driveAddress)
+        || !integer(baud, 50, 4000000, &baudRate) || !integer(timeout, 1, 600000, &request.timeoutMs)
+        || !integer(set, 0, 7, &setNumber))
+        return std::nullopt;
+    request.connection.baudRate = baudRate;
+    request.connection.simulation.baudRate = baudRate;
+    if (setNumber >= 0)
+        request.set = setNumber;
+    if (parser.isSet(language)) {
+        const QString lang = parser.value(language).toLower();
+        if (lang == QLatin1String("en")) {
+            request.connection.language = Language::English;
+        } else if (lang == QLatin1String("de")) {
+            request.connection.language = Language::German;
+        } else {
+            *error = QStringLiteral("unknown language '%1': use en or de").arg(lang);
+            return std::nullopt;
+        }
+    }
+    if (parser.isSet(format)) {
+        const QString f = parser.value(format).toLower();
+        if (f != QLatin1String("json") && f != QLatin1String("table")) {
+            *error = QStringLiteral("unknown format '%1': use json or table").arg(f);
+            return std::nullopt;
+        }
+        request.format = f == QLatin1String("json") ? CliRequest::Format::Json
+                                                     : CliRequest::Format::Table;
+    }
+    if (parser.isSet(sets)) {
+        const auto mask = parseSetList(parser.value(sets), error);
+        if (!mask)
+            return std::nullopt;
+        request.setMask = *mask;
+    }
+    request.values = parser.isSet(values);
+    request.raw = parser.isSet(raw);
+    request.quiet = parser.isSet(quiet);
+
+    QStringList positional = parser.positionalArguments();
+    for (QString &word : positional) {
+        if (word.startsWith(QStringLiteral("\x01")))
+            word = negatives.value(word.mid(1).toInt());
+    }
+    const QString command = positional.value(0).toLower();
+    const qsizetype expected = command == QLatin1String("read")    ? 2
+                               : command == QLatin1String("write") ? 3
+                                                                  : 1;
+    if (command == QLatin1String("info")) {
+        request.command = CliRequest::Command::Info;
+    } else if (command == QLatin1String("scan")) {
+        request.command = CliRequest::Command::Scan;
+    } else if (command == QLatin1String("read")) {
+        request.command = CliRequest::Command::Read;
+    } else if (command == QLatin1String("write")) {
+        request.command = CliRequest::Command::Write;
+    } else {
+        *error = command.isEmpty() ? QStringLiteral("no command: use info, scan, read or write")
+                                   : QStringLiteral("unknown command '%1': use info, scan, read or write")
+                                         .arg(positional.value(0));
+        return std::nullopt;
+    }
+    if (positional.size() != expected) {
+        *error = command == QLatin1String("read")
+                     ? QStringLiteral("read takes one parameter, e.g. read ru.03")
+                 : command == QLatin1String("write")
+                     ? QStringLiteral("write takes a parameter and a value, e.g. write uF.07 70.0")
+                     : QStringLiteral("%1 takes no arguments").arg(command);
+        return std::nullopt;
+    }
+    request.parameter = positional.value(1);
+    request.value = positional.value(2);
+    if (request.command != CliRequest::Command::Write && (request.raw || parser.isSet(sets))) {
+        *error = QStringLiteral("--raw and --sets belong to write");
+        return std::nullopt;
+    }
+    if (request.command != CliRequest::Command::Read && request.set) {
+        *error = QStringLiteral("--set belongs to read (write takes --sets)");
+        return std::nullopt;
+    }
+    return request;
+}
+
+} // namespace DriveDesk

@@ -1,0 +1,39 @@
+#pragma once
+
+#include "link/ConnectionSettings.h"
+
+#include <QList>
+#include <QString>
+#include <QStringList>
+
+#include <optional>
+
+namespace DriveDesk {
+
+// What `drivedesk-cli` was asked to do, parsed and checked before anything is sent.
+struct CliRequest {
+    enum class Command : quint8 { Info, Scan, Read, Write };
+    enum class Format : quint8 { Table, Json };
+
+    ConnectionSettings connection;
+    Command command = Command::Info;
+    Format format = Format::Table;
+    bool values = false;      // scan: read the value of every set
+    QString parameter;        // read/write: "ru.3", "ru.03", "0x0203"
+    QString value;            // write: in display units or a plaintext, raw with --raw
+    std::optional<int> set;   // read --set N
+    quint8 setMask = 0;       // write --sets LIST; 0: the active set (service 1)
+    bool raw = false;
+    int timeoutMs = 0;
+    bool quiet = false;       // no progress on stderr
+};
+
+// The usage text and the parse. Returns nothing and sets *error (naming the bad argument)
+// when the arguments do not make sense; *helpText is set for --help.
+std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString *error,
+                                           QString *helpText);
+
+// "0,2-4,7" or "all" -> bit mask of sets 0..7; nothing and *error on anything else.
+std::optional<quint8> parseSetList(const QString &text, QString *error);
+
+} // namespace DriveDesk
