@@ -1,0 +1,30 @@
+#pragma once
+
+#include "protocol/Language.h"
+
+#include <QString>
+
+#include <optional>
+
+namespace DriveDesk {
+
+// The password levels of properties 1 (bits 0-2 read, 3-5 write) and of group properties
+// (bits 0-2), seed 002 2.6.1 and 2.12.1.
+enum class PasswordLevel : quint8 {
+    CpReadOnly = 0,
+    CpReadWrite = 1,
+    CpService = 2,
+    Application = 3,
+    DriveMode = 4,
+    Unused = 5,
+    Security = 6,
+    Supervisor = 7,
+};
+
+QString passwordLevelName(PasswordLevel level, Language language = Language::English);
+
+// What the password parameter reads while the level is in force: -1 (CP read only) .. -8.
+qint32 passwordReadValue(PasswordLevel level);
+std::optional<PasswordLevel> passwordLevelFromReadValue(qint32 value);
+
+} // namespace DriveDesk

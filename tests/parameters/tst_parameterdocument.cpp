@@ -1,0 +1,348 @@
+#include "SampleDrive.h"
+#include "parameters/ParameterDocument.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTest>
+
+using namespace DriveDesk;
+using namespace DriveDesk::TestData;
+
+namespace {
+
+QJsonObject sampleObject()
+{
+    return QJsonDocument::fromJson(ParameterDocument::toJson(sample())).object();
+}
+
+// The JSON with the value at `path` replaced; an undefined value removes it.
+QJsonValue edited(const QJsonValue &node, QVariantList path, const QJsonValue &value)
+{
+    if (path.isEmpty())
+        return value;
+    const QVariant step = path.takeFirst();
+    if (step.typeId() == QMetaType::Int) {
+        QJsonArray array = node.toArray();
+        if (path.isEmpty() && value.isUndefined())
+            array.removeAt(step.toInt());
+        else
+            array[step.toInt()] = edited(array.at(step.toInt()), path, value);
+        return array;
+    }
+    QJsonObject object = node.toObject();
+    if (path.isEmpty() && value.isUndefined())
+        object.remove(step.toString());
+    else
+        object[step.toString()] = edited(object.value(step.toString()), path, value);
+    return object;
+}
+
+QByteArray sampleWith(const QVariantList &path, const QJsonValue &value)
+{
+    return QJsonDocument(edited(sampleObject(), path, value).toObject()).toJson();
+}
+
+QVariantList state(const QString &field)
+{
+    return { QStringLiteral("groups"), 1, QStringLiteral("parameters"), 0, field };
+}
+
+} // namespace
+
+// The parameter file as JSON: exact round trip, clear errors naming the place.
+class TestParameterDocument : public QObject
+{
+    Q_OBJECT
+private slots:
+    void roundTripIsExact()
+    {
+        const DriveDescription drive = sample();
+        const QByteArray json = ParameterDocument::toJson(drive);
+        QString error;
+        const std::optional<DriveDescription> back = ParameterDocument::fromJson(json, &error);
+        QVERIFY2(back, qPrintable(error));
+        QCOMPARE(back->groups.size(), drive.groups.size());
+        for (qsizetype g = 0; g < drive.groups.size(); ++g) {
+            for (qsizetype p = 0; p < drive.groups[g].parameters.size(); ++p) {
+                const ParameterDescription &expected = drive.groups[g].parameters[p];
+                const ParameterDescription &actual = back->groups[g].parameters[p];
+                QVERIFY2(actual == expected, qPrintable(expected.name));
+            }
+        }
+        QVERIFY(*back == drive);
+        QCOMPARE(ParameterDocument::toJson(*back), json);
+    }
+
+    void emptyDescriptionRoundTrips()
+    {
+        const DriveDescription empty;
+        const std::optional<DriveDescription> back
+            = ParameterDocument::fromJson(ParameterDocument::toJson(empty));
+        QVERIFY(back);
+        QVERIFY(*back == empty);
+    }
+
+    void documentedExampleLoads()
+    {
+        // The example of docs/parameter-file.md.
+        const QByteArray json = R"({
+    "format": "drivedesk-parameters",
+    "version": 1,
+    "drive": {
+        "protocol": "hsp5",
+        "connection": "/dev/ttyUSB0",
+        "address": -1,
+        "language": 0,
+        "identification": "",
+        "incompleteReason": ""
+    },
+    "groups": [
+        {
+            "id": "ru", "index": 1, "address": 512, "name": "Run", "shortcut": "r",
+            "properties": 24, "highestNumber": 43, "parameterCount": 30,
+            "parameters": [
+                {
+                    "id": "ru.03", "address": 515, "name": "Actual frequency",
+                    "min": -32000, "max": 32000, "default": 0,
+                    "unit": "Hz", "decimals": 2, "setProgrammable": false, "readOnly": true,
+                    "values": [-4180],
+                    "properties1": 1024, "properties2": 5,
+                    "scaling": {"divisor": 80, "multiplier": 1, "offset": 0, "flags": 530},
+                    "plaintextIndices": {"displayIndex": 0, "displayCount": 0,
+                                         "combivisIndex": 0, "combivisCount": 0},
+                    "plaintextDefinitions": [],
+                    "plaintexts": []
+                }
+            ]
+        }
+    ]
+})";
+        QString error;
+        const std::optional<DriveDescription> drive = ParameterDocument::fromJson(json, &error);
+        QVERIFY2(drive, qPrintable(error));
+        const ParameterDescription *hz = drive->find(0x0203);
+        QVERIFY(hz);
+        QCOMPARE(hz->values[0], -4180);
+        QVERIFY(!hz->values[1]);
+        QCOMPARE(hz->scaling.address, quint16(0x0203));
+        QCOMPARE(drive->groups.first().shortcut, 'r');
+    }
+
+    void fileHasTheDocumentedNames()
+    {
+        const QJsonObject root = sampleObject();
+        QCOMPARE(root.value(QStringLiteral("format")).toString(),
+                 QStringLiteral("drivedesk-parameters"));
+        QCOMPARE(root.value(QStringLiteral("version")).toInt(), 1);
+        const QJsonObject drive = root.value(QStringLiteral("drive")).toObject();
+        QCOMPARE(drive.value(QStringLiteral("protocol")).toString(), QStringLiteral("hsp5"));
+        QCOMPARE(drive.value(QStringLiteral("address")).toInt(), 1);
+
+        const QJsonObject ru = root.value(QStringLiteral("groups")).toArray().at(1).toObject();
+        QCOMPARE(ru.value(QStringLiteral("id")).toString(), QStringLiteral("ru"));
+        QCOMPARE(ru.value(QStringLiteral("index")).toInt(), 1);
+        QCOMPARE(ru.value(QStringLiteral("address")).toInt(), 0x0200);
+        QCOMPARE(ru.value(QStringLiteral("shortcut")).toString(), QStringLiteral("ä"));
+        const QJsonArray parameters = ru.value(QStringLiteral("parameters")).toArray();
+
+        const QJsonObject state = parameters.at(0).toObject();
+        QCOMPARE(state.value(QStringLiteral("id")).toString(), QStringLiteral("ru.0"));
+        QCOMPARE(state.value(QStringLiteral("min")).toInteger(), qint64(kMin));
+        QCOMPARE(state.value(QStringLiteral("max")).toInteger(), qint64(kMax));
+        QCOMPARE(state.value(QStringLiteral("default")).toInt(), -1);
+        QCOMPARE(state.value(QStringLiteral("properties1")).toInteger(), qint64(0xFFFFFFFF));
+        QCOMPARE(state.value(QStringLiteral("setProgrammable")).toBool(), true);
+        QCOMPARE(state.value(QStringLiteral("readOnly")).toBool(), false);
+        QCOMPARE(state.value(QStringLiteral("error")).toString(),
+                 QStringLiteral("set 1: data invalid"));
+        const QJsonArray values = state.value(QStringLiteral("values")).toArray();
+        QCOMPARE(values.size(), 8);
+        QVERIFY(values.at(1).isNull()); // a failed read, never a guessed number
+        QCOMPARE(values.at(3).toInteger(), qint64(kMin));
+        const QJsonArray plaintexts = state.value(QStringLiteral("plaintexts")).toArray();
+        QCOMPARE(plaintexts.size(), 5);
+        QCOMPARE(plaintexts.at(2).toObject().value(QStringLiteral("text")).toString(),
+                 QStringLiteral("forward"));
+        QCOMPARE(plaintexts.at(2).toObject().value(QStringLiteral("value")).toInt(), 2);
+        QCOMPARE(plaintexts.at(2).toObject().value(QStringLiteral("definition")).toInt(), 1);
+        QCOMPARE(state.value(QStringLiteral("plaintextDefinitions")).toArray().size(), 4);
+
+        const QJsonObject hz = parameters.at(1).toObject();
+        QCOMPARE(hz.value(QStringLiteral("id")).toString(), QStringLiteral("ru.3"));
+        QCOMPARE(hz.value(QStringLiteral("unit")).toString(), QStringLiteral("Hz"));
+        QCOMPARE(hz.value(QStringLiteral("decimals")).toInt(), 2);
+        QCOMPARE(hz.value(QStringLiteral("readOnly")).toBool(), true);
+        QVERIFY(!hz.contains(QStringLiteral("error")));
+        const QJsonObject scaling = hz.value(QStringLiteral("scaling")).toObject();
+        QCOMPARE(scaling.value(QStringLiteral("divisor")).toInt(), 80);
+        QVERIFY(!scaling.contains(QStringLiteral("address"))); // the parameter's own
+
+        const QJsonObject bus = root.value(QStringLiteral("groups"))
+                                    .toArray()
+                                    .at(0)
+                                    .toObject()
+                                    .value(QStringLiteral("parameters"))
+                                    .toArray()
+                                    .at(0)
+                                    .toObject();
+        QCOMPARE(bus.value(QStringLiteral("values")).toArray(), (QJsonArray { 3 }));
+        QCOMPARE(bus.value(QStringLiteral("id")).toString(), QStringLiteral("Sy.7"));
+    }
+
+    void hostileInputIsRefusedWithItsPlace_data()
+    {
+        QTest::addColumn<QByteArray>("json");
+        QTest::addColumn<QString>("error");
+        const QByteArray good = ParameterDocument::toJson(sample());
+        QTest::newRow("truncated")
+            << good.left(good.size() / 2) << QStringLiteral("not valid JSON: ");
+        QTest::newRow("empty") << QByteArray() << QStringLiteral("not valid JSON: ");
+        QTest::newRow("binary") << QByteArray("\x00\xFF\xFE{", 4)
+                                << QStringLiteral("not valid JSON: ");
+        QTest::newRow("array") << QByteArray("[1, 2]")
+                               << QStringLiteral("not a DriveDesk parameter file: the document is "
+                                                 "not a JSON object");
+        QTest::newRow("format") << sampleWith({ QStringLiteral("format") }, QStringLiteral("csv"))
+                                << QStringLiteral("not a DriveDesk parameter file: format is "
+                                                  "'csv', expected 'drivedesk-parameters'");
+        QTest::newRow("no format")
+            << sampleWith({ QStringLiteral("format") }, QJsonValue::Undefined)
+            << QStringLiteral("not a DriveDesk parameter file: format is "
+                              "missing or not a string, expected "
+                              "'drivedesk-parameters'");
+        QTest::newRow("version 2") << sampleWith({ QStringLiteral("version") }, 2)
+                                   << QStringLiteral("version: 2 is not supported (this DriveDesk "
+                                                     "reads version 1)");
+        QTest::newRow("version text")
+            << sampleWith({ QStringLiteral("version") }, QStringLiteral("1"))
+            << QStringLiteral("version: missing or not a number");
+        QTest::newRow("no drive") << sampleWith({ QStringLiteral("drive") }, QJsonValue::Undefined)
+                                  << QStringLiteral("drive: missing");
+        QTest::newRow("drive address")
+            << sampleWith({ QStringLiteral("drive"), QStringLiteral("address") }, 300)
+            << QStringLiteral("drive.address: 300 is outside -1..255");
+        QTest::newRow("groups object") << sampleWith({ QStringLiteral("groups") }, QJsonObject())
+                                       << QStringLiteral("groups: expected an array");
+        QTest::newRow("group number") << sampleWith({ QStringLiteral("groups"), 0 }, 5)
+                                      << QStringLiteral("groups[0]: expected an object");
+        QTest::newRow("min text") << sampleWith(state(QStringLiteral("min")), QStringLiteral("12"))
+                                  << QStringLiteral("groups[1].parameters[0].min: expected an "
+                                                    "integer");
+        QTest::newRow("min fraction") << sampleWith(state(QStringLiteral("min")), 1.5)
+                                      << QStringLiteral("groups[1].parameters[0].min: expected an "
+                                                        "integer");
+        QTest::newRow("min too big")
+            << sampleWith(state(QStringLiteral("min")), qint64(3000000000))
+            << QStringLiteral("groups[1].parameters[0].min: 3000000000 is outside "
+                              "-2147483648..2147483647");
+        QTest::newRow("min huge") << sampleWith(state(QStringLiteral("min")), 1e300)
+                                  << QStringLiteral("groups[1].parameters[0].min: expected an "
+                                                    "integer");
+        QTest::newRow("min missing")
+            << sampleWith(state(QStringLiteral("min")), QJsonValue::Undefined)
+            << QStringLiteral("groups[1].parameters[0].min: missing");
+        QTest::newRow("min null") << sampleWith(state(QStringLiteral("min")), QJsonValue::Null)
+                                  << QStringLiteral("groups[1].parameters[0].min: expected an "
+                                                    "integer");
+        QTest::newRow("properties negative")
+            << sampleWith(state(QStringLiteral("properties1")), -1)
+            << QStringLiteral("groups[1].parameters[0].properties1: -1 is outside 0..4294967295");
+        QTest::newRow("seven values")
+            << sampleWith(state(QStringLiteral("values")), QJsonArray { 1, 2, 3, 4, 5, 6, 7 })
+            << QStringLiteral("groups[1].parameters[0].values: 7 entries; a set-programmable "
+                              "parameter has one for each of the 8 sets");
+        QTest::newRow("one value for eight sets")
+            << sampleWith(state(QStringLiteral("values")), QJsonArray { 1 })
+            << QStringLiteral("groups[1].parameters[0].values: 1 entries; a set-programmable "
+                              "parameter has one for each of the 8 sets");
+        QTest::newRow("value text")
+            << sampleWith({ QStringLiteral("groups"), 1, QStringLiteral("parameters"), 0,
+                            QStringLiteral("values"), 2 },
+                          QStringLiteral("x"))
+            << QStringLiteral("groups[1].parameters[0].values[2]: expected an integer");
+        QTest::newRow("misspelt field")
+            << sampleWith(state(QStringLiteral("valeus")), QJsonArray())
+            << QStringLiteral("groups[1].parameters[0].valeus: unknown field");
+        QTest::newRow("divisor") << sampleWith(
+            { QStringLiteral("groups"), 1, QStringLiteral("parameters"), 0,
+              QStringLiteral("scaling"), QStringLiteral("divisor") },
+            40000)
+                                 << QStringLiteral(
+                                        "groups[1].parameters[0].scaling.divisor: 40000 is outside "
+                                        "-32768..32767");
+        QTest::newRow("readOnly edited alone")
+            << sampleWith(state(QStringLiteral("readOnly")), true)
+            << QStringLiteral("groups[1].parameters[0].readOnly: true does not agree with "
+                              "properties2 bit 3");
+        QTest::newRow("unit edited alone")
+            << sampleWith(state(QStringLiteral("unit")), QStringLiteral("V"))
+            << QStringLiteral("groups[1].parameters[0].unit: 'V' does not agree with "
+                              "scaling.flags (unit '')");
+        QTest::newRow("id for another address")
+            << sampleWith(state(QStringLiteral("id")), QStringLiteral("ru.04"))
+            << QStringLiteral("groups[1].parameters[0].id: 'ru.04' names 0204h, not the address "
+                              "0200h");
+        QTest::newRow("id for no group")
+            << sampleWith(state(QStringLiteral("id")), QStringLiteral("zz.0"))
+            << QStringLiteral("groups[1].parameters[0].id: no group 'zz' on this drive");
+        QTest::newRow("plaintext definition")
+            << sampleWith({ QStringLiteral("groups"), 1, QStringLiteral("parameters"), 0,
+                            QStringLiteral("plaintexts"), 0, QStringLiteral("definition") },
+                          9)
+            << QStringLiteral("groups[1].parameters[0].plaintexts[0].definition: 9, but "
+                              "plaintextDefinitions has 4 entries");
+        QTest::newRow("plaintext text missing")
+            << sampleWith({ QStringLiteral("groups"), 1, QStringLiteral("parameters"), 0,
+                            QStringLiteral("plaintexts"), 1, QStringLiteral("text") },
+                          QJsonValue::Undefined)
+            << QStringLiteral("groups[1].parameters[0].plaintexts[1].text: missing");
+        QTest::newRow("address outside group")
+            << sampleWith(state(QStringLiteral("address")), 0x0300)
+            << QStringLiteral("groups[1].parameters[0].address: 0300h is not in group ru (0200h)");
+        QTest::newRow("duplicate group") << sampleWith(
+            { QStringLiteral("groups"), 2, QStringLiteral("id") }, QStringLiteral("ru"))
+                                         << QStringLiteral("groups[2].id: 'ru' appears twice");
+        const QJsonValue first = sampleObject()
+                                     .value(QStringLiteral("groups"))
+                                     .toArray()
+                                     .at(1)
+                                     .toObject()
+                                     .value(QStringLiteral("parameters"))
+                                     .toArray()
+                                     .at(0);
+        QTest::newRow("duplicate parameter")
+            << sampleWith({ QStringLiteral("groups"), 1, QStringLiteral("parameters"), 1 }, first)
+            << QStringLiteral("groups[1].parameters[1].address: 0200h appears twice");
+        QTest::newRow("shortcut") << sampleWith(
+            { QStringLiteral("groups"), 0, QStringLiteral("shortcut") }, QStringLiteral("ab"))
+                                  << QStringLiteral(
+                                         "groups[0].shortcut: 'ab' is not one Latin-1 character");
+        QTest::newRow("name number")
+            << sampleWith({ QStringLiteral("groups"), 0, QStringLiteral("name") }, 5)
+            << QStringLiteral("groups[0].name: expected a string");
+        QTest::newRow("setProgrammable text")
+            << sampleWith(state(QStringLiteral("setProgrammable")), QStringLiteral("yes"))
+            << QStringLiteral("groups[1].parameters[0].setProgrammable: expected true or false");
+    }
+
+    void hostileInputIsRefusedWithItsPlace()
+    {
+        QFETCH(QByteArray, json);
+        QFETCH(QString, error);
+        QString actual;
+        QVERIFY(!ParameterDocument::fromJson(json, &actual));
+        QVERIFY2(actual.startsWith(error), qPrintable(actual));
+    }
+
+    void parseErrorsGiveLineAndColumn()
+    {
+        QString error;
+        QVERIFY(!ParameterDocument::fromJson("{\n  \"format\": \"drivedesk-parameters\",\n  x\n}",
+                                             &error));
+        QVERIFY2(error.contains(QStringLiteral("line 3")), qPrintable(error));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestParameterDocument)
+#include "tst_parameterdocument.moc"
