@@ -1,0 +1,22 @@
+#pragma once
+
+#include "protocol/Codec.h"
+
+namespace DriveDesk {
+
+// The BCC that ends every HSP5 telegram: the XOR of all bytes before it.
+quint8 hsp5Bcc(QByteArrayView bytes);
+
+// KEB HSP5 (seed 000): binary telegrams without start or end character, whose length follows
+// from the service byte. Byte 0 holds INV-ID-OP (high nibble) and INV-ID-FU (low nibble).
+class Hsp5Codec final : public ProtocolCodec
+{
+public:
+    Protocol protocol() const override { return Protocol::Hsp5; }
+    bool supports(Service service, Access access) const override;
+    QByteArray encode(const Telegram &telegram, QString *error = nullptr) const override;
+    std::unique_ptr<FrameDecoder> makeDecoder(Role role) const override;
+    int bitsPerCharacter() const override { return 11; } // 8E1
+};
+
+} // namespace DriveDesk
