@@ -1,0 +1,116 @@
+#include "SimulatedDrive.h"
+
+#include "DatabaseLoader.h"
+#include "DriveState.h"
+#include "GeneratedParameters.h"
+#include "Services.h"
+
+namespace DriveDesk {
+
+namespace {
+
+std::shared_ptr<const Sim::ParameterDatabase> databaseFor(const SimulatedDriveOptions &options)
+{
+    std::shared_ptr<const Sim::ParameterDatabase> standard = Sim::standardDatabase();
+    if (options.parameterCount <= int(standard->parameters().size()))
+        return standard;
+    auto padded = std::make_shared<Sim::ParameterDatabase>(*standard);
+    Sim::addGeneratedParameters(*padded, options.parameterCount, options.seed);
+    return padded;
+}
+
+} // namespace
+
+SimulatedDrive::SimulatedDrive(SimulatedDriveOptions options)
+    : m_state(std::make_unique<Sim::DriveState>(databaseFor(options),
+                                                qBound(0, options.address, 239), options.seed))
+{
+    m_identification = QStringLiteral("DriveDesk simulated COMBIVERT F5, %1 parameters")
+                           .arg(m_state->db().parameters().size())
+                           .toLatin1();
+}
+
+SimulatedDrive::~SimulatedDrive() = default;
+SimulatedDrive::SimulatedDrive(SimulatedDrive &&) noexcept = default;
+SimulatedDrive &SimulatedDrive::operator=(SimulatedDrive &&) noexcept = default;
+
+int SimulatedDrive::address() const
+{
+    return m_state->address();
+}
+
+Telegram SimulatedDrive::respond(const Telegram &request, qint64 nowMs)
+{
+    m_state->advanceTo(nowMs);
+    if (request.isResponse())
+        return Sim::answer(request, Ack::ServiceNotAvailable, emptyDataFor(request.service));
+    switch (request.service) {
+    case Service::Legacy:
+    case Service::ParameterValue:
+    case Service::ParameterValueStandard:
+    case Service::SubindexValue:
+    case Service::CheckDefault:
+    case Service::CheckDefaultStandard:
+        return Sim::answerValueService(*m_state, request);
+    case Service::Limits:
+    case Service::DefaultValue:
+    case Service::Properties:
+    case Service::DisplayScaling:
+    case Service::ParameterName:
+    case Service::PlaintextIndices:
+    case Service::DisplayPlaintext:
+    case Service::CombivisPlaintext:
+    case Service::GroupProperties:
+    case Service::GroupName:
+    case Service::PlaintextDefinition:
+    case Service::Fieldbus:
+        return Sim::answerMetadataService(*m_state, request, m_identification);
+    case Service::ProcessData1:
+    case Service::ProcessData2:
+    case Service::Scope:
+    case Service::ProcessData4:
+    case Service::ProcessData5:
+    case Service::ScopeRecord:
+    case Service::ProcessDataDuplex1:
+    case Service::ProcessDataDuplex2:
+    case Service::ProcessDataDuplex3:
+    case Service::ProcessDataDuplex4:
+    case Service::ProcessDataDuplex5:
+    case Service::ProcessDataDuplex6:
+        return Sim::answerProcessDataService(*m_state, request);
+    case Service::Unspecified:
+    case Service::StatusInterrogation:
+        break;
+    }
+    return Sim::answer(request, Ack::ServiceNotAvailable, emptyDataFor(request.service));
+}
+
+std::optional<qint32> SimulatedDrive::value(quint16 address, int set) const
+{
+    const int index = m_state->db().indexOf(address);
+    if (index < 0 || set < 0 || set >= Sim::kSets)
+        return std::nullopt;
+    return m_state->value(index, set);
+}
+
+int SimulatedDrive::parameterCount() const
+{
+    return int(m_state->db().parameters().size());
+}
+
+int SimulatedDrive::groupCount() const
+{
+    return int(m_state->db().groups().size());
+}
+
+QString SimulatedDrive::identification() const
+{
+    return QString::fromLatin1(m_identification);
+}
+
+int SimulatedDrive::passwordLevel() const
+{
+    return m_state->passwordLevel();
+}
+
+} // namespace DriveDesk
