@@ -1,0 +1,315 @@
+// drivedesk-sim: simulated KEB drives on TCP or on a pseudo-terminal, for DriveDesk and for
+// any other program that talks HSP5 or DIN66019(II).
+#include "bus/SimulatorServer.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QHostAddress>
+#include <QSocketNotifier>
+
+#include <csignal>
+#include <cstdio>
+#include <fcntl.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+using namespace DriveDesk;
+
+namespace {
+
+constexpr int kBadOption = 2;
+constexpr int kCannotServe = 1;
+
+int g_signalPipe[2] = {-1, -1};
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("drivedesk-sim", text);
+}
+
+QCommandLineOption option(const char *name, const char *help, const char *valueName = nullptr)
+{
+    QCommandLineOption result(QString::fromLatin1(name), tr(help));
+    if (valueName)
+        result.setValueName(tr(valueName));
+    return result;
+}
+
+void say(const QString &text)
+{
+    std::fprintf(stdout, "drivedesk-sim: %s\n", qPrintable(text));
+    std::fflush(stdout);
+}
+
+int complain(const QString &text, int code = kBadOption)
+{
+    std::fprintf(stderr, "drivedesk-sim: %s\n", qPrintable(text));
+    return code;
+}
+
+// Only async-signal-safe work here; the event loop picks the byte up.
+void onSignal(int signal)
+{
+    const char byte = char(signal);
+    [[maybe_unused]] const ssize_t written = ::write(g_signalPipe[1], &byte, 1);
+}
+
+struct Options {
+    Protocol protocol = Protocol::Hsp5;
+    SimulationOptions simulation;
+    QString tcpHost;
+    int tcpPort = -1;
+    QString ptyPath;
+};
+
+bool parseInteger(const QCommandLineParser &parser, const QString &name, qint64 minimum,
+                  qint64 maximum, qint64 *value, QString *error)
+{
+    if (!parser.isSet(name))
+        return true;
+    bool ok = false;
+    const qint64 number = parser.value(name).toLongLong(&ok);
+    if (!ok || number < minimum || number > maximum) {
+        *error = tr("--%1 \"%2\" is not a whole number from %3 to %4")
+                     .arg(name, parser.value(name)).arg(minimum).arg(maximum);
+        return false;
+    }
+    *value = number;
+    return true;
+}
+
+bool parseRate(const QCommandLineParser &parser, const QString &name, double *value,
+               QString *error)
+{
+    if (!parser.isSet(name))
+        return true;
+    bool ok = false;
+    const double rate = parser.value(name).toDouble(&ok);
+    if (!ok || !(rate >= 0.0 && rate <= 1.0)) {
+        *error = tr("--%1 \"%2\" is not a rate from 0 to 1").arg(name, parser.value(name));
+        return false;
+    }
+    *value = rate;
+    return true;
+}
+
+bool parseListen(const QString &text, Options *options, QString *error)
+{
+    const QString rest = text.startsWith(QLatin1String("tcp:")) ? text.mid(4) : QString();
+    const qsizetype colon = rest.lastIndexOf(QLatin1Char(':'));
+    if (colon <= 0) {
+        *error = tr("--listen \"%1\" is not tcp:HOST:PORT (e.g. tcp:127.0.0.1:5020)").arg(text);
+        return false;
+    }
+    QString host = rest.left(colon);
+    if (host.startsWith(QLatin1Char('[')) && host.endsWith(QLatin1Char(']')))
+        host = host.mid(1, host.size() - 2);
+    bool ok = false;
+    const uint port = rest.mid(colon + 1).toUInt(&ok);
+    if (!ok || port > 65535) {
+        *error = tr("--listen: \"%1\" is not a TCP port (0..65535, 0 picks a free one)")
+                     .arg(rest.mid(colon + 1));
+        return false;
+    }
+    const bool named = host == QLatin1String("*")
+                       || host.compare(QLatin1String("localhost"), Qt::CaseInsensitive) == 0;
+    if (!named && QHostAddress(host).isNull()) {
+        *error = tr("--listen: \"%1\" is not an IP address (give e.g. 127.0.0.1, localhost or *)")
+                     .arg(host);
+        return false;
+    }
+    options->tcpHost = host;
+    options->tcpPort = int(port);
+    return true;
+}
+
+bool parseAddresses(const QStringList &values, Options *options, QString *error)
+{
+    QList<int> addresses;
+    for (const QString &value : values) {
+        for (const QString &item : value.split(QLatin1Char(','))) {
+            bool ok = false;
+            const int address = item.trimmed().toInt(&ok);
+            if (!ok || address < 0 || address > 239) {
+                *error = tr("--address \"%1\" is not a drive address from 0 to 239").arg(item);
+                return false;
+            }
+            if (addresses.contains(address)) {
+                *error = tr("--address %1 is given twice").arg(address);
+                return false;
+            }
+            addresses.append(address);
+        }
+    }
+    if (addresses.isEmpty())
+        addresses = {1};
+    if (options->protocol == Protocol::Hsp5 && addresses.size() > 1) {
+        *error = tr("HSP5 is point to point: give one --address, or use --protocol din66019ii");
+        return false;
+    }
+    options->simulation.driveAddresses = addresses;
+    return true;
+}
+
+bool parseOptions(const QCommandLineParser &parser, Options *options, QString *error)
+{
+    if (!parser.positionalArguments().isEmpty()) {
+        *error = tr("unexpected argument \"%1\"").arg(parser.positionalArguments().constFirst());
+        return false;
+    }
+    if (parser.isSet(QStringLiteral("listen")) == parser.isSet(QStringLiteral("pty"))) {
+        *error = tr("give either --listen tcp:HOST:PORT or --pty PATH");
+        return false;
+    }
+    if (parser.isSet(QStringLiteral("listen"))
+        && !parseListen(parser.value(QStringLiteral("listen")), options, error))
+        return false;
+    options->ptyPath = parser.value(QStringLiteral("pty"));
+    if (parser.isSet(QStringLiteral("pty")) && options->ptyPath.isEmpty()) {
+        *error = tr("--pty needs a path for the link, e.g. /tmp/drive");
+        return false;
+    }
+    if (parser.isSet(QStringLiteral("protocol"))) {
+        const QString name = parser.value(QStringLiteral("protocol"));
+        const std::optional<Protocol> protocol = protocolFromName(name);
+        if (!protocol) {
+            *error = tr("--protocol \"%1\" is unknown: give hsp5, din66019ii or din66019")
+                         .arg(name);
+            return false;
+        }
+        options->protocol = *protocol;
+    }
+    if (!parseAddresses(parser.values(QStringLiteral("address")), options, error))
+        return false;
+
+    SimulationOptions &simulation = options->simulation;
+    qint64 latency = simulation.replyLatencyUs;
+    qint64 baud = simulation.baudRate;
+    qint64 parameters = simulation.parameterCount;
+    qint64 delayMs = simulation.delayMs;
+    qint64 seed = simulation.seed;
+    if (!parseInteger(parser, QStringLiteral("latency-us"), 0, 60'000'000, &latency, error)
+        || !parseInteger(parser, QStringLiteral("baud"), 50, 10'000'000, &baud, error)
+        || !parseInteger(parser, QStringLiteral("parameters"), 0, 65535, &parameters, error)
+        || !parseInteger(parser, QStringLiteral("delay-ms"), 0, 600'000, &delayMs, error)
+        || !parseInteger(parser, QStringLiteral("seed"), 0, 0xFFFFFFFFLL, &seed, error)
+        || !parseRate(parser, QStringLiteral("corrupt-rate"), &simulation.corruptByteRate, error)
+        || !parseRate(parser, QStringLiteral("drop-rate"), &simulation.dropByteRate, error)
+        || !parseRate(parser, QStringLiteral("delay-rate"), &simulation.delayRate, error)
+        || !parseRate(parser, QStringLiteral("busy-rate"), &simulation.busyRate, error)
+        || !parseRate(parser, QStringLiteral("unsolicited-rate"), &simulation.unsolicitedRate,
+                      error))
+        return false;
+    if (simulation.unsolicitedRate > 0 && options->protocol != Protocol::Hsp5) {
+        *error = tr("--unsolicited-rate: only HSP5 drives start requests of their own");
+        return false;
+    }
+    simulation.replyLatencyUs = int(latency);
+    simulation.baudRate = qint32(baud);
+    simulation.parameterCount = int(parameters);
+    simulation.delayMs = int(delayMs);
+    simulation.seed = quint32(seed);
+    simulation.paced = parser.isSet(QStringLiteral("pace"));
+    return true;
+}
+
+QString drivesText(const Options &options)
+{
+    QStringList addresses;
+    for (int address : options.simulation.driveAddresses)
+        addresses.append(QString::number(address));
+    const QString protocol = protocolName(options.protocol).toUpper();
+    return addresses.size() == 1
+               ? tr("%1 drive %2").arg(protocol, addresses.constFirst())
+               : tr("%1 drives %2").arg(protocol, addresses.join(QStringLiteral(", ")));
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("drivedesk-sim"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(DRIVEDESK_VERSION));
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        tr("Simulated KEB drives for DriveDesk, served over TCP or a pseudo-terminal."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addOptions({
+        option("listen", "Serve over TCP, e.g. tcp:127.0.0.1:5020 (port 0: any free one).",
+               "tcp:HOST:PORT"),
+        option("pty", "Serve over a pseudo-terminal linked at PATH.", "PATH"),
+        option("protocol", "hsp5 (default), din66019ii or din66019.", "NAME"),
+        option("address", "Drive address 0..239; repeat it or give a list (1,2,3) for several "
+                          "drives on one DIN bus.", "N"),
+        option("latency-us", "Time from the end of a request to its reply (default 1000).", "US"),
+        option("baud", "Baud rate for --pace (default 38400).", "N"),
+        option("pace", "Send and receive at the baud rate."),
+        option("parameters", "Pad the drive to N parameters (0: the standard F5).", "N"),
+        option("corrupt-rate", "Chance per byte of one flipped bit.", "RATE"),
+        option("drop-rate", "Chance per byte of losing it.", "RATE"),
+        option("delay-rate", "Chance per reply of holding it back by --delay-ms.", "RATE"),
+        option("delay-ms", "How long a delayed reply is held back (default 50).", "MS"),
+        option("busy-rate", "Chance per request of answering busy (ack 6).", "RATE"),
+        option("unsolicited-rate", "HSP5: chance per reply of a request from the drive first.",
+               "RATE"),
+        option("seed", "Seed of the fault generator (default 1).", "N"),
+    });
+    if (!parser.parse(QCoreApplication::arguments()))
+        return complain(parser.errorText() + tr(" (see --help)"));
+    if (parser.isSet(QStringLiteral("help")))
+        parser.showHelp(0);
+    if (parser.isSet(QStringLiteral("version")))
+        parser.showVersion();
+
+    Options options;
+    QString error;
+    if (!parseOptions(parser, &options, &error))
+        return complain(error);
+
+    if (::socketpair(AF_UNIX, SOCK_STREAM, 0, g_signalPipe) != 0)
+        return complain(tr("cannot set up signal handling"), kCannotServe);
+    // A signal handler must never block, even if signals pile up.
+    ::fcntl(g_signalPipe[1], F_SETFL, ::fcntl(g_signalPipe[1], F_GETFL) | O_NONBLOCK);
+    QSocketNotifier signalNotifier(qintptr(g_signalPipe[0]), QSocketNotifier::Read);
+    QObject::connect(&signalNotifier, &QSocketNotifier::activated, &app, [] {
+        char byte = 0;
+        [[maybe_unused]] const ssize_t n = ::read(g_signalPipe[0], &byte, 1);
+        QCoreApplication::quit();
+    });
+    struct sigaction action {};
+    action.sa_handler = onSignal;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESTART;
+    ::sigaction(SIGINT, &action, nullptr);
+    ::sigaction(SIGTERM, &action, nullptr);
+
+    SimulatorServer server(options.protocol, options.simulation);
+    const bool listening = options.tcpPort >= 0
+                               ? server.listenTcp(options.tcpHost, quint16(options.tcpPort), &error)
+                               : server.listenPty(options.ptyPath, &error);
+    if (!listening)
+        return complain(error, kCannotServe);
+    int exitCode = 0;
+    QObject::connect(&server, &SimulatorServer::failed, &app, [&exitCode](const QString &reason) {
+        complain(reason);
+        exitCode = kCannotServe;
+        QCoreApplication::quit();
+    });
+    QObject::connect(&server, &SimulatorServer::clientConnected, &app,
+                     [](const QString &peer) { say(tr("operator connected from %1").arg(peer)); });
+    QObject::connect(&server, &SimulatorServer::clientDisconnected, &app,
+                     [](const QString &peer) { say(tr("operator %1 disconnected").arg(peer)); });
+
+    QString where = server.addresses().join(QStringLiteral(", "));
+    if (!options.ptyPath.isEmpty())
+        where += QStringLiteral(" (%1)").arg(server.ptyDevice());
+    say(tr("%1 listening on %2").arg(drivesText(options), where));
+
+    const int loopResult = app.exec();
+    server.close();
+    say(tr("stopped"));
+    return exitCode != 0 ? exitCode : loopResult;
+}

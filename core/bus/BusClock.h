@@ -1,0 +1,38 @@
+#pragma once
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QTimer>
+
+namespace DriveDesk {
+
+class SimulatedBus;
+
+// Runs a SimulatedBus in real time: stamps the operator's bytes with the time on its clock and
+// hands each transmission out once its last byte would have arrived. One coarse timer is armed
+// for the earliest due time; the bus keeps the exact schedule in ns, so no rounding adds up.
+// Thread: lives in the thread of its owner; the bus is not shared with other threads.
+class BusClock : public QObject
+{
+    Q_OBJECT
+public:
+    explicit BusClock(SimulatedBus *bus, QObject *parent = nullptr);
+
+    void receive(const QByteArray &bytes);
+    // Forgets what is on its way (a new operator on the line).
+    void resetLine();
+    qint64 nowNs() const { return m_clock.nsecsElapsed(); }
+
+signals:
+    void transmit(const QByteArray &bytes);
+
+private:
+    void arm();
+    void deliver();
+
+    SimulatedBus *m_bus = nullptr;
+    QElapsedTimer m_clock;
+    QTimer m_timer;
+};
+
+} // namespace DriveDesk

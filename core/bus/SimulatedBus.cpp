@@ -1,0 +1,411 @@
+#include "SimulatedBus.h"
+
+#include "sim/SimulatedDrive.h"
+
+#include <algorithm>
+
+namespace DriveDesk {
+
+namespace {
+
+constexpr char kStx = 0x02;
+constexpr char kEot = 0x04;
+constexpr int kFirstGroupAddress = 240; // DIN: F0..FE groups of 16, FF broadcast
+constexpr int kBroadcastAddress = 255;
+constexpr quint16 kUnsolicitedLimitsAddress = 0x2101; // the address of seed 000's example
+constexpr qint64 kMinimumIdleGapNs = 5'000'000;
+constexpr qsizetype kHistoryKept = 512;
+
+bool concerns(int selection, int address)
+{
+    if (selection == kBroadcastAddress)
+        return true;
+    return address / 16 == selection - kFirstGroupAddress;
+}
+
+} // namespace
+
+SimulatedBus::SimulatedBus(Protocol protocol, const SimulationOptions &options)
+    : m_protocol(protocol)
+    , m_options(options)
+    , m_codec(makeCodec(protocol))
+    , m_decoder(m_codec->makeDecoder(Role::Drive))
+    , m_faults(options, m_codec->bitsPerCharacter() - 3, &m_counters) // 8E1 / 7E1: 8 / 7 data bits
+{
+    QList<int> addresses = options.driveAddresses;
+    if (addresses.isEmpty())
+        addresses = {1};
+    // HSP5 is point to point: the first drive is the only one on the line.
+    if (protocol == Protocol::Hsp5)
+        addresses.resize(1);
+    for (qsizetype i = 0; i < addresses.size(); ++i) {
+        SimulatedDriveOptions driveOptions;
+        driveOptions.address = addresses[i];
+        driveOptions.parameterCount = options.parameterCount;
+        driveOptions.seed = options.seed + quint32(i);
+        Station station;
+        station.address = addresses[i];
+        station.drive = std::make_unique<SimulatedDrive>(driveOptions);
+        m_stations.push_back(std::move(station));
+    }
+}
+
+SimulatedBus::~SimulatedBus() = default;
+
+SimulatedDrive &SimulatedBus::drive(int index)
+{
+    return *m_stations.at(std::size_t(index)).drive;
+}
+
+qint64 SimulatedBus::lineTimeNs(qint64 count) const
+{
+    if (!m_options.paced || m_options.baudRate <= 0)
+        return 0;
+    const qint64 bitNs = count * m_codec->bitsPerCharacter() * 1'000'000'000LL;
+    return (bitNs + m_options.baudRate - 1) / m_options.baudRate;
+}
+
+qint64 SimulatedBus::occupy(Timeline &timeline, qint64 readyNs, qint64 count) const
+{
+    if (readyNs >= timeOf(timeline, timeline.characters)) {
+        // The line was idle: a new run of characters starts.
+        timeline.anchorNs = readyNs;
+        timeline.characters = 0;
+    }
+    const qint64 first = timeline.characters;
+    timeline.characters += count;
+    return first;
+}
+
+qint64 SimulatedBus::idleGapNs() const
+{
+    return std::max(kMinimumIdleGapNs, lineTimeNs(10));
+}
+
+void SimulatedBus::receive(QByteArrayView bytes, qint64 nowNs)
+{
+    if (bytes.isEmpty())
+        return;
+    m_counters.bytesToDrive += bytes.size();
+    // The chunk occupies the line before any answer to it can start (DIN: a shared line).
+    const Timeline &line = inbound();
+    const qint64 first = occupy(inbound(), nowNs, bytes.size());
+    // A drive forgets a partial telegram after a pause on the line, as after a lost character.
+    if (m_decoder->buffered() > 0 && timeOf(line, first) - m_lastArrivalNs > idleGapNs()) {
+        m_decoder->reset();
+        ++m_counters.partialDrops;
+    }
+
+    for (qsizetype i = 0; i < bytes.size(); ++i) {
+        const qint64 arrivalNs = timeOf(line, first + i + 1);
+        m_lastArrivalNs = arrivalNs;
+        char byte = bytes[i];
+        if (!m_faults.pass(&byte))
+            continue;
+        if (m_protocol != Protocol::Hsp5 && byte == kEot)
+            m_selectionSent = true;
+        m_decoder->feed(QByteArrayView(&byte, 1));
+        ++m_fed;
+        m_history.append(byte);
+        if (m_history.size() > 4 * kHistoryKept) {
+            const qsizetype drop = m_history.size() - kHistoryKept;
+            m_history.remove(0, drop);
+            m_historyStart += drop;
+        }
+        while (std::optional<Decoded> item = m_decoder->next())
+            handle(*item, arrivalNs);
+    }
+}
+
+std::optional<qint64> SimulatedBus::nextDueNs() const
+{
+    if (m_scheduled.empty())
+        return std::nullopt;
+    return m_scheduled.front().dueNs;
+}
+
+QByteArray SimulatedBus::takeDue(qint64 nowNs)
+{
+    QByteArray bytes;
+    while (!m_scheduled.empty() && m_scheduled.front().dueNs <= nowNs) {
+        bytes += m_scheduled.front().bytes;
+        m_scheduled.pop_front();
+    }
+    return bytes;
+}
+
+void SimulatedBus::resetLine()
+{
+    m_decoder->reset();
+    m_scheduled.clear();
+    m_toDrive = {};
+    m_toOperator = {};
+    m_line = {};
+    m_lastArrivalNs = 0;
+    m_history.clear();
+    m_historyStart = m_fed;
+    m_selectionSent = false;
+    m_selection = -1;
+    m_pendingUnsolicited = 0;
+}
+
+void SimulatedBus::handle(const Decoded &item, qint64 endNs)
+{
+    const auto *error = std::get_if<DecodeError>(&item);
+    if (m_protocol != Protocol::Hsp5)
+        followSelection(error ? error->driveAddress : std::get<Telegram>(item).driveAddress,
+                        !error || error->kind != DecodeError::Kind::UnexpectedByte);
+    if (error) {
+        ++m_counters.decodeErrors;
+        handleError(*error, brokenBytes(*error), endNs);
+        return;
+    }
+    const Telegram &telegram = std::get<Telegram>(item);
+    if (m_protocol == Protocol::Hsp5)
+        handleHsp5(telegram, endNs);
+    else
+        handleDin(telegram, endNs);
+}
+
+// The selection holds until the next EOT, whoever sends it. The decoder names the selection
+// sent just before an item; an EOT that selected nobody (broken) still ends the old one.
+// Garbage reported when an EOT arrives does not stand for the item that follows it.
+void SimulatedBus::followSelection(int driveAddress, bool closesSelection)
+{
+    if (driveAddress >= 0) {
+        m_selection = driveAddress;
+        m_selectionSent = false;
+    } else if (m_selectionSent && closesSelection) {
+        m_selection = -1;
+        m_selectionSent = false;
+    }
+}
+
+void SimulatedBus::handleHsp5(const Telegram &telegram, qint64 endNs)
+{
+    if (telegram.isResponse()) {
+        const quint16 bit = quint16(1u << (telegram.inverterInvoke & 0x0F));
+        if (telegram.operatorInvoke == 0 && telegram.inverterInvoke != 0
+            && (m_pendingUnsolicited & bit)) {
+            m_pendingUnsolicited &= quint16(~bit);
+            ++m_counters.unsolicitedAnswers;
+        } else {
+            ++m_counters.unexpected;
+        }
+        return;
+    }
+    ++m_counters.requests;
+    const qint64 readyNs = readyTime(endNs);
+    const Telegram reply = answer(m_stations.front(), telegram, endNs);
+    if (m_faults.draw(m_options.unsolicitedRate))
+        sendUnsolicited(telegram, readyNs);
+    if (!transmit(reply, readyNs).isEmpty())
+        ++m_counters.replies;
+}
+
+void SimulatedBus::handleDin(const Telegram &telegram, qint64 endNs)
+{
+    if (telegram.isResponse()) {
+        ++m_counters.unexpected;
+        return;
+    }
+    ++m_counters.requests;
+    const int target = m_selection;
+    if (target < 0) {
+        ++m_counters.unanswered;
+        return;
+    }
+    if (target >= kFirstGroupAddress) {
+        // Nobody answers a group or broadcast; writes are carried out by every drive concerned
+        // and their outcome waits for the status interrogation.
+        ++m_counters.unanswered;
+        if (!telegram.isWrite() || telegram.service == Service::StatusInterrogation)
+            return;
+        for (Station &station : m_stations) {
+            if (concerns(target, station.address))
+                station.multicastResult = answer(station, telegram, endNs).ack;
+        }
+        return;
+    }
+    Station *addressed = station(target);
+    if (!addressed) {
+        ++m_counters.unanswered;
+        return;
+    }
+    const Telegram reply = telegram.service == Service::StatusInterrogation
+                               ? statusAnswer(addressed->multicastResult)
+                               : answer(*addressed, telegram, endNs);
+    const QByteArray sent = transmit(reply, readyTime(endNs));
+    if (sent.isEmpty())
+        return;
+    ++m_counters.replies;
+    // A negative read answer ends in EOT, and an EOT on the line drops the selection.
+    if (sent.endsWith(kEot))
+        m_selection = -1;
+}
+
+// What the decoder gave up on, from its first byte through everything fed since: a decoder
+// may report only the first byte of a broken telegram and look at the rest again.
+QByteArray SimulatedBus::brokenBytes(const DecodeError &error) const
+{
+    if (error.bytes.size() > 1)
+        return error.bytes;
+    const qint64 start = m_fed - m_decoder->buffered() - error.bytes.size();
+    if (start < m_historyStart || start > m_fed)
+        return error.bytes;
+    return m_history.mid(start - m_historyStart);
+}
+
+void SimulatedBus::handleError(const DecodeError &error, const QByteArray &broken, qint64 endNs)
+{
+    if (error.answer() == Ack::Ok)
+        return; // garbage between telegrams: a drive stays silent
+    // DIN: only an individually selected drive may answer.
+    if (m_protocol != Protocol::Hsp5
+        && (m_selection < 0 || m_selection >= kFirstGroupAddress || !station(m_selection)))
+        return;
+    const std::optional<Telegram> reply = errorAnswer(error, broken);
+    if (!reply)
+        return;
+    const QByteArray sent = transmit(*reply, readyTime(endNs));
+    if (sent.isEmpty())
+        return;
+    ++m_counters.replies;
+    if (m_protocol != Protocol::Hsp5 && sent.endsWith(kEot))
+        m_selection = -1;
+}
+
+// The error acknowledge for a broken request, as a response telegram of the service the
+// broken bytes name. Nothing where the invoke id is unknown (a DIN66019 telegram has none) or
+// the codec cannot express the answer (e.g. an unknown service).
+std::optional<Telegram> SimulatedBus::errorAnswer(const DecodeError &error,
+                                                  const QByteArray &bytes) const
+{
+    Telegram reply;
+    reply.direction = Direction::Response;
+    reply.ack = error.answer();
+    reply.operatorInvoke = error.operatorInvoke;
+    std::optional<int> service;
+    if (m_protocol == Protocol::Hsp5) {
+        // Byte 1: service in bits 0-5, bit 6 write.
+        if (bytes.size() >= 2) {
+            service = bytes[1] & 0x3F;
+            reply.access = (bytes[1] & 0x40) ? Access::Write : Access::Read;
+        }
+    } else {
+        // [EOT a a] [STX] service character (service + 47h) or, legacy, a hex digit.
+        qsizetype at = bytes.startsWith(kEot) ? 3 : 0;
+        reply.access = bytes.contains(kStx) ? Access::Write : Access::Read;
+        if (at < bytes.size() && bytes[at] == kStx)
+            ++at;
+        if (at < bytes.size()) {
+            const char c = bytes[at];
+            const bool hexDigit = (c >= '0' && c <= '9') || (c >= 'A' && c <= 'F');
+            if (hexDigit)
+                service = int(Service::Legacy);
+            else if (c >= 0x47)
+                service = c - 0x47;
+        }
+    }
+    const bool legacy = service == int(Service::Legacy);
+    if (error.operatorInvoke == 0 && !legacy)
+        return std::nullopt;
+    QList<Service> candidates;
+    if (service && m_codec->supports(Service(*service), reply.access))
+        candidates.append(Service(*service));
+    if (m_protocol != Protocol::Hsp5 && !legacy)
+        candidates.append(Service::Unspecified);
+    for (Service candidate : candidates) {
+        reply.service = candidate;
+        reply.data = emptyDataFor(candidate);
+        if (!m_codec->encode(reply).isEmpty())
+            return reply;
+    }
+    return std::nullopt;
+}
+
+// The answer to the status interrogation ENQ: `ACK` or `code NAK`, naming no service.
+Telegram SimulatedBus::statusAnswer(Ack result)
+{
+    Telegram reply;
+    reply.service = Service::Unspecified;
+    reply.access = Access::Write;
+    reply.direction = Direction::Response;
+    reply.ack = result;
+    return reply;
+}
+
+qint64 SimulatedBus::readyTime(qint64 endNs)
+{
+    qint64 readyNs = endNs + qint64(m_options.replyLatencyUs) * 1000;
+    if (m_faults.draw(m_options.delayRate)) {
+        ++m_counters.delayedReplies;
+        readyNs += qint64(m_options.delayMs) * 1'000'000;
+    }
+    return readyNs;
+}
+
+Telegram SimulatedBus::answer(Station &station, const Telegram &request, qint64 endNs)
+{
+    if (m_faults.draw(m_options.busyRate)) {
+        ++m_counters.busyReplies;
+        return request.response(Ack::Busy);
+    }
+    return station.drive->respond(request, endNs / 1'000'000);
+}
+
+// HSP5 is multi-master: the inverter may start a cycle of its own (INV-ID-OP 0), here a
+// write of limits to the operator, which the operator answers.
+void SimulatedBus::sendUnsolicited(const Telegram &request, qint64 readyNs)
+{
+    constexpr quint16 kEveryInvokeId = 0xFFFE; // bits 1..15
+    if (m_pendingUnsolicited == kEveryInvokeId)
+        return;
+    do {
+        m_inverterInvoke = quint8(m_inverterInvoke % 15 + 1);
+    } while (m_pendingUnsolicited & (1u << m_inverterInvoke));
+
+    quint16 address = kUnsolicitedLimitsAddress;
+    if (const auto *value = request.as<ParameterValue>())
+        address = value->address;
+    Telegram unsolicited = Telegram::request(Service::Limits, Access::Write,
+                                             ParameterLimits{address, 0x12345678, 0x23456789});
+    unsolicited.operatorInvoke = 0;
+    unsolicited.inverterInvoke = m_inverterInvoke;
+    if (transmit(unsolicited, readyNs).isEmpty())
+        return;
+    m_pendingUnsolicited |= quint16(1u << m_inverterInvoke);
+    ++m_counters.unsolicitedRequests;
+}
+
+QByteArray SimulatedBus::transmit(const Telegram &telegram, qint64 readyNs)
+{
+    QString error;
+    const QByteArray bytes = m_codec->encode(telegram, &error);
+    if (bytes.isEmpty()) {
+        ++m_counters.encodeFailures;
+        qWarning("simulated drive: cannot send %s: %s", qPrintable(describe(telegram)),
+                 qPrintable(error));
+        return bytes;
+    }
+    m_counters.bytesFromDrive += bytes.size();
+    Timeline &line = outbound();
+    const qint64 first = occupy(line, readyNs, bytes.size());
+    BusTransmission transmission;
+    transmission.startNs = timeOf(line, first);
+    transmission.dueNs = timeOf(line, first + bytes.size());
+    transmission.bytes = m_faults.pass(bytes);
+    m_scheduled.push_back(std::move(transmission));
+    return bytes;
+}
+
+SimulatedBus::Station *SimulatedBus::station(int address)
+{
+    for (Station &candidate : m_stations) {
+        if (candidate.address == address)
+            return &candidate;
+    }
+    return nullptr;
+}
+
+} // namespace DriveDesk
