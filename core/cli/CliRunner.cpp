@@ -54,12 +54,54 @@ void CliRunner::start()
 
 void CliRunner::runCommand()
 {
+    if (m_request.connection.protocol == Protocol::Din66019)
+        return runLegacy();
     switch (m_request.command) {
     case CliRequest::Command::Info: runInfo(); break;
     case CliRequest::Command::Scan: runScan(); break;
     case CliRequest::Command::Read: runRead(); break;
     case CliRequest::Command::Write: runWrite(); break;
     }
+}
+
+// DIN66019 reads and writes values by address and nothing else: no names, limits or scaling.
+void CliRunner::runLegacy()
+{
+    if (m_request.command == CliRequest::Command::Info || m_request.command == CliRequest::Command::Scan) {
+        return fail(2, QStringLiteral("DIN66019 carries parameter values only; use --protocol din66019ii "
+                                      "for info and scan"));
+    }
+    QString error;
+    const auto address = ParameterId::parse(m_request.parameter, QList<GroupAddress>{}, &error);
+    if (!address) {
+        return fail(2, QStringLiteral("%1 (DIN66019 has no group names: give the address, e.g. 0x0203)")
+                           .arg(error));
+    }
+    const QString id = ParameterId::hexAddress(*address);
+    if (m_request.command == CliRequest::Command::Read) {
+        m_client->readValueStandard(*address, 0).then(this, [this, id](const Reply &r) {
+            if (!r.ok())
+                return fail(1, QStringLiteral("%1: %2").arg(id, r.message(language())));
+            m_out << QStringLiteral("%1 = %2 (raw)\n").arg(id).arg(r.data<ParameterValue>()->value);
+            done();
+        });
+        return;
+    }
+    bool ok = false;
+    const int raw = m_request.value.toInt(&ok, 0);
+    if (!ok || raw < -32768 || raw > 65535)
+        return fail(2, QStringLiteral("'%1' is not a raw 16-bit value (DIN66019 writes raw values)").arg(m_request.value));
+    m_client->writeValueStandard(*address, raw, 0).then(this, [this, id, address = *address](const Reply &r) {
+        if (!r.ok())
+            return fail(1, QStringLiteral("%1: %2").arg(id, r.message(language())));
+        m_client->readValueStandard(address, 0).then(this, [this, id](const Reply &back) {
+            if (!back.ok())
+                return fail(1, QStringLiteral("%1: written, but reading it back failed: %2")
+                                   .arg(id, back.message(language())));
+            m_out << QStringLiteral("%1 = %2 (raw)\n").arg(id).arg(back.data<ParameterValue>()->value);
+            done();
+        });
+    });
 }
 
 void CliRunner::scan(const ScanOptions &options, std::function<void(const DriveDescription &)> next)

@@ -32,6 +32,7 @@ private:
     void runScan();
     void runRead();
     void runWrite();
+    void runLegacy();
     // Finds the parameter named on the command line and reads its metadata, then calls next.
     void lookUpParameter(std::function<void(const GroupDescription &, const ParameterDescription &)> next);
     void readBack(const ParameterDescription &parameter, quint8 setMask);

@@ -140,6 +140,7 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
         || !integer(set, 0, 7, &setNumber))
         return std::nullopt;
     request.connection.baudRate = baudRate;
+    request.connection.simulation.driveAddresses = {request.connection.driveAddress};
     request.connection.simulation.baudRate = baudRate;
     if (setNumber >= 0)
         request.set = setNumber;

@@ -26,7 +26,9 @@ QString align(const QList<QStringList> &rows)
         QString line;
         for (qsizetype c = 0; c < row.size(); ++c)
             line += c + 1 < row.size() ? row[c].leftJustified(widths[c] + 2) : row[c];
-        text += line.trimmed() + QLatin1Char('\n');
+        while (line.endsWith(QLatin1Char(' ')))
+            line.chop(1);
+        text += line + QLatin1Char('\n');
     }
     return text;
 }
@@ -68,7 +70,7 @@ QString scan(const DriveDescription &drive, bool withValues, Language language)
     for (const GroupDescription &group : drive.groups) {
         text += QStringLiteral("%1  %2\n").arg(group.id, group.name);
         QList<QStringList> rows;
-        QStringList header{german ? QStringLiteral("Parameter") : QStringLiteral("parameter"),
+        QStringList header{german ? QStringLiteral("  Parameter") : QStringLiteral("  parameter"),
                            german ? QStringLiteral("Name") : QStringLiteral("name")};
         if (withValues)
             header << (german ? QStringLiteral("Wert") : QStringLiteral("value"));
@@ -114,9 +116,7 @@ QString info(const DriveDescription &drive, const DriveDescription &system, Lang
             rows << QStringList{QStringLiteral("  ") + parameterId(sy.id, p.number()), p.name,
                                 valueText(p, *p.values[0])};
         }
-        text += QStringLiteral("%1 %2 (%3)\n").arg(sy.id, sy.name,
-                                                    german ? QStringLiteral("Systemparameter")
-                                                           : QStringLiteral("system parameters"));
+        text += QStringLiteral("%1  %2\n").arg(sy.id, sy.name);
         text += align(rows);
     }
     text += QLatin1Char('\n');

@@ -1,0 +1,11 @@
+# The parameter editor's Widgets layer: item models and the editor delegate (offscreen).
+if(TARGET drivedesk_ui)
+    drivedesk_add_test(NAME tst_parameterformat LABEL gui
+        SOURCES gui/tst_parameterformat.cpp LIBS drivedesk_ui)
+    drivedesk_add_test(NAME tst_parametermodel LABEL gui
+        SOURCES gui/tst_parametermodel.cpp gui/GuiTestDrive.h LIBS drivedesk_ui)
+    drivedesk_add_test(NAME tst_parameterfilter LABEL gui
+        SOURCES gui/tst_parameterfilter.cpp gui/GuiTestDrive.h LIBS drivedesk_ui)
+    drivedesk_add_test(NAME tst_parameterdelegate LABEL gui
+        SOURCES gui/tst_parameterdelegate.cpp gui/GuiTestDrive.h LIBS drivedesk_ui)
+endif()

@@ -1,0 +1,383 @@
+#include "ParameterModel.h"
+
+#include "parameters/ParameterId.h"
+
+namespace DriveDesk {
+
+namespace {
+
+constexpr quintptr kGroupId = 0; // internal id of group rows; parameters carry group row + 1
+
+QString idFor(const GroupDescription &group, quint16 address)
+{
+    // Numbers count from the group's first address: half-page group Fb at 0280h has Fb.09 = 0289h.
+    if ((address & 0xFF00) == (group.address & 0xFF00) && address >= group.address)
+        return parameterId(group.id, quint8(address - group.address));
+    return ParameterId::hexAddress(address);
+}
+
+} // namespace
+
+ParameterModel::ParameterModel(QObject *parent)
+    : QAbstractItemModel(parent)
+{ }
+
+void ParameterModel::setDescription(const DriveDescription &drive)
+{
+    beginResetModel();
+    m_groups.clear();
+    m_locations.clear();
+    m_drive = drive;
+    m_drive.groups = {};
+    m_groups.reserve(std::size_t(drive.groups.size()));
+    m_locations.reserve(drive.parameterCount());
+    for (const GroupDescription &source : drive.groups) {
+        Group group;
+        group.description = source;
+        group.description.parameters = {};
+        group.rows.reserve(std::size_t(source.parameters.size()));
+        const int groupRow = int(m_groups.size());
+        for (const ParameterDescription &parameter : source.parameters) {
+            m_locations.insert(parameter.address, { groupRow, int(group.rows.size()) });
+            group.rows.emplace_back(parameter, idFor(source, parameter.address));
+            group.rows.back().searchText(m_raw); // built now, so that a keystroke only compares
+        }
+        m_groups.push_back(std::move(group));
+    }
+    endResetModel();
+}
+
+DriveDescription ParameterModel::description() const
+{
+    DriveDescription drive = m_drive;
+    for (const Group &group : m_groups) {
+        GroupDescription description = group.description;
+        description.parameters.reserve(qsizetype(group.rows.size()));
+        for (const ParameterRow &row : group.rows)
+            description.parameters << row.description();
+        drive.groups << description;
+    }
+    return drive;
+}
+
+void ParameterModel::clear()
+{
+    setDescription({});
+}
+
+const ParameterRow *ParameterModel::rowAt(const QModelIndex &index) const
+{
+    if (!index.isValid() || index.internalId() == kGroupId)
+        return nullptr;
+    return &m_groups[std::size_t(index.internalId() - 1)].rows[std::size_t(index.row())];
+}
+
+ParameterRow *ParameterModel::rowAt(quint16 address)
+{
+    const auto it = m_locations.constFind(address);
+    if (it == m_locations.constEnd())
+        return nullptr;
+    return &m_groups[std::size_t(it->group)].rows[std::size_t(it->row)];
+}
+
+const ParameterRow *ParameterModel::rowAt(quint16 address) const
+{
+    return const_cast<ParameterModel *>(this)->rowAt(address);
+}
+
+const ParameterDescription *ParameterModel::parameter(quint16 address) const
+{
+    const ParameterRow *row = rowAt(address);
+    return row ? &row->description() : nullptr;
+}
+
+bool ParameterModel::setValue(quint16 address, int set, qint32 raw)
+{
+    ParameterRow *row = rowAt(address);
+    if (!row || set < 0 || set >= kParameterSets)
+        return false;
+    const int cell = row->cellOf(set);
+    if (row->setValue(cell, raw)) {
+        const QModelIndex changed = indexOf(address, columnOfSet(cell));
+        emit dataChanged(changed, changed);
+    }
+    return true;
+}
+
+bool ParameterModel::setValues(quint16 address, quint8 setMask, qint32 raw)
+{
+    ParameterRow *row = rowAt(address);
+    if (!row || setMask == 0)
+        return false;
+    for (int set = 0; set < kParameterSets; ++set) {
+        if (setMask & (1u << set))
+            setValue(address, set, raw);
+    }
+    return true;
+}
+
+std::optional<qint32> ParameterModel::value(quint16 address, int set) const
+{
+    const ParameterRow *row = rowAt(address);
+    if (!row || set < 0 || set >= kParameterSets)
+        return std::nullopt;
+    return row->value(row->cellOf(set));
+}
+
+bool ParameterModel::isAboveLevel(const ParameterRow &row) const
+{
+    const ParameterProperties &properties = row.properties();
+    if (properties.readLevel() > m_level)
+        return true;
+    return !properties.isReadOnly() && properties.writeLevel() > m_level;
+}
+
+bool ParameterModel::isEditable(const ParameterRow &row) const
+{
+    return !row.properties().isReadOnly() && !isAboveLevel(row);
+}
+
+bool ParameterModel::isAboveLevel(quint16 address) const
+{
+    const ParameterRow *row = rowAt(address);
+    return row && isAboveLevel(*row);
+}
+
+bool ParameterModel::isEditable(quint16 address) const
+{
+    const ParameterRow *row = rowAt(address);
+    return row && isEditable(*row);
+}
+
+bool ParameterModel::requestWrite(quint16 address, quint8 setMask, qint32 raw, QString *error)
+{
+    auto fail = [error](const QString &message) {
+        if (error)
+            *error = message;
+        return false;
+    };
+    const ParameterRow *row = rowAt(address);
+    if (!row)
+        return fail(tr("this drive has no parameter %1").arg(ParameterId::hexAddress(address)));
+    if (row->properties().isReadOnly())
+        return fail(tr("%1 is read-only").arg(row->id()));
+    if (isAboveLevel(*row)) {
+        const PasswordLevel needed
+            = std::max(row->properties().readLevel(), row->properties().writeLevel());
+        return fail(tr("%1 needs password level %2")
+                        .arg(row->id(), passwordLevelName(needed, Language(m_drive.language))));
+    }
+    if (setMask == 0)
+        return fail(tr("%1: no set chosen").arg(row->id()));
+    if (!row->description().isSetProgrammable())
+        setMask = 0x01;
+    if (!row->format().isWithinLimits(raw))
+        return fail(tr("%1: %2").arg(row->id(), row->format().limitsProblem(raw)));
+    markPending(address, setMask, raw);
+    emit valueEdited(address, setMask, raw);
+    return true;
+}
+
+template<typename Change>
+void ParameterModel::changeCells(quint16 address, quint8 setMask, Change change)
+{
+    ParameterRow *row = rowAt(address);
+    if (!row)
+        return;
+    int first = kParameterSets;
+    int last = -1;
+    for (int set = 0; set < kParameterSets; ++set) {
+        if (!(setMask & (1u << set)))
+            continue;
+        const int cell = row->cellOf(set);
+        first = std::min(first, cell);
+        last = std::max(last, cell);
+        change(*row, cell);
+    }
+    if (last >= 0)
+        emit dataChanged(indexOf(address, columnOfSet(first)), indexOf(address, columnOfSet(last)));
+}
+
+void ParameterModel::markPending(quint16 address, quint8 setMask, qint32 raw)
+{
+    changeCells(address, setMask,
+                [raw](ParameterRow &row, int cell) { row.markPending(cell, raw); });
+}
+
+void ParameterModel::markWritten(quint16 address, quint8 setMask)
+{
+    changeCells(address, setMask, [](ParameterRow &row, int cell) {
+        if (row.requestedValue(cell))
+            row.markWritten(cell);
+    });
+}
+
+void ParameterModel::markFailed(quint16 address, quint8 setMask, const QString &reason)
+{
+    changeCells(address, setMask,
+                [&reason](ParameterRow &row, int cell) { row.markFailed(cell, reason); });
+}
+
+void ParameterModel::confirmReadBack(quint16 address, int set, qint32 raw)
+{
+    if (set < 0 || set >= kParameterSets)
+        return;
+    changeCells(address, quint8(1u << set), [this, raw](ParameterRow &row, int cell) {
+        const std::optional<qint32> requested = row.requestedValue(cell);
+        row.setValue(cell, raw);
+        if (!requested)
+            return;
+        if (*requested == raw) {
+            row.markWritten(cell);
+            return;
+        }
+        row.markFailed(
+            cell,
+            tr("the drive holds %1, not %2").arg(valueText(row, raw), valueText(row, *requested)));
+    });
+}
+
+void ParameterModel::clearEditStates()
+{
+    for (Group &group : m_groups) {
+        for (ParameterRow &row : group.rows) {
+            for (int cell = 0; cell < row.cellCount(); ++cell)
+                row.clearEditState(cell);
+        }
+    }
+    emitAllChanged();
+}
+
+EditState ParameterModel::editState(quint16 address, int set) const
+{
+    const ParameterRow *row = rowAt(address);
+    if (!row || set < 0 || set >= kParameterSets)
+        return EditState::None;
+    return row->editState(row->cellOf(set));
+}
+
+void ParameterModel::setPasswordLevel(PasswordLevel level)
+{
+    if (level == m_level)
+        return;
+    m_level = level;
+    emitAllChanged();
+    emit passwordLevelChanged(level);
+}
+
+void ParameterModel::setShowRawValues(bool raw)
+{
+    if (raw == m_raw)
+        return;
+    m_raw = raw;
+    emitAllChanged();
+}
+
+void ParameterModel::setFavourites(const QSet<quint16> &addresses)
+{
+    if (addresses == m_favourites)
+        return;
+    const QSet<quint16> changed = (m_favourites - addresses) + (addresses - m_favourites);
+    m_favourites = addresses;
+    for (quint16 address : changed)
+        emitRowChanged(address);
+    emit favouritesChanged();
+}
+
+void ParameterModel::setFavourite(quint16 address, bool favourite)
+{
+    if (favourite == m_favourites.contains(address))
+        return;
+    if (favourite)
+        m_favourites.insert(address);
+    else
+        m_favourites.remove(address);
+    emitRowChanged(address);
+    emit favouritesChanged();
+}
+
+void ParameterModel::toggleFavourite(quint16 address)
+{
+    setFavourite(address, !isFavourite(address));
+}
+
+void ParameterModel::emitRowChanged(quint16 address)
+{
+    const QModelIndex first = indexOf(address, IdColumn);
+    if (first.isValid())
+        emit dataChanged(first, first.siblingAtColumn(ColumnCount - 1));
+}
+
+void ParameterModel::emitAllChanged(const QList<int> &roles)
+{
+    for (std::size_t g = 0; g < m_groups.size(); ++g) {
+        const int rows = int(m_groups[g].rows.size());
+        if (rows == 0)
+            continue;
+        emit dataChanged(createIndex(0, 0, quintptr(g + 1)),
+                         createIndex(rows - 1, ColumnCount - 1, quintptr(g + 1)), roles);
+    }
+}
+
+QModelIndex ParameterModel::indexOf(quint16 address, int column) const
+{
+    const auto it = m_locations.constFind(address);
+    if (it == m_locations.constEnd() || column < 0 || column >= ColumnCount)
+        return {};
+    return createIndex(it->row, column, quintptr(it->group + 1));
+}
+
+QModelIndex ParameterModel::valueIndex(quint16 address, int set) const
+{
+    const ParameterRow *row = rowAt(address);
+    if (!row || set < 0 || set >= kParameterSets)
+        return {};
+    return indexOf(address, columnOfSet(row->cellOf(set)));
+}
+
+int ParameterModel::setOfColumn(int column)
+{
+    return column >= FirstSetColumn && column <= LastSetColumn ? column - FirstSetColumn : -1;
+}
+
+QModelIndex ParameterModel::index(int row, int column, const QModelIndex &parent) const
+{
+    if (row < 0 || column < 0 || column >= ColumnCount)
+        return {};
+    if (!parent.isValid()) {
+        return row < int(m_groups.size()) ? createIndex(row, column, kGroupId) : QModelIndex();
+    }
+    if (parent.internalId() != kGroupId || parent.column() != 0)
+        return {};
+    if (row >= int(m_groups[std::size_t(parent.row())].rows.size()))
+        return {};
+    return createIndex(row, column, quintptr(parent.row() + 1));
+}
+
+QModelIndex ParameterModel::parent(const QModelIndex &child) const
+{
+    if (!child.isValid() || child.internalId() == kGroupId)
+        return {};
+    return createIndex(int(child.internalId() - 1), 0, kGroupId);
+}
+
+int ParameterModel::rowCount(const QModelIndex &parent) const
+{
+    if (!parent.isValid())
+        return int(m_groups.size());
+    if (parent.internalId() != kGroupId || parent.column() != 0)
+        return 0;
+    return int(m_groups[std::size_t(parent.row())].rows.size());
+}
+
+int ParameterModel::columnCount(const QModelIndex &) const
+{
+    return ColumnCount;
+}
+
+bool ParameterModel::hasChildren(const QModelIndex &parent) const
+{
+    return rowCount(parent) > 0;
+}
+
+} // namespace DriveDesk
