@@ -9,3 +9,9 @@ if(TARGET drivedesk_ui)
     drivedesk_add_test(NAME tst_parameterdelegate LABEL gui
         SOURCES gui/tst_parameterdelegate.cpp gui/GuiTestDrive.h LIBS drivedesk_ui)
 endif()
+
+foreach(area main edit monitor)
+    if(EXISTS ${CMAKE_CURRENT_LIST_DIR}/${area}.cmake)
+        include(${CMAKE_CURRENT_LIST_DIR}/${area}.cmake)
+    endif()
+endforeach()
