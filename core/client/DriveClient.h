@@ -7,12 +7,14 @@
 #include <QFuture>
 #include <QObject>
 
+#include <atomic>
 #include <memory>
+
+class QThread;
 
 namespace DriveDesk {
 
 class ClientWorker;
-class QThread;
 
 struct ClientOptions {
     int timeoutMs = 0;   // 0: derived from the baud rate and the longest telegram
@@ -87,7 +89,7 @@ private:
 
     ConnectionSettings m_settings;
     ClientOptions m_options;
-    State m_state = State::Disconnected;
+    std::atomic<State> m_state = State::Disconnected; // read from any thread
     QThread *m_thread = nullptr; // owned; stopped and joined in the destructor
     ClientWorker *m_worker = nullptr; // owned by its thread, deleted on finished
 };

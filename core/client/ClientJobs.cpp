@@ -1,0 +1,87 @@
+// The facade's requests as QFutures: each holds its QPromise in the worker thread and watches
+// its future, so that cancelling the future reaches the request.
+#include "ClientWorker.h"
+
+#include "DriveScanner.h"
+#include "DriveSearch.h"
+
+#include <QFutureWatcher>
+#include <QPointer>
+
+namespace DriveDesk {
+
+void ClientWorker::submitForFuture(const Telegram &request,
+                                   std::shared_ptr<QPromise<Reply>> promise)
+{
+    if (promise->future().isCanceled()) {
+        promise->finish();
+        return;
+    }
+    auto *watcher = new QFutureWatcher<Reply>(this);
+    const quint64 ticket = submitRequest(request, {}, [promise, watcher](const Reply &reply, bool) {
+        promise->addResult(reply);
+        promise->finish();
+        watcher->deleteLater();
+    });
+    connect(watcher, &QFutureWatcherBase::canceled, this, [this, ticket] { cancelTicket(ticket); });
+    watcher->setFuture(promise->future());
+}
+
+void ClientWorker::findDrives(int first, int last, quint16 probeAddress,
+                              std::shared_ptr<QPromise<QList<int>>> promise)
+{
+    if (promise->future().isCanceled()) {
+        promise->finish();
+        return;
+    }
+    auto *search = new DriveSearch(*this, first, last, probeAddress, promise);
+    auto *watcher = new QFutureWatcher<QList<int>>(search);
+    connect(watcher, &QFutureWatcherBase::canceled, search, &DriveSearch::cancel);
+    watcher->setFuture(promise->future());
+    search->start();
+}
+
+void ClientWorker::scan(const ScanOptions &options,
+                        std::shared_ptr<QPromise<DriveDescription>> promise)
+{
+    promise->setProgressRange(0, 1000);
+    if (promise->future().isCanceled()) {
+        promise->finish();
+        return;
+    }
+    // The scanner keeps a reference to its sink: both live until the scan finished.
+    auto sink = std::make_shared<OwnedSink>(*this);
+    auto *scanner = new DriveScanner(*sink, options, m_settings.language, this);
+    auto *watcher = new QFutureWatcher<DriveDescription>(scanner);
+    const QPointer<DriveScanner> guard(scanner);
+    connect(watcher, &QFutureWatcherBase::canceled, this, [guard] {
+        if (guard)
+            guard->cancel();
+    });
+    auto best = std::make_shared<int>(0);
+    connect(scanner, &DriveScanner::progress, this,
+            [promise, best](int done, int total, const QString &what) {
+                // The total grows as the scan learns; the bar never runs backwards.
+                const int value = total > 0 ? int(qint64(done) * 1000 / total) : 0;
+                *best = std::max(*best, std::min(value, 999));
+                promise->setProgressValueAndText(*best, what);
+            });
+    connect(scanner, &DriveScanner::finished, this,
+            [this, promise, sink, scanner](const DriveDescription &found) {
+                DriveDescription description = found;
+                if (description.protocol.isEmpty())
+                    description.protocol = protocolName(m_settings.protocol);
+                if (description.connection.isEmpty())
+                    description.connection = connectionDescription();
+                if (description.driveAddress < 0 && isDin())
+                    description.driveAddress = m_settings.driveAddress;
+                promise->setProgressValueAndText(1000, description.incompleteReason);
+                promise->addResult(description);
+                promise->finish();
+                scanner->deleteLater();
+            });
+    watcher->setFuture(promise->future());
+    scanner->start();
+}
+
+} // namespace DriveDesk

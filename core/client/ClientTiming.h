@@ -1,0 +1,20 @@
+#pragma once
+
+#include "client/DriveClient.h"
+
+namespace DriveDesk {
+
+// How long the client waits for an answer, from the options or from the line: the time the
+// longest request and answer of the protocol take at the baud rate, plus a margin for the
+// drive's response time (and for a device server's network, over TCP).
+int answerTimeoutMs(const ConnectionSettings &settings, const ClientOptions &options);
+
+// The short wait of a findDrives() probe whose request and answer together take
+// `exchangeCharacters` characters on the line; never longer than answerTimeoutMs().
+int probeTimeoutMs(const ConnectionSettings &settings, const ClientOptions &options,
+                   int exchangeCharacters);
+
+// Bits on the line per character in the protocol's character format: 11 (8E1) or 10 (7E1).
+int bitsPerCharacter(const ConnectionSettings &settings);
+
+} // namespace DriveDesk

@@ -1,0 +1,354 @@
+#include "ClientWorker.h"
+
+#include "ClientTiming.h"
+#include "ReplyCheck.h"
+#include "bus/LinkFactory.h"
+
+#include <QDateTime>
+#include <QTimer>
+
+#include <algorithm>
+
+namespace DriveDesk {
+
+namespace {
+
+// HSP5 allows at most 4 requests outstanding to the inverter.
+constexpr int kMaxInFlight = 4;
+constexpr int kInvokeIdCount = 15;
+constexpr int kLastDriveAddress = 239;
+constexpr int kBroadcastAddress = 255;
+
+} // namespace
+
+ClientWorker::ClientWorker(ConnectionSettings settings, ClientOptions options, QObject *parent)
+    : QObject(parent)
+    , m_settings(std::move(settings))
+    , m_options(options)
+    , m_answerTimeoutMs(DriveDesk::answerTimeoutMs(m_settings, m_options))
+    , m_codec(makeCodec(m_settings.protocol))
+    , m_decoder(m_codec->makeDecoder(Role::Operator))
+{}
+
+ClientWorker::~ClientWorker()
+{
+    // No signals from here on: the facade is going away.
+    blockSignals(true);
+    m_state = DriveClient::State::Disconnected;
+    failAll(Reply::Status::Cancelled, tr("the client was closed"));
+    if (m_link) {
+        m_link->disconnect(this);
+        m_link->close();
+    }
+}
+
+void ClientWorker::init()
+{
+    m_deadlineTimer = new QTimer(this);
+    m_deadlineTimer->setSingleShot(true);
+    m_deadlineTimer->setTimerType(Qt::PreciseTimer);
+    connect(m_deadlineTimer, &QTimer::timeout, this, &ClientWorker::onDeadline);
+    m_sinceLastByte.start();
+}
+
+QString ClientWorker::connectionDescription() const
+{
+    return m_link ? m_link->description() : m_settings.displayName();
+}
+
+void ClientWorker::setState(DriveClient::State state)
+{
+    if (m_state == state)
+        return;
+    m_state = state;
+    emit stateChanged(state);
+}
+
+void ClientWorker::connectToDrive()
+{
+    if (m_state == DriveClient::State::Connecting || m_state == DriveClient::State::Connected)
+        return;
+    dropLink();
+    m_decoder->reset();
+    m_selectedDrive = -1;
+    m_link = makeLink(m_settings);
+    // Queued: a link may report from inside send(), and the worker must not re-enter itself.
+    // What a dropped link still had on its way is not this link's business.
+    const quint64 generation = ++m_linkGeneration;
+    connect(m_link.get(), &Link::opened, this, &ClientWorker::onLinkOpened);
+    connect(
+        m_link.get(), &Link::received, this,
+        [this, generation](const QByteArray &bytes) {
+            if (generation == m_linkGeneration)
+                onReceived(bytes);
+        },
+        Qt::QueuedConnection);
+    connect(
+        m_link.get(), &Link::lineError, this,
+        [this, generation](const QString &reason) {
+            if (generation == m_linkGeneration)
+                onLineError(reason);
+        },
+        Qt::QueuedConnection);
+    connect(
+        m_link.get(), &Link::failed, this,
+        [this, generation](const QString &reason) {
+            if (generation == m_linkGeneration)
+                onLinkFailed(reason);
+        },
+        Qt::QueuedConnection);
+    setState(DriveClient::State::Connecting);
+    m_link->open();
+}
+
+void ClientWorker::disconnectFromDrive()
+{
+    if (!m_link)
+        return;
+    setState(DriveClient::State::Disconnected);
+    dropLink();
+    failAll(Reply::Status::Cancelled, tr("disconnected"));
+}
+
+void ClientWorker::dropLink()
+{
+    if (!m_link)
+        return;
+    ++m_linkGeneration;
+    m_link->disconnect(this);
+    m_link->close();
+    // It may be reporting right now: delete it once its signal returned.
+    m_link.release()->deleteLater();
+}
+
+void ClientWorker::onLinkOpened()
+{
+    if (m_state != DriveClient::State::Connecting)
+        return;
+    setState(DriveClient::State::Connected);
+    emit connected();
+    pump();
+}
+
+void ClientWorker::onLinkFailed(const QString &reason)
+{
+    // The state changes first: whatever a completion submits then fails at once.
+    if (m_state == DriveClient::State::Connecting) {
+        setState(DriveClient::State::Disconnected);
+        dropLink();
+        emit connectionFailed(reason);
+        failAll(Reply::Status::NotConnected, reason);
+    } else if (m_state == DriveClient::State::Connected) {
+        setState(DriveClient::State::Lost);
+        dropLink();
+        emit linkLost(reason);
+        failAll(Reply::Status::LinkLost, reason);
+    }
+}
+
+void ClientWorker::submit(const Telegram &request, std::function<void(const Reply &)> done)
+{
+    submitRequest(request, {}, [done = std::move(done)](const Reply &reply, bool) { done(reply); });
+}
+
+quint64 ClientWorker::submitRequest(const Telegram &request, RequestOptions options,
+                                    Completion done)
+{
+    auto pending = std::make_unique<PendingRequest>();
+    pending->ticket = m_nextTicket++;
+    pending->options = options;
+    pending->request = request;
+    pending->done = std::move(done);
+    const quint64 ticket = pending->ticket;
+
+    Reply rejection;
+    if (!prepare(*pending, &rejection)) {
+        complete(*pending, rejection.status, nullptr, rejection.detail);
+        return ticket;
+    }
+    if (m_state != DriveClient::State::Connecting && m_state != DriveClient::State::Connected) {
+        const QString why = m_state == DriveClient::State::Lost ? tr("the link was lost")
+                                                                : QString();
+        complete(*pending, Reply::Status::NotConnected, nullptr, why);
+        return ticket;
+    }
+    m_queue.push_back(std::move(pending));
+    pump();
+    return ticket;
+}
+
+bool ClientWorker::prepare(PendingRequest &pending, Reply *rejection) const
+{
+    rejection->status = Reply::Status::Unsupported;
+    const Telegram &request = pending.request;
+    if (request.isResponse()) {
+        rejection->detail = tr("only requests can be sent, this is an answer");
+        return false;
+    }
+    if (!m_codec->supports(request.service, request.access)) {
+        rejection->detail = tr("%1 has no %2 of %3")
+                                .arg(protocolName(m_settings.protocol),
+                                     request.isWrite() ? tr("write") : tr("read"),
+                                     serviceName(request.service));
+        return false;
+    }
+    if (isDin()) {
+        pending.target = request.driveAddress >= 0 ? request.driveAddress : m_settings.driveAddress;
+        if (pending.target < 0 || pending.target > kBroadcastAddress) {
+            rejection->detail = tr("drive address %1 is outside 0..239 (240..255: groups and "
+                                   "broadcast)").arg(pending.target);
+            return false;
+        }
+        if (pending.target > kLastDriveAddress && !request.isWrite()) {
+            rejection->detail = tr("address %1 is a group or broadcast address: no drive answers "
+                                   "there, so it takes writes only").arg(pending.target);
+            return false;
+        }
+    }
+    Telegram trial = request;
+    trial.operatorInvoke = carriesInvokeId(m_settings.protocol, request.service) ? 1 : 0;
+    trial.inverterInvoke = 0;
+    trial.driveAddress = isDin() ? pending.target : -1;
+    QString error;
+    if (m_codec->encode(trial, &error).isEmpty()) {
+        rejection->detail = error.isEmpty() ? tr("the codec cannot encode it") : error;
+        return false;
+    }
+    pending.timeoutMs = pending.options.timeoutMs > 0 ? pending.options.timeoutMs
+                                                      : m_answerTimeoutMs;
+    const int retries = pending.options.retries >= 0 ? pending.options.retries : m_options.retries;
+    pending.maxAttempts = 1 + std::max(retries, 0);
+    return true;
+}
+
+int ClientWorker::capacity() const
+{
+    if (isDin())
+        return 1;
+    return std::clamp(m_options.maxInFlight, 1, kMaxInFlight);
+}
+
+void ClientWorker::pump()
+{
+    if (m_pumping) {
+        m_pumpAgain = true;
+        return;
+    }
+    m_pumping = true;
+    do {
+        m_pumpAgain = false;
+        while (m_state == DriveClient::State::Connected && !m_queue.empty()
+               && int(m_inFlight.size()) < capacity()) {
+            Request next = std::move(m_queue.front());
+            m_queue.pop_front();
+            PendingRequest &request = *next;
+            m_inFlight.push_back(std::move(next));
+            transmit(request);
+        }
+    } while (m_pumpAgain);
+    m_pumping = false;
+    armDeadlineTimer();
+}
+
+quint8 ClientWorker::nextInvokeId()
+{
+    for (int tries = 0; tries < kInvokeIdCount; ++tries) {
+        m_lastInvokeId = quint8(m_lastInvokeId % kInvokeIdCount + 1);
+        const auto holdsIt = [this](const Request &r) {
+            return r->stage != PendingRequest::Stage::Queued
+                   && r->wire.operatorInvoke == m_lastInvokeId;
+        };
+        const bool taken = std::any_of(m_inFlight.begin(), m_inFlight.end(), holdsIt);
+        if (!taken)
+            break;
+    }
+    return m_lastInvokeId;
+}
+
+bool ClientWorker::expectsAnswer(const PendingRequest &request) const
+{
+    return !(isDin() && request.target > kLastDriveAddress);
+}
+
+void ClientWorker::transmit(PendingRequest &request)
+{
+    ++request.attempts;
+    request.wire = request.request;
+    request.wire.direction = Direction::Request;
+    request.wire.inverterInvoke = 0;
+    request.wire.operatorInvoke = 0;
+    request.stage = PendingRequest::Stage::Queued; // its old invoke id is free again
+    if (carriesInvokeId(m_settings.protocol, request.request.service))
+        request.wire.operatorInvoke = nextInvokeId();
+    request.wire.driveAddress = -1;
+    if (isDin() && m_selectedDrive != request.target)
+        request.wire.driveAddress = request.target;
+
+    QString error;
+    const QByteArray bytes = m_codec->encode(request.wire, &error);
+    if (bytes.isEmpty()) {
+        Request owned = takeInFlight(request.ticket);
+        if (!owned->completed())
+            complete(*owned, Reply::Status::Unsupported, nullptr, error);
+        pump();
+        return;
+    }
+    if (isDin()) {
+        m_selectedDrive = request.target;
+        // Half duplex, one request at a time: nothing that came before can answer this one.
+        m_decoder->reset();
+        m_staleAnswers = m_draining;
+    }
+    request.stage = PendingRequest::Stage::AwaitingAnswer;
+    request.deadline = QDeadlineTimer(request.timeoutMs, Qt::PreciseTimer);
+    QString meaning = describe(request.wire);
+    if (request.wire.driveAddress >= 0)
+        meaning = tr("to drive %1: %2").arg(request.wire.driveAddress).arg(meaning);
+    record(TrafficRecord::Kind::Sent, bytes, meaning);
+    m_link->send(bytes);
+
+    if (!expectsAnswer(request)) {
+        Request owned = takeInFlight(request.ticket);
+        if (!owned->completed())
+            complete(*owned, Reply::Status::NoReply);
+        pump();
+    }
+}
+
+void ClientWorker::armDeadlineTimer()
+{
+    if (!m_deadlineTimer)
+        return;
+    qint64 earliest = -1;
+    for (const Request &request : m_inFlight) {
+        if (request->stage == PendingRequest::Stage::Queued)
+            continue;
+        const qint64 remaining = request->deadline.remainingTime();
+        if (earliest < 0 || remaining < earliest)
+            earliest = remaining;
+    }
+    if (earliest < 0)
+        m_deadlineTimer->stop();
+    else
+        m_deadlineTimer->start(int(std::max<qint64>(earliest, 0)));
+}
+
+void ClientWorker::record(TrafficRecord::Kind kind, const QByteArray &bytes, const QString &meaning)
+{
+    TrafficRecord entry;
+    entry.kind = kind;
+    entry.msecsSinceEpoch = QDateTime::currentMSecsSinceEpoch();
+    entry.bytes = bytes;
+    entry.meaning = meaning;
+    emit traffic(entry);
+}
+
+void OwnedSink::submit(const Telegram &request, std::function<void(const Reply &)> done)
+{
+    RequestOptions options;
+    options.owner = m_owner;
+    m_worker.submitRequest(request, options,
+                           [done = std::move(done)](const Reply &reply, bool) { done(reply); });
+}
+
+} // namespace DriveDesk

@@ -1,0 +1,143 @@
+#pragma once
+
+#include "client/DriveClient.h"
+#include "client/PendingRequest.h"
+#include "client/RequestSink.h"
+#include "link/Link.h"
+#include "protocol/Codec.h"
+
+#include <QElapsedTimer>
+#include <QPromise>
+
+#include <deque>
+#include <memory>
+#include <vector>
+
+class QTimer;
+
+namespace DriveDesk {
+
+// The protocol work of a DriveClient: the link, the request queue with timeouts and retries,
+// invoke ids, the DIN66019II drive selection, and the check of every answer against its
+// request. Thread: lives in the client's own thread; the facade reaches it only through queued
+// calls, and every callback (RequestSink::submit's `done`, Completion) runs in this thread.
+class ClientWorker : public QObject, public RequestSink
+{
+    Q_OBJECT
+public:
+    ClientWorker(ConnectionSettings settings, ClientOptions options, QObject *parent = nullptr);
+    ~ClientWorker() override;
+
+    // Runs once the thread started.
+    void init();
+    void connectToDrive();
+    void disconnectFromDrive();
+    // Every queued and in-flight request finishes as Cancelled.
+    void cancelAll();
+
+    void submit(const Telegram &request, std::function<void(const Reply &)> done) override;
+    void cancelPending() override { cancelAll(); }
+
+    // The facade's requests: the result goes to the promise; cancelling its future drops the
+    // request from the queue, or has its answer ignored when it is already on the wire.
+    void submitForFuture(const Telegram &request, std::shared_ptr<QPromise<Reply>> promise);
+    void findDrives(int first, int last, quint16 probeAddress,
+                    std::shared_ptr<QPromise<QList<int>>> promise);
+    void scan(const ScanOptions &options, std::shared_ptr<QPromise<DriveDescription>> promise);
+
+    // For jobs in this thread. Returns the request's ticket; `done` may run before it returns
+    // (a request that cannot be sent, or no connection).
+    quint64 submitRequest(const Telegram &request, RequestOptions options, Completion done);
+    void cancelOwner(quint64 owner);
+    quint64 newOwner() { return m_nextOwner++; }
+
+    const ConnectionSettings &settings() const { return m_settings; }
+    const ProtocolCodec &codec() const { return *m_codec; }
+    int answerTimeoutMs() const { return m_answerTimeoutMs; }
+    QString connectionDescription() const;
+
+signals:
+    void stateChanged(DriveDesk::DriveClient::State state);
+    void connected();
+    void connectionFailed(const QString &reason);
+    void linkLost(const QString &reason);
+    void traffic(const DriveDesk::TrafficRecord &record);
+
+private:
+    using Request = std::unique_ptr<PendingRequest>;
+
+    void setState(DriveClient::State state);
+    void onLinkOpened();
+    void onLinkFailed(const QString &reason);
+    void dropLink();
+    void onReceived(const QByteArray &bytes);
+    void onAnswer(const Telegram &answer);
+    void onDecodeError(const DecodeError &error);
+    void onLineError(const QString &reason);
+    void onDeadline();
+    void answerInverterRequest(const Telegram &request);
+
+    // Validates and resolves a new request; false and *rejection when it cannot be sent.
+    bool prepare(PendingRequest &request, Reply *rejection) const;
+    void pump();
+    int capacity() const;
+    void transmit(PendingRequest &request);
+    quint8 nextInvokeId();
+    bool expectsAnswer(const PendingRequest &request) const;
+    // Another attempt, or the end with Timeout when every attempt is spent.
+    void retryOrGiveUp(PendingRequest &request);
+    void cancelTicket(quint64 ticket);
+    // Finishes every request with this status (link lost, connection failed, closing).
+    void failAll(Reply::Status status, const QString &detail);
+
+    PendingRequest *awaitingAnswer(quint8 operatorInvoke);
+    Request takeInFlight(quint64 ticket);
+    // Runs the request's completion; the request itself stays where it is.
+    void complete(PendingRequest &request, Reply::Status status, const Telegram *answer = nullptr,
+                  const QString &detail = {});
+    QString transportDetail(const PendingRequest &request, Reply::Status status) const;
+    void armDeadlineTimer();
+    void record(TrafficRecord::Kind kind, const QByteArray &bytes, const QString &meaning);
+    bool isDin() const { return m_settings.protocol != Protocol::Hsp5; }
+
+    const ConnectionSettings m_settings;
+    const ClientOptions m_options;
+    const int m_answerTimeoutMs = 0;
+    std::unique_ptr<ProtocolCodec> m_codec;
+    std::unique_ptr<FrameDecoder> m_decoder;
+    std::unique_ptr<Link> m_link;
+    DriveClient::State m_state = DriveClient::State::Disconnected;
+    std::deque<Request> m_queue;
+    std::vector<Request> m_inFlight; // on the wire or between attempts
+    QTimer *m_deadlineTimer = nullptr;
+    QElapsedTimer m_sinceLastByte;
+    quint8 m_lastInvokeId = 0;
+    int m_selectedDrive = -1; // DIN66019(II): the drive the last EOT selected, -1 unknown
+    quint64 m_linkGeneration = 0; // which link's queued reports still count
+    quint64 m_nextTicket = 1;
+    quint64 m_nextOwner = 1;
+    bool m_pumping = false;
+    bool m_pumpAgain = false;
+    bool m_draining = false;
+    bool m_staleAnswers = false; // DIN: a request went out while decoded items were pending
+};
+
+// The RequestSink a drive scan gets: the client's queue, where cancelPending() drops only the
+// scan's own requests and leaves everybody else's alone.
+class OwnedSink : public RequestSink
+{
+public:
+    explicit OwnedSink(ClientWorker &worker)
+        : m_worker(worker)
+        , m_owner(worker.newOwner())
+    {}
+
+    void submit(const Telegram &request, std::function<void(const Reply &)> done) override;
+    void cancelPending() override { m_worker.cancelOwner(m_owner); }
+
+private:
+    ClientWorker &m_worker;
+    const quint64 m_owner;
+};
+
+} // namespace DriveDesk

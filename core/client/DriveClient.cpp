@@ -1,0 +1,151 @@
+#include "DriveClient.h"
+
+#include "ClientWorker.h"
+
+#include <QThread>
+
+namespace DriveDesk {
+
+namespace {
+
+template<typename T>
+std::shared_ptr<QPromise<T>> startedPromise()
+{
+    auto promise = std::make_shared<QPromise<T>>();
+    promise->start();
+    return promise;
+}
+
+} // namespace
+
+DriveClient::DriveClient(ConnectionSettings settings, ClientOptions options, QObject *parent)
+    : QObject(parent)
+    , m_settings(std::move(settings))
+    , m_options(options)
+{
+    qRegisterMetaType<Reply>();
+    qRegisterMetaType<TrafficRecord>();
+    qRegisterMetaType<DriveClient::State>();
+
+    m_thread = new QThread; // not a child: it must outlive everything the worker does
+    m_thread->setObjectName(QStringLiteral("DriveDesk client: %1").arg(m_settings.displayName()));
+    m_worker = new ClientWorker(m_settings, m_options);
+    m_worker->moveToThread(m_thread);
+    connect(m_thread, &QThread::started, m_worker, &ClientWorker::init);
+    connect(m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
+
+    connect(m_worker, &ClientWorker::stateChanged, this, &DriveClient::setState);
+    connect(m_worker, &ClientWorker::connected, this, &DriveClient::connected);
+    connect(m_worker, &ClientWorker::connectionFailed, this, &DriveClient::connectionFailed);
+    connect(m_worker, &ClientWorker::linkLost, this, &DriveClient::linkLost);
+    connect(m_worker, &ClientWorker::traffic, this, &DriveClient::traffic);
+    m_thread->start();
+}
+
+DriveClient::~DriveClient()
+{
+    // The worker finishes every open request as Cancelled when it is deleted on `finished`.
+    m_thread->quit();
+    m_thread->wait();
+    delete m_thread;
+}
+
+void DriveClient::setState(State state)
+{
+    if (m_state == state)
+        return;
+    m_state = state;
+    emit stateChanged(state);
+}
+
+void DriveClient::connectToDrive()
+{
+    QMetaObject::invokeMethod(m_worker, &ClientWorker::connectToDrive, Qt::QueuedConnection);
+}
+
+void DriveClient::disconnectFromDrive()
+{
+    QMetaObject::invokeMethod(m_worker, &ClientWorker::disconnectFromDrive, Qt::QueuedConnection);
+}
+
+void DriveClient::cancelAll()
+{
+    QMetaObject::invokeMethod(m_worker, &ClientWorker::cancelAll, Qt::QueuedConnection);
+}
+
+QFuture<Reply> DriveClient::send(const Telegram &request)
+{
+    auto promise = startedPromise<Reply>();
+    QFuture<Reply> future = promise->future();
+    ClientWorker *worker = m_worker;
+    QMetaObject::invokeMethod(
+        worker, [worker, request, promise] { worker->submitForFuture(request, promise); },
+        Qt::QueuedConnection);
+    return future;
+}
+
+QFuture<Reply> DriveClient::readValue(quint16 address, quint8 setMask)
+{
+    return send(Telegram::request(Service::ParameterValue, Access::Read,
+                                  ParameterValue{address, setMask, 0}));
+}
+
+QFuture<Reply> DriveClient::writeValue(quint16 address, qint32 value, quint8 setMask)
+{
+    return send(Telegram::request(Service::ParameterValue, Access::Write,
+                                  ParameterValue{address, setMask, value}));
+}
+
+QFuture<Reply> DriveClient::readValueStandard(quint16 address, quint8 set)
+{
+    const Service service = m_settings.protocol == Protocol::Din66019
+                                ? Service::Legacy
+                                : Service::ParameterValueStandard;
+    return send(Telegram::request(service, Access::Read, ParameterValue{address, set, 0}));
+}
+
+QFuture<Reply> DriveClient::writeValueStandard(quint16 address, qint32 value, quint8 set)
+{
+    const Service service = m_settings.protocol == Protocol::Din66019
+                                ? Service::Legacy
+                                : Service::ParameterValueStandard;
+    return send(Telegram::request(service, Access::Write, ParameterValue{address, set, value}));
+}
+
+QFuture<Reply> DriveClient::resetToDefault(quint16 address, quint8 setMask)
+{
+    return send(Telegram::request(Service::CheckDefault, Access::Write,
+                                  DefaultCheckData{address, setMask}));
+}
+
+QFuture<Reply> DriveClient::readScope()
+{
+    return send(Telegram::request(Service::Scope, Access::Read, ScopeData{}));
+}
+
+QFuture<QList<int>> DriveClient::findDrives(int first, int last, quint16 probeAddress)
+{
+    auto promise = startedPromise<QList<int>>();
+    QFuture<QList<int>> future = promise->future();
+    ClientWorker *worker = m_worker;
+    QMetaObject::invokeMethod(
+        worker,
+        [worker, first, last, probeAddress, promise] {
+            worker->findDrives(first, last, probeAddress, promise);
+        },
+        Qt::QueuedConnection);
+    return future;
+}
+
+QFuture<DriveDescription> DriveClient::scan(ScanOptions options)
+{
+    auto promise = startedPromise<DriveDescription>();
+    QFuture<DriveDescription> future = promise->future();
+    ClientWorker *worker = m_worker;
+    QMetaObject::invokeMethod(
+        worker, [worker, options, promise] { worker->scan(options, promise); },
+        Qt::QueuedConnection);
+    return future;
+}
+
+} // namespace DriveDesk

@@ -1,0 +1,373 @@
+#include "DriveScanner.h"
+
+#include <QPointer>
+
+#include <algorithm>
+#include <set>
+
+namespace DriveDesk {
+
+namespace {
+
+// Requests handed to the sink at once: enough for it to keep 4 in flight (HSP5) and have the
+// next ones ready, few enough that a cancel or a refusal reaches the plan quickly.
+constexpr int kSubmitWindow = 8;
+
+// Service 13 function 1: the device identification text.
+constexpr quint8 kIdentifyFunction = 1;
+
+QString hexByte(quint8 value)
+{
+    return QStringLiteral("%1").arg(value, 2, 16, QLatin1Char('0')).toUpper();
+}
+
+} // namespace
+
+DriveScanner::DriveScanner(RequestSink &sink, ScanOptions options, Language language,
+                           QObject *parent)
+    : QObject(parent)
+    , m_sink(sink)
+    , m_options(std::move(options))
+    , m_language(language)
+{}
+
+void DriveScanner::start()
+{
+    if (m_started || m_finished)
+        return;
+    m_started = true;
+
+    enqueue(Service::Fieldbus, FieldbusData{kIdentifyFunction, 0, 0, {}}, tr("identification"),
+            [this](const Reply &reply) {
+                // A drive without the function refuses it (ack 7): no identification then.
+                if (const auto *data = reply.data<FieldbusData>())
+                    m_state.identification = driveText(data->data);
+            });
+
+    QList<quint8> pages = m_options.groupPages;
+    if (pages.isEmpty()) {
+        for (int page = 0; page <= 0xFF; ++page)
+            pages.append(quint8(page));
+    }
+    std::sort(pages.begin(), pages.end());
+    pages.erase(std::unique(pages.begin(), pages.end()), pages.end());
+    for (quint8 page : std::as_const(pages))
+        probeGroup(page);
+
+    submitQueued();
+}
+
+void DriveScanner::cancel()
+{
+    if (m_finished)
+        return;
+    // Finished first: the Cancelled replies the sink now delivers find nothing left to do.
+    m_finished = true;
+    m_queue.clear();
+    m_sink.cancelPending();
+    emit finished(m_state.describe(m_language, tr("cancelled")));
+}
+
+void DriveScanner::enqueue(Service service, ServiceData data, QString what, Handler handle)
+{
+    m_queue.push_back({Telegram::request(service, Access::Read, std::move(data)), std::move(what),
+                       std::move(handle)});
+    ++m_enqueued;
+}
+
+template<typename T>
+void DriveScanner::readParameter(quint8 page, quint8 number, Service service, ServiceData data,
+                                 const QString &label,
+                                 std::function<void(ScanParameter &, const T &)> apply)
+{
+    enqueue(service, std::move(data), parameterWhat(page, number, label),
+            [this, page, number, label, apply = std::move(apply)](const Reply &reply) {
+                ScanParameter &parameter = m_state.parameter(page, number);
+                if (const T *answer = reply.data<T>())
+                    apply(parameter, *answer);
+                else
+                    parameter.errors.append(failure(label, reply));
+            });
+}
+
+void DriveScanner::submitQueued()
+{
+    if (m_submitting)
+        return;
+    m_submitting = true;
+    const QPointer<DriveScanner> self(this);
+    while (!m_finished && m_submitted < kSubmitWindow && !m_queue.empty()) {
+        QueuedRequest next = std::move(m_queue.front());
+        m_queue.pop_front();
+        ++m_submitted;
+        m_sink.submit(next.telegram, [self, what = next.what, handle = next.handle](
+                                         const Reply &reply) {
+            if (self)
+                self->onReplied(reply, what, handle);
+        });
+        if (!self)
+            return;
+    }
+    m_submitting = false;
+    if (!m_finished && m_queue.empty() && m_submitted == 0)
+        finish({});
+}
+
+void DriveScanner::onReplied(const Reply &reply, const QString &what, const Handler &handle)
+{
+    --m_submitted;
+    ++m_done;
+    if (m_finished)
+        return;
+    switch (reply.status) {
+    case Reply::Status::Cancelled:
+        finish(tr("cancelled"));
+        return;
+    case Reply::Status::LinkLost:
+    case Reply::Status::NotConnected:
+        finish(reply.message(m_language));
+        return;
+    default:
+        break;
+    }
+    handle(reply);
+    emit progress(m_done, total(), what);
+    submitQueued();
+}
+
+void DriveScanner::finish(const QString &reason)
+{
+    m_finished = true;
+    m_queue.clear();
+    emit finished(m_state.describe(m_language, reason));
+}
+
+int DriveScanner::total() const
+{
+    // Each parameter still to be found costs its name, services 2-5, 7 and one value read.
+    const int perParameter = 1 + 4 + (m_options.plaintexts ? 1 : 0) + (m_options.values ? 1 : 0);
+    int expected = 0;
+    for (const auto &[page, group] : m_state.groups)
+        expected += group.namesToAsk() * perParameter;
+    return m_enqueued + expected;
+}
+
+void DriveScanner::probeGroup(quint8 page)
+{
+    enqueue(Service::GroupProperties, GroupPropertiesData{quint16(page << 8)},
+            tr("group page %1h").arg(hexByte(page)),
+            [this, page](const Reply &reply) { onGroupProperties(page, reply); });
+}
+
+void DriveScanner::onGroupProperties(quint8 page, const Reply &reply)
+{
+    const auto *properties = reply.data<GroupPropertiesData>();
+    if (!properties) {
+        // A refusal, whatever its ack, means there is no group on this page; anything else
+        // leaves it unknown.
+        if (reply.status != Reply::Status::Refused)
+            m_state.problems.append(
+                tr("group page %1h: %2").arg(hexByte(page), reply.message(m_language)));
+        return;
+    }
+    ScanGroup &group = m_state.groups[page];
+    GroupDescription &description = group.description;
+    description.address = quint16(page << 8);
+    description.index = properties->index;
+    description.id = driveText(QByteArray(properties->id.data(), int(properties->id.size())));
+    description.shortcut = properties->shortcut;
+    description.properties = properties->properties;
+    description.highestNumber = properties->highestNumber;
+    description.parameterCount = int(properties->countMinusOne) + 1;
+
+    enqueue(Service::GroupName, NameData{description.address, quint8(m_language), {}},
+            tr("group %1: name").arg(description.id), [this, page](const Reply &reply) {
+                // A group that will not tell its name keeps an empty one; its id still shows.
+                if (const auto *name = reply.data<NameData>())
+                    m_state.groups.at(page).description.name = driveText(name->text);
+            });
+
+    if (m_options.parameters && m_options.onlyParameters.isEmpty()) {
+        askNames(page);
+        return;
+    }
+    // No numbers are walked in order here: at most the listed ones are asked, each once.
+    group.nextNumber = int(description.highestNumber) + 1;
+    if (!m_options.parameters)
+        return;
+    std::set<quint8> listed;
+    for (quint16 address : m_options.onlyParameters) {
+        if (address >> 8 == page)
+            listed.insert(quint8(address & 0xFF));
+    }
+    for (quint8 number : listed)
+        askName(page, number);
+}
+
+void DriveScanner::askNames(quint8 page)
+{
+    ScanGroup &group = m_state.groups.at(page);
+    for (int n = group.namesToAsk(); n > 0; --n)
+        askName(page, quint8(group.nextNumber++));
+}
+
+void DriveScanner::askName(quint8 page, quint8 number)
+{
+    ScanGroup &group = m_state.groups.at(page);
+    ++group.namesPending;
+    enqueue(Service::ParameterName,
+            NameData{quint16(group.description.address | number), quint8(m_language), {}},
+            parameterWhat(page, number),
+            [this, page, number](const Reply &reply) { onParameterName(page, number, reply); });
+}
+
+void DriveScanner::onParameterName(quint8 page, quint8 number, const Reply &reply)
+{
+    ScanGroup &group = m_state.groups.at(page);
+    --group.namesPending;
+    const bool unused = reply.status == Reply::Status::Refused
+                        && reply.ack() == Ack::AddressInvalid;
+    if (!unused) {
+        // Any other failure may hide an existing parameter: keep it with the reason and read
+        // the rest of what the drive says about it.
+        ScanParameter &parameter = group.parameters[number];
+        parameter.description.address = quint16(group.description.address | number);
+        if (const auto *name = reply.data<NameData>())
+            parameter.description.name = driveText(name->text);
+        else
+            parameter.errors.append(failure(tr("name"), reply));
+        readMetadata(page, number);
+    }
+    askNames(page);
+}
+
+void DriveScanner::readMetadata(quint8 page, quint8 number)
+{
+    const quint16 address = m_state.parameter(page, number).description.address;
+    readParameter<ParameterLimits>(page, number, Service::Limits, ParameterLimits{address},
+                                   tr("limits"), [](ScanParameter &p, const ParameterLimits &d) {
+                                       p.description.minimum = d.lower;
+                                       p.description.maximum = d.upper;
+                                   });
+    readParameter<DefaultValue>(page, number, Service::DefaultValue, DefaultValue{address},
+                                tr("default value"), [](ScanParameter &p, const DefaultValue &d) {
+                                    p.description.defaultValue = d.value;
+                                });
+    enqueue(Service::Properties, PropertiesData{address},
+            parameterWhat(page, number, tr("properties")),
+            [this, page, number](const Reply &reply) {
+                ScanParameter &p = m_state.parameter(page, number);
+                const auto *d = reply.data<PropertiesData>();
+                if (!d) {
+                    p.errors.append(failure(tr("properties"), reply));
+                    // Without bit 11 it is unknown whether the value is one or one per set.
+                    if (m_options.values)
+                        p.errors.append(tr("values: not read, the properties are unknown"));
+                    return;
+                }
+                p.description.properties1 = d->properties1;
+                p.description.properties2 = d->properties2;
+                if (m_options.values)
+                    readValues(page, number, p.description.isSetProgrammable());
+            });
+    readParameter<DisplayScalingData>(page, number, Service::DisplayScaling,
+                                      DisplayScalingData{address}, tr("display scaling"),
+                                      [address](ScanParameter &p, const DisplayScalingData &d) {
+                                          p.description.scaling = d;
+                                          p.description.scaling.address = address;
+                                      });
+    if (!m_options.plaintexts)
+        return;
+    readParameter<PlaintextIndicesData>(
+        page, number, Service::PlaintextIndices, PlaintextIndicesData{address},
+        tr("plaintext indices"),
+        [this, page, number, address](ScanParameter &p, const PlaintextIndicesData &d) {
+            p.description.plaintextIndices = d;
+            p.description.plaintextIndices.address = address;
+            readPlaintexts(page, number, d);
+        });
+}
+
+void DriveScanner::readValues(quint8 page, quint8 number, bool setProgrammable)
+{
+    const quint16 address = m_state.parameter(page, number).description.address;
+    if (!setProgrammable) {
+        readParameter<ParameterValue>(page, number, Service::ParameterValueStandard,
+                                      ParameterValue{address, 0, 0}, tr("value"),
+                                      [](ScanParameter &p, const ParameterValue &d) {
+                                          p.description.values[0] = d.value;
+                                      });
+        return;
+    }
+    for (int set = 0; set < kParameterSets; ++set) {
+        readParameter<ParameterValue>(page, number, Service::ParameterValue,
+                                      ParameterValue{address, quint8(1u << set), 0},
+                                      tr("value of set %1").arg(set),
+                                      [set](ScanParameter &p, const ParameterValue &d) {
+                                          p.description.values[set] = d.value;
+                                      });
+    }
+}
+
+void DriveScanner::readPlaintexts(quint8 page, quint8 number,
+                                  const PlaintextIndicesData &indices)
+{
+    ScanParameter &parameter = m_state.parameter(page, number);
+    // Definition indices travel in one byte.
+    const int count = std::min<int>(indices.combivisCount, 0x100);
+    if (count < indices.combivisCount)
+        parameter.errors.append(
+            tr("plaintexts: the drive names %1 definitions, only %2 can be read")
+                .arg(indices.combivisCount)
+                .arg(count));
+    parameter.definitions.resize(count);
+    for (int definition = 0; definition < count; ++definition) {
+        const auto index = quint8(definition);
+        const quint16 ptIndex = indices.combivisIndex;
+        readParameter<PlaintextDefinitionData>(
+            page, number, Service::PlaintextDefinition,
+            PlaintextDefinitionData{ptIndex, index, quint8(m_language), 0, 0, {}},
+            tr("plaintext definition %1").arg(definition),
+            [this, page, number, ptIndex, index](ScanParameter &p,
+                                                 const PlaintextDefinitionData &d) {
+                ScanDefinition &scanned = p.definitions.at(index);
+                scanned.definition = PlaintextDefinition{d.mask, driveText(d.text), {}};
+                scanned.entries.resize(d.count);
+                readPlaintextEntries(page, number, ptIndex, index, d.count);
+            });
+    }
+}
+
+void DriveScanner::readPlaintextEntries(quint8 page, quint8 number, quint16 index,
+                                        quint8 definition, int count)
+{
+    for (int subindex = 0; subindex < count; ++subindex) {
+        const auto sub = quint8(subindex);
+        readParameter<CombivisPlaintextData>(
+            page, number, Service::CombivisPlaintext,
+            CombivisPlaintextData{index, definition, sub, quint8(m_language), 0, 0, {}},
+            tr("plaintext %1.%2").arg(definition).arg(subindex),
+            [definition, sub](ScanParameter &p, const CombivisPlaintextData &d) {
+                p.definitions.at(definition).entries.at(sub)
+                    = PlaintextEntry{d.value, d.type, driveText(d.text)};
+            });
+    }
+}
+
+QString DriveScanner::parameterWhat(quint8 page, quint8 number, const QString &detail) const
+{
+    const QString &groupId = m_state.groups.at(page).description.id;
+    const QString what = tr("group %1: parameter %2").arg(groupId, parameterId(groupId, number));
+    return detail.isEmpty() ? what : QStringLiteral("%1, %2").arg(what, detail);
+}
+
+QString DriveScanner::failure(const QString &label, const Reply &reply) const
+{
+    // An Ok reply without the expected payload is a decoding fault, not the drive's word.
+    const QString service = serviceName(reply.request.service);
+    const QString reason = reply.ok() ? tr("the answer carries no %1").arg(service)
+                                      : reply.message(m_language);
+    return QStringLiteral("%1: %2").arg(label, reason);
+}
+
+} // namespace DriveDesk

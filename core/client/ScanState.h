@@ -1,0 +1,54 @@
+#pragma once
+
+#include "parameters/DriveDescription.h"
+#include "protocol/Language.h"
+
+#include <QStringList>
+
+#include <map>
+#include <optional>
+#include <vector>
+
+namespace DriveDesk {
+
+// A COMBIVIS plaintext definition while its texts are still arriving.
+struct ScanDefinition {
+    std::optional<PlaintextDefinition> definition;      // once service 12 answered
+    std::vector<std::optional<PlaintextEntry>> entries; // by subindex, as service 9 answers
+};
+
+// A parameter while its metadata and values are still arriving.
+struct ScanParameter {
+    ParameterDescription description;
+    QStringList errors;                      // one line per failed read
+    std::vector<ScanDefinition> definitions; // by definition index
+};
+
+// A group while its parameters are being discovered.
+struct ScanGroup {
+    GroupDescription description;   // parameters stay empty until describe()
+    int nextNumber = 0;             // the next parameter number whose name is to be asked
+    int namesPending = 0;           // name reads queued or in flight
+    std::map<quint8, ScanParameter> parameters; // by number
+
+    // How many more names may still be asked: the drive's count not yet found or asked for,
+    // bounded by the numbers left up to the highest one.
+    int namesToAsk() const;
+};
+
+// Everything a scan has read so far; describe() turns it into what the scan hands out.
+struct ScanState {
+    std::map<quint8, ScanGroup> groups; // by group page
+    QString identification;
+    QStringList problems; // reads whose failure leaves it unknown whether something exists
+
+    ScanParameter &parameter(quint8 page, quint8 number);
+    // Groups in the drive's display order, parameters by number, failed reads left out (their
+    // reasons are in ParameterDescription::error).
+    DriveDescription describe(Language language, const QString &stopReason) const;
+};
+
+// A drive text (Latin-1, at most 24 characters) up to its first NUL.
+QString driveText(const QByteArray &bytes);
+
+} // namespace DriveDesk

@@ -1,0 +1,20 @@
+# The client: reply texts and checks (unit), and the real client against the simulated drive
+# in process, over TCP and over pseudo-terminals (integration).
+if(NOT TARGET drivedesk_client)
+    return()
+endif()
+
+drivedesk_add_test(NAME tst_reply LABEL unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_reply.cpp LIBS drivedesk_client)
+drivedesk_add_test(NAME tst_replycheck LABEL unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_replycheck.cpp LIBS drivedesk_client)
+
+foreach(name clientservices clientdin clientpipeline clientfaults clienttransports clientscan)
+    drivedesk_add_test(NAME tst_${name} LABEL integration TIMEOUT 120
+        SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_${name}.cpp ${CMAKE_CURRENT_LIST_DIR}/ClientTestSupport.h
+        LIBS drivedesk_client)
+endforeach()
+
+if(EXISTS ${CMAKE_CURRENT_LIST_DIR}/scanner.cmake)
+    include(${CMAKE_CURRENT_LIST_DIR}/scanner.cmake)
+endif()
