@@ -43,11 +43,12 @@ void BusClock::arm()
 
 void BusClock::deliver()
 {
-    const QByteArray bytes = m_bus->takeDue(nowNs());
+    QList<qsizetype> lineErrors;
+    const QByteArray bytes = m_bus->takeDue(nowNs(), &lineErrors);
     // Arm first: a receiver may send the next request from within transmit().
     arm();
-    if (!bytes.isEmpty())
-        emit transmit(bytes);
+    if (!bytes.isEmpty() || !lineErrors.isEmpty())
+        emit transmit(bytes, lineErrors);
 }
 
 } // namespace DriveDesk

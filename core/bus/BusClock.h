@@ -24,7 +24,8 @@ public:
     qint64 nowNs() const { return m_clock.nsecsElapsed(); }
 
 signals:
-    void transmit(const QByteArray &bytes);
+    // lineErrors: indices into bytes before which the operator's UART flagged a character.
+    void transmit(const QByteArray &bytes, const QList<qsizetype> &lineErrors);
 
 private:
     void arm();

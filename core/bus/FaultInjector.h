@@ -3,6 +3,7 @@
 #include "link/ConnectionSettings.h"
 
 #include <QByteArray>
+#include <QList>
 #include <QRandomGenerator>
 
 namespace DriveDesk {
@@ -18,10 +19,16 @@ public:
 
     // True with the given chance; a rate of 0 draws nothing.
     bool draw(double rate);
-    // One character on the line: false if it is lost, else maybe with one data bit flipped.
-    bool pass(char *byte);
-    // A stretch of characters on the line, with what got through.
-    QByteArray pass(const QByteArray &bytes);
+    enum class Fate : quint8 {
+        Passed,
+        Lost,        // gone without a trace
+        ParityError, // one bit flipped: the receiving UART flags it and discards the character
+    };
+    // One character on the line.
+    Fate pass(char *byte);
+    // A stretch of characters on the line: what got through, and where (*lineErrors, may be
+    // null) the receiver was told of a flagged character: before that index of the result.
+    QByteArray pass(const QByteArray &bytes, QList<qsizetype> *lineErrors);
 
 private:
     double m_corruptRate = 0;

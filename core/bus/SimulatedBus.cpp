@@ -43,6 +43,7 @@ SimulatedBus::SimulatedBus(Protocol protocol, const SimulationOptions &options)
         driveOptions.address = addresses[i];
         driveOptions.parameterCount = options.parameterCount;
         driveOptions.seed = options.seed + quint32(i);
+        driveOptions.displayTextAsCharacters = protocol != Protocol::Hsp5;
         Station station;
         station.address = addresses[i];
         station.drive = std::make_unique<SimulatedDrive>(driveOptions);
@@ -100,7 +101,13 @@ void SimulatedBus::receive(QByteArrayView bytes, qint64 nowNs)
         const qint64 arrivalNs = timeOf(line, first + i + 1);
         m_lastArrivalNs = arrivalNs;
         char byte = bytes[i];
-        if (!m_faults.pass(&byte))
+        const FaultInjector::Fate fate = m_faults.pass(&byte);
+        if (fate == FaultInjector::Fate::ParityError) {
+            // The drive's UART flagged it: the telegram being received is dropped unanswered.
+            m_decoder->reset();
+            continue;
+        }
+        if (fate == FaultInjector::Fate::Lost)
             continue;
         if (m_protocol != Protocol::Hsp5 && byte == kEot)
             m_selectionSent = true;
@@ -124,10 +131,14 @@ std::optional<qint64> SimulatedBus::nextDueNs() const
     return m_scheduled.front().dueNs;
 }
 
-QByteArray SimulatedBus::takeDue(qint64 nowNs)
+QByteArray SimulatedBus::takeDue(qint64 nowNs, QList<qsizetype> *lineErrors)
 {
     QByteArray bytes;
     while (!m_scheduled.empty() && m_scheduled.front().dueNs <= nowNs) {
+        if (lineErrors) {
+            for (qsizetype at : m_scheduled.front().lineErrors)
+                lineErrors->append(bytes.size() + at);
+        }
         bytes += m_scheduled.front().bytes;
         m_scheduled.pop_front();
     }
@@ -394,7 +405,7 @@ QByteArray SimulatedBus::transmit(const Telegram &telegram, qint64 readyNs)
     BusTransmission transmission;
     transmission.startNs = timeOf(line, first);
     transmission.dueNs = timeOf(line, first + bytes.size());
-    transmission.bytes = m_faults.pass(bytes);
+    transmission.bytes = m_faults.pass(bytes, &transmission.lineErrors);
     m_scheduled.push_back(std::move(transmission));
     return bytes;
 }

@@ -40,6 +40,7 @@ struct BusCounters {
 // the first byte goes on the line at startNs, the last one has arrived at dueNs.
 struct BusTransmission {
     QByteArray bytes; // as the operator receives them, faults included
+    QList<qsizetype> lineErrors; // the operator's UART flagged a character before these indices
     qint64 startNs = 0;
     qint64 dueNs = 0;
 };
@@ -67,8 +68,9 @@ public:
     // Transmissions not yet taken, in the order they go on the line.
     const std::deque<BusTransmission> &scheduled() const { return m_scheduled; }
     std::optional<qint64> nextDueNs() const;
-    // The bytes of every transmission due at nowNs, in order.
-    QByteArray takeDue(qint64 nowNs);
+    // The bytes of every transmission due at nowNs, in order, and where the operator's UART
+    // flagged a character (indices into the result, see BusTransmission).
+    QByteArray takeDue(qint64 nowNs, QList<qsizetype> *lineErrors = nullptr);
 
     // A new operator on the line: drops partial input, pending output and the selection.
     // The drives keep their state.

@@ -13,10 +13,21 @@ SimulatedLink::SimulatedLink(const ConnectionSettings &settings, QObject *parent
     , m_bus(std::make_unique<SimulatedBus>(settings.protocol, settings.simulation))
     , m_clock(new BusClock(m_bus.get(), this))
 {
-    connect(m_clock, &BusClock::transmit, this, [this](const QByteArray &bytes) {
-        if (m_open)
-            emit received(bytes);
-    });
+    connect(m_clock, &BusClock::transmit, this,
+            [this](const QByteArray &bytes, const QList<qsizetype> &lineErrors) {
+                qsizetype from = 0;
+                for (qsizetype at : lineErrors) {
+                    if (!m_open)
+                        return;
+                    if (at > from)
+                        emit received(bytes.mid(from, at - from));
+                    from = at;
+                    if (m_open)
+                        emit lineError(tr("parity error on a received character"));
+                }
+                if (m_open && from < bytes.size())
+                    emit received(bytes.mid(from));
+            });
 }
 
 SimulatedLink::~SimulatedLink()

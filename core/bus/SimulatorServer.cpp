@@ -155,6 +155,7 @@ void SimulatorServer::fromOperator(Route route, const QByteArray &bytes)
     m_clock->receive(bytes);
 }
 
+// A socket or pty cannot carry the UART's error flags: a flagged character is just missing.
 void SimulatorServer::toOperator(const QByteArray &bytes)
 {
     if (m_route == Route::Tcp && m_client)

@@ -27,6 +27,10 @@ public:
 signals:
     void opened();
     void received(const QByteArray &bytes);
+    // The line flagged a character (parity, framing or overrun error) between the bytes
+    // received before and after this signal. The character itself is not passed on: the
+    // telegram it belonged to is broken.
+    void lineError(const QString &reason);
     // Opening failed, or the open link was lost (unplugged adapter, closed socket). Reported
     // at once; the link is closed afterwards.
     void failed(const QString &reason);

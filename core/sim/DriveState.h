@@ -39,6 +39,9 @@ public:
     int activeSet() const; // Fr.02
     int setPointer() const; // Fr.09
     int passwordLevel() const { return m_passwordLevel; }
+    // Service 8 answers characters rather than 7-segment patterns (DIN66019II).
+    bool displayTextAsCharacters() const { return m_displayTextAsCharacters; }
+    void setDisplayTextAsCharacters(bool characters) { m_displayTextAsCharacters = characters; }
     void setPasswordLevel(int level) { m_passwordLevel = level; }
 
     // The stored value (set 0 for a parameter that is not set-programmable).
@@ -71,6 +74,7 @@ private:
     quint32 m_seed = 1;
     std::vector<std::array<qint32, kSets>> m_values;
     int m_passwordLevel = 3;
+    bool m_displayTextAsCharacters = false;
     MotorModel m_motor;
     bool m_started = false;
     qint64 m_firstMs = 0;

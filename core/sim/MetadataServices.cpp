@@ -113,6 +113,10 @@ Telegram answerPlaintext(const DriveState &state, const Telegram &request)
         result.value = text.value;
         result.type = text.type;
         result.segments = text.display;
+        if (state.displayTextAsCharacters()) {
+            const QByteArray characters = sevenSegmentText(text.display).toLatin1().rightJustified(5, ' ');
+            std::copy_n(characters.constData(), result.segments.size(), result.segments.begin());
+        }
         return answer(request, Ack::Ok, result);
     }
     case Service::CombivisPlaintext: {

@@ -25,6 +25,7 @@ SimulatedDrive::SimulatedDrive(SimulatedDriveOptions options)
     : m_state(std::make_unique<Sim::DriveState>(databaseFor(options),
                                                 qBound(0, options.address, 239), options.seed))
 {
+    m_state->setDisplayTextAsCharacters(options.displayTextAsCharacters);
     m_identification = QStringLiteral("DriveDesk simulated COMBIVERT F5, %1 parameters")
                            .arg(m_state->db().parameters().size())
                            .toLatin1();

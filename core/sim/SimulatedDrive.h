@@ -19,6 +19,10 @@ struct SimulatedDriveOptions
     int parameterCount = 0; // 0: the standard simulated F5; N > standard: pad with generated
                             // groups/parameters to N
     quint32 seed = 1; // generated parameters, measurement noise, serial number
+    // Service 8: an HSP5 drive sends its display text as 7-segment patterns (seed 000 2.17),
+    // a DIN66019II drive as five characters (seed 003 5.15), since a 7-bit line has no room
+    // for the patterns.
+    bool displayTextAsCharacters = false;
 };
 
 // A drive that answers telegrams like a KEB COMBIVERT F5, built from data about real F5s

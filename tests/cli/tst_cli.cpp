@@ -1,0 +1,268 @@
+#include "parameters/DriveDescription.h"
+#include "parameters/ParameterDocument.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTest>
+
+using namespace DriveDesk;
+
+namespace {
+
+struct Run {
+    int exitCode = -1;
+    QString out;
+    QString err;
+};
+
+const QString kCli = QStringLiteral(DRIVEDESK_BINARY_DIR "/app/cli/drivedesk-cli");
+const QString kSim = QStringLiteral(DRIVEDESK_BINARY_DIR "/app/sim/drivedesk-sim");
+
+Run cli(const QStringList &arguments)
+{
+    QProcess process;
+    process.start(kCli, arguments);
+    Run run;
+    if (!process.waitForFinished(120000)) {
+        process.kill();
+        process.waitForFinished();
+        run.err = QStringLiteral("drivedesk-cli did not finish");
+        return run;
+    }
+    run.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
+    run.out = QString::fromUtf8(process.readAllStandardOutput());
+    run.err = QString::fromUtf8(process.readAllStandardError());
+    return run;
+}
+
+Run sim(const QStringList &command)
+{
+    return cli(QStringList{QStringLiteral("--connect"), QStringLiteral("sim"), QStringLiteral("--quiet")}
+               + command);
+}
+
+QString explain(const Run &run)
+{
+    return QStringLiteral("exit %1\nstdout: %2\nstderr: %3").arg(run.exitCode).arg(run.out.left(2000), run.err);
+}
+
+} // namespace
+
+// drivedesk-cli as a user runs it, against the simulated drive.
+class TestCli : public QObject
+{
+    Q_OBJECT
+private slots:
+    void scanWritesTheParameterFile()
+    {
+        const Run run = sim({QStringLiteral("scan"), QStringLiteral("--format"), QStringLiteral("json"),
+                             QStringLiteral("--values")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        const QJsonObject root = QJsonDocument::fromJson(run.out.toUtf8()).object();
+        QCOMPARE(root.value(QStringLiteral("format")).toString(), QStringLiteral("drivedesk-parameters"));
+        QCOMPARE(root.value(QStringLiteral("version")).toInt(), 1);
+
+        QString error;
+        const auto drive = ParameterDocument::fromJson(run.out.toUtf8(), &error);
+        QVERIFY2(drive, qPrintable(error));
+        QVERIFY(drive->groups.size() >= 12);
+        QVERIFY(drive->parameterCount() >= 200);
+        QVERIFY(drive->incompleteReason.isEmpty());
+
+        const ParameterDescription *state = drive->find(0x0200);
+        QVERIFY(state);
+        QVERIFY(!state->plaintexts.isEmpty());
+        const ParameterDescription *acceleration = drive->find(0x031C); // op.28
+        QVERIFY(acceleration);
+        QVERIFY(acceleration->isSetProgrammable());
+        for (const auto &value : acceleration->values)
+            QVERIFY(value.has_value());
+
+        const QJsonArray groups = root.value(QStringLiteral("groups")).toArray();
+        QCOMPARE(groups.first().toObject().value(QStringLiteral("id")).toString(), drive->groups.first().id);
+    }
+
+    void scanTableShowsGroupsAndUnits()
+    {
+        const Run run = sim({QStringLiteral("scan")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        QVERIFY2(run.out.contains(QRegularExpression(QStringLiteral("^ru  \\S"), QRegularExpression::MultilineOption)),
+                 qPrintable(run.out.left(400)));
+        QVERIFY(run.out.contains(QStringLiteral("op.28")));
+        QVERIFY(run.out.contains(QRegularExpression(QStringLiteral("\\d+ groups, \\d+ parameters"))));
+    }
+
+    void infoNamesGroupsAndCounts()
+    {
+        const Run run = sim({QStringLiteral("info")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        QVERIFY(run.out.contains(QStringLiteral("simulated"), Qt::CaseInsensitive));
+        QVERIFY(run.out.contains(QRegularExpression(QStringLiteral("^ru\\s+0200h\\s+\\d+"),
+                                                    QRegularExpression::MultilineOption)));
+    }
+
+    void everySpellingOfAnIdReadsTheSameParameter()
+    {
+        QStringList lines;
+        for (const QString &id : {QStringLiteral("op.28"), QStringLiteral("op.028"), QStringLiteral("OP.28"),
+                                  QStringLiteral("0x031C"), QStringLiteral("031Ch")}) {
+            const Run run = sim({QStringLiteral("read"), id});
+            QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+            lines << run.out.trimmed();
+        }
+        lines.removeDuplicates();
+        QCOMPARE(lines.size(), 1);
+        QVERIFY2(lines.first().contains(QStringLiteral("5.00 s")), qPrintable(lines.first()));
+    }
+
+    void readOfAPlaintextParameterShowsItsText()
+    {
+        const Run run = sim({QStringLiteral("read"), QStringLiteral("uF.10")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        QVERIFY2(run.out.contains(QStringLiteral("= on")), qPrintable(run.out));
+    }
+
+    void valueOutsideTheLimitsIsRefusedBeforeSending()
+    {
+        const Run run = sim({QStringLiteral("write"), QStringLiteral("op.28"), QStringLiteral("999")});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(QStringLiteral("outside the limits")), qPrintable(run.err));
+        QVERIFY2(run.err.contains(QStringLiteral("300.00 s")), qPrintable(run.err));
+    }
+
+    void writeReadsTheValueBack()
+    {
+        const Run run = sim({QStringLiteral("write"), QStringLiteral("op.28"), QStringLiteral("12.5"),
+                             QStringLiteral("--sets"), QStringLiteral("0,2-3")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        QVERIFY2(run.out.contains(QStringLiteral("12.50 s")), qPrintable(run.out));
+        QVERIFY2(run.out.contains(QStringLiteral("sets 0,2,3")), qPrintable(run.out));
+    }
+
+    void negativeValuesAndPlaintextsAreValues()
+    {
+        Run run = sim({QStringLiteral("write"), QStringLiteral("op.20"), QStringLiteral("-250")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        QVERIFY2(run.out.contains(QStringLiteral("-250 1/min")), qPrintable(run.out));
+        run = sim({QStringLiteral("write"), QStringLiteral("uF.10"), QStringLiteral("off")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        QVERIFY2(run.out.contains(QStringLiteral("= off")), qPrintable(run.out));
+        run = sim({QStringLiteral("write"), QStringLiteral("uF.10"), QStringLiteral("sometimes")});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(QStringLiteral("off")), qPrintable(run.err));
+    }
+
+    void theDrivesRefusalIsPrintedInWords()
+    {
+        Run run = sim({QStringLiteral("write"), QStringLiteral("ru.03"), QStringLiteral("--raw"), QStringLiteral("0")});
+        QCOMPARE(run.exitCode, 1);
+        QVERIFY2(run.err.contains(QStringLiteral("write protected")), qPrintable(run.err));
+        run = sim({QStringLiteral("--language"), QStringLiteral("de"), QStringLiteral("write"),
+                   QStringLiteral("ru.03"), QStringLiteral("--raw"), QStringLiteral("0")});
+        QCOMPARE(run.exitCode, 1);
+        QVERIFY2(run.err.contains(QStringLiteral("schreibgeschützt")), qPrintable(run.err));
+    }
+
+    void germanTextsComeFromTheDrive()
+    {
+        const Run run = sim({QStringLiteral("--language"), QStringLiteral("de"), QStringLiteral("read"),
+                             QStringLiteral("op.28")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        QVERIFY2(run.out.contains(QStringLiteral("Beschleunigungszeit")), qPrintable(run.out));
+    }
+
+    void din66019iiWorksLikeHsp5()
+    {
+        const Run run = sim({QStringLiteral("--protocol"), QStringLiteral("din66019ii"), QStringLiteral("read"),
+                             QStringLiteral("op.28"), QStringLiteral("--set"), QStringLiteral("1")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        QVERIFY2(run.out.contains(QStringLiteral("5.00 s")), qPrintable(run.out));
+    }
+
+    void legacyDin66019ReadsRawValues()
+    {
+        const Run run = sim({QStringLiteral("--protocol"), QStringLiteral("din66019"), QStringLiteral("read"),
+                             QStringLiteral("0x031C")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        QVERIFY2(run.out.contains(QStringLiteral("500")), qPrintable(run.out));
+        const Run scan = sim({QStringLiteral("--protocol"), QStringLiteral("din66019"), QStringLiteral("scan")});
+        QCOMPARE(scan.exitCode, 2);
+        QVERIFY2(scan.err.contains(QStringLiteral("din66019ii")), qPrintable(scan.err));
+    }
+
+    void badArgumentsAreNamed_data()
+    {
+        QTest::addColumn<QStringList>("arguments");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("no connect") << QStringList{QStringLiteral("info")} << QStringLiteral("--connect");
+        QTest::newRow("bad target") << QStringList{QStringLiteral("--connect"), QStringLiteral("usb:1"), QStringLiteral("info")}
+                                    << QStringLiteral("usb:1");
+        QTest::newRow("bad address") << QStringList{QStringLiteral("--connect"), QStringLiteral("sim"),
+                                                    QStringLiteral("--address"), QStringLiteral("240"), QStringLiteral("info")}
+                                     << QStringLiteral("--address 240");
+        QTest::newRow("bad command") << QStringList{QStringLiteral("--connect"), QStringLiteral("sim"), QStringLiteral("erase")}
+                                     << QStringLiteral("erase");
+        QTest::newRow("bad sets") << QStringList{QStringLiteral("--connect"), QStringLiteral("sim"), QStringLiteral("write"),
+                                                 QStringLiteral("op.28"), QStringLiteral("1"), QStringLiteral("--sets"),
+                                                 QStringLiteral("2-9")}
+                                  << QStringLiteral("2-9");
+        QTest::newRow("unknown parameter") << QStringList{QStringLiteral("--connect"), QStringLiteral("sim"),
+                                                          QStringLiteral("read"), QStringLiteral("xy.3")}
+                                           << QStringLiteral("xy");
+        QTest::newRow("not a number") << QStringList{QStringLiteral("--connect"), QStringLiteral("sim"), QStringLiteral("write"),
+                                                     QStringLiteral("op.28"), QStringLiteral("fast")}
+                                      << QStringLiteral("fast");
+    }
+
+    void badArgumentsAreNamed()
+    {
+        QFETCH(QStringList, arguments);
+        QFETCH(QString, message);
+        const Run run = cli(arguments);
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(message), qPrintable(run.err));
+    }
+
+    void deadLinkIsReported()
+    {
+        const Run run = cli({QStringLiteral("--connect"), QStringLiteral("tcp:127.0.0.1:1"), QStringLiteral("info")});
+        QCOMPARE(run.exitCode, 3);
+        QVERIFY2(run.err.contains(QStringLiteral("cannot connect")), qPrintable(run.err));
+    }
+
+    void writesPersistOnASimulatorServer()
+    {
+        QProcess server;
+        server.start(kSim, {QStringLiteral("--listen"), QStringLiteral("tcp:127.0.0.1:0"),
+                            QStringLiteral("--protocol"), QStringLiteral("din66019ii"),
+                            QStringLiteral("--address"), QStringLiteral("7")});
+        QVERIFY(server.waitForStarted());
+        QRegularExpressionMatch where;
+        QTRY_VERIFY_WITH_TIMEOUT((where = QRegularExpression(QStringLiteral("tcp:127\\.0\\.0\\.1:(\\d+)"))
+                                              .match(QString::fromUtf8(server.peek(4096))))
+                                     .hasMatch(),
+                                 10000);
+        const QString target = QStringLiteral("tcp:127.0.0.1:") + where.captured(1);
+        const QStringList common{QStringLiteral("--connect"), target, QStringLiteral("--protocol"),
+                                 QStringLiteral("din66019ii"), QStringLiteral("--address"), QStringLiteral("7"),
+                                 QStringLiteral("--quiet")};
+        Run run = cli(common + QStringList{QStringLiteral("write"), QStringLiteral("op.30"), QStringLiteral("7.25"),
+                                           QStringLiteral("--sets"), QStringLiteral("1")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        run = cli(common + QStringList{QStringLiteral("read"), QStringLiteral("op.30"), QStringLiteral("--set"),
+                                       QStringLiteral("1")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        QVERIFY2(run.out.contains(QStringLiteral("7.25 s")), qPrintable(run.out));
+        run = cli(common + QStringList{QStringLiteral("read"), QStringLiteral("op.30"), QStringLiteral("--set"),
+                                       QStringLiteral("0")});
+        QVERIFY2(run.out.contains(QStringLiteral("5.00 s")), qPrintable(run.out));
+        server.terminate();
+        QVERIFY(server.waitForFinished(10000));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "tst_cli.moc"
