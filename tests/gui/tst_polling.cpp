@@ -1,0 +1,145 @@
+#include "tst_editsupport.h"
+
+#include "edit/PollingController.h"
+
+using namespace DriveDesk;
+using namespace DriveDesk::EditTest;
+
+namespace {
+
+int sentTelegrams(const QSignalSpy &traffic)
+{
+    int sent = 0;
+    for (const QList<QVariant> &arguments : traffic) {
+        if (arguments.at(0).value<TrafficRecord>().kind == TrafficRecord::Kind::Sent)
+            ++sent;
+    }
+    return sent;
+}
+
+} // namespace
+
+// Live values: the run display re-read while polling is on, one round at a time, and nothing
+// more once it is off or the connection is gone.
+class TestPolling : public QObject
+{
+    Q_OBJECT
+private slots:
+    void followsTheMotorWhileEnabled()
+    {
+        SimulatedDrive drive;
+        QVERIFY(drive.start());
+        PollingController polling(&drive.client, &drive.model);
+        QCOMPARE(polling.group(), QStringLiteral("ru"));
+        QVERIFY(!polling.isEnabled());
+        QSignalSpy enabled(&polling, &PollingController::enabledChanged);
+        QSignalSpy changed(&drive.model, &QAbstractItemModel::dataChanged);
+
+        const std::optional<qint32> first = drive.model.value(kActualFrequency, 0);
+        QVERIFY(first);
+        polling.setIntervalMs(100);
+        polling.setEnabled(true);
+        QVERIFY(polling.isEnabled());
+        QCOMPARE(enabled.size(), 1);
+        // The demo cycle starts the motor a second after the drive's clock began.
+        QTRY_VERIFY_WITH_TIMEOUT(drive.model.value(kActualFrequency, 0) != first, kWaitMs);
+        QTRY_VERIFY_WITH_TIMEOUT(polling.roundsCompleted() >= 3, kWaitMs);
+        const QModelIndex frequency = drive.model.valueIndex(kActualFrequency, 0);
+        bool announced = false;
+        for (const QList<QVariant> &arguments : changed) {
+            const QModelIndex from = arguments.at(0).toModelIndex();
+            const QModelIndex to = arguments.at(1).toModelIndex();
+            announced = announced
+                || (from.parent() == frequency.parent() && from.row() <= frequency.row()
+                    && to.row() >= frequency.row() && from.column() <= frequency.column()
+                    && to.column() >= frequency.column());
+        }
+        QVERIFY(announced);
+        // Only the group's values: operator parameters are never read.
+        QCOMPARE(drive.state(kMaxSpeedForward), EditState::None);
+    }
+
+    void stopsWhenDisabled()
+    {
+        SimulatedDrive drive;
+        QVERIFY(drive.start());
+        PollingController polling(&drive.client, &drive.model);
+        polling.setIntervalMs(PollingController::kMinimumIntervalMs);
+        polling.setEnabled(true);
+        QTRY_VERIFY_WITH_TIMEOUT(polling.roundsCompleted() >= 2, kWaitMs);
+
+        QSignalSpy traffic(&drive.client, &DriveClient::traffic);
+        polling.setEnabled(false);
+        QVERIFY(!polling.isEnabled());
+        // Nothing new is sent: what was on the wire comes back, and the line stays quiet.
+        QTest::qWait(500);
+        const int settled = sentTelegrams(traffic);
+        QVERIFY2(settled <= 4, qPrintable(QString::number(settled)));
+        const int rounds = polling.roundsCompleted();
+        QTest::qWait(500);
+        QCOMPARE(sentTelegrams(traffic), settled);
+        QCOMPARE(polling.roundsCompleted(), rounds);
+    }
+
+    void skipsATickWhileARoundIsOnItsWay()
+    {
+        SimulatedDrive drive(20000); // 20 ms per answer: a round outlasts the interval
+        QVERIFY(drive.start({ 0x02 })); // the run display alone, or the scan takes long
+        PollingController polling(&drive.client, &drive.model);
+        QSignalSpy rounds(&polling, &PollingController::roundFinished);
+        polling.setIntervalMs(PollingController::kMinimumIntervalMs);
+        polling.setEnabled(true);
+        QTRY_VERIFY_WITH_TIMEOUT(polling.roundsSkipped() >= 2 && rounds.size() >= 2, kWaitMs);
+        polling.setEnabled(false);
+    }
+
+    void stopsWhenTheConnectionGoes()
+    {
+        SimulatedDrive drive;
+        QVERIFY(drive.start());
+        PollingController polling(&drive.client, &drive.model);
+        QSignalSpy enabled(&polling, &PollingController::enabledChanged);
+        QSignalSpy messages(&polling, &PollingController::message);
+        polling.setIntervalMs(100);
+        polling.setEnabled(true);
+        QTRY_VERIFY_WITH_TIMEOUT(polling.roundsCompleted() >= 1, kWaitMs);
+
+        drive.client.disconnectFromDrive();
+        QTRY_VERIFY_WITH_TIMEOUT(!polling.isEnabled(), kWaitMs);
+        QCOMPARE(enabled.size(), 2);
+        QCOMPARE(enabled.constLast().at(0).toBool(), false);
+        QVERIFY(
+            texts(messages).join(QLatin1Char('\n')).contains(QStringLiteral("Polling stopped")));
+    }
+
+    void aGroupTheDriveLacksIsSaidOnce()
+    {
+        SimulatedDrive drive;
+        QVERIFY(drive.start());
+        PollingController polling(&drive.client, &drive.model);
+        QSignalSpy messages(&polling, &PollingController::message);
+        polling.setGroup(QStringLiteral("zz"));
+        polling.setIntervalMs(PollingController::kMinimumIntervalMs);
+        polling.setEnabled(true);
+        QTRY_COMPARE(messages.size(), 1);
+        QVERIFY(messages.constFirst().at(0).toString().contains(QStringLiteral("zz")));
+        QTest::qWait(200);
+        QCOMPARE(messages.size(), 1);
+        QCOMPARE(polling.roundsCompleted(), 0);
+    }
+
+    void intervalStaysWithinBounds()
+    {
+        SimulatedDrive drive;
+        PollingController polling(&drive.client, &drive.model);
+        polling.setIntervalMs(0);
+        QCOMPARE(polling.intervalMs(), PollingController::kMinimumIntervalMs);
+        polling.setIntervalMs(1'000'000);
+        QCOMPARE(polling.intervalMs(), PollingController::kMaximumIntervalMs);
+        polling.setIntervalMs(500);
+        QCOMPARE(polling.intervalMs(), 500);
+    }
+};
+
+QTEST_MAIN(TestPolling)
+#include "tst_polling.moc"

@@ -1,0 +1,45 @@
+#pragma once
+
+#include "parameters/PasswordLevel.h"
+
+#include <QObject>
+
+namespace DriveDesk {
+
+class DriveClient;
+class ParameterModel;
+
+// The drive's password level: read from the password parameter ud.01, which reads -1 - level,
+// and changed by writing a password to it. The model learns the level, so that parameters above
+// it are locked in the view. Lives in the GUI thread; the client and the model outlive it.
+class AccessController : public QObject
+{
+    Q_OBJECT
+public:
+    static constexpr quint16 kPasswordAddress = 0x0801; // ud.01
+
+    AccessController(DriveClient *client, ParameterModel *model, QObject *parent = nullptr);
+
+    void readLevel(); // reads ud.01 (service 1, set 0), sets the model's level
+    void enterPassword(int password); // writes ud.01, re-reads the level
+    // The level last read; the model's (Supervisor: nothing locked) until then.
+    PasswordLevel level() const { return m_level; }
+    bool isLevelKnown() const { return m_known; }
+
+signals:
+    void levelChanged(DriveDesk::PasswordLevel level);
+    void message(const QString &text);
+
+private:
+    // A value of ud.01 from the drive, read here or by a refresh.
+    void takeReadValue(qint32 value);
+    void modelDataChanged(const QModelIndex &topLeft, const QModelIndex &bottomRight);
+    QString levelName(PasswordLevel level) const;
+
+    DriveClient *m_client = nullptr;
+    ParameterModel *m_model = nullptr;
+    PasswordLevel m_level = PasswordLevel::Supervisor;
+    bool m_known = false;
+};
+
+} // namespace DriveDesk

@@ -1,0 +1,115 @@
+#pragma once
+
+#include "ValueReadBatch.h"
+#include "ValueWriter.h"
+#include "WriteValueCommand.h"
+
+#include <QHash>
+#include <QObject>
+#include <QPointer>
+
+#include <memory>
+
+class QUndoStack;
+
+namespace DriveDesk {
+
+class DriveClient;
+class ParameterModel;
+
+// Carries the user's edits to the drive: writes and resets to default as undoable commands,
+// each read back so that the model shows what the drive holds (written, or failed with the
+// drive's reason); copying one set to another; re-reading every value. A value that only came
+// from the drive is never written back to it. Lives in the GUI thread; the client, the model and
+// the undo stack outlive it.
+class EditController : public QObject
+{
+    Q_OBJECT
+public:
+    enum class Direction : quint8 { Redo, Undo };
+
+    EditController(DriveClient *client, ParameterModel *model, QUndoStack *undoStack,
+                   QObject *parent = nullptr);
+    ~EditController() override;
+
+    // Connected to ParameterModel::valueEdited by the controller itself. The cells show pending
+    // at once; the command goes on the undo stack once the drive has acknowledged the write,
+    // so a refused write never stands there as if it had happened.
+    void write(quint16 address, quint8 setMask, qint32 raw);
+    // Service 32 write, then read back; undoable (the earlier values are written back).
+    void resetToDefault(quint16 address, quint8 setMask);
+    // Every set-programmable parameter the user may edit whose value in `toSet` differs from
+    // `fromSet`'s; one step on the undo stack (what was written before a cancel or a refusal).
+    void copySet(int fromSet, int toSet);
+    // Re-reads every value the level in force lets be read (F5). A read the drive refuses is
+    // kept per cell (readFailure) and the refresh goes on.
+    void refresh();
+    // Stops a copy or refresh after the requests on their way; what was done stays done.
+    void cancel();
+
+    bool isBusy() const { return m_busy; }
+    // Why the last refresh could not read this value, or empty.
+    QString readFailure(quint16 address, int set) const;
+    int readFailureCount() const { return int(m_readFailures.size()); }
+
+signals:
+    void message(const QString &text); // for the status bar: results and refusals in words
+    void busyChanged(bool busy);
+    void progress(int done, int total); // of a copy or refresh
+
+private:
+    friend class WriteValueCommand;
+    // copySet() while it runs.
+    struct CopyJob
+    {
+        struct Item
+        {
+            quint16 address = 0;
+            qint32 raw = 0;
+        };
+
+        int from = 0;
+        int to = 0;
+        QList<Item> items;
+        qsizetype next = 0;
+        std::unique_ptr<QUndoCommand> macro; // the values written, one step on the stack
+        int written = 0;
+        QStringList refusals;
+        QString stopReason;
+        bool cancelled = false;
+        int locked = 0; // differing, but read-only or above the level in force
+        int unknown = 0; // the source set's value was never read
+    };
+
+    // Undo or redo of a command on the stack: to the drive and back.
+    void perform(WriteValueCommand *command, Direction direction);
+    void performed(WriteValueCommand *command, const std::weak_ptr<const int> &alive,
+                   Direction direction, const WriteOutcome &outcome);
+    void changeDone(WriteValueCommand::Kind kind, quint8 setMask, qint32 raw,
+                    const WriteOutcome &outcome);
+
+    void copyNext();
+    void copyFinished();
+    void refreshFinished();
+    bool refuseWhileJobRuns();
+
+    // "op.11", the way the table names it.
+    QString idOf(quint16 address) const;
+    QString valueText(quint16 address, qint32 raw) const;
+    // " in set 2", " in sets 0, 3" or nothing for a parameter without sets.
+    QString inSets(quint16 address, quint8 setMask) const;
+    // The cells that read back something other than what was written, said in words.
+    QString readBackDifferences(quint16 address, quint8 setMask) const;
+    void updateBusy();
+
+    DriveClient *m_client = nullptr;
+    ParameterModel *m_model = nullptr;
+    QUndoStack *m_undoStack = nullptr;
+    ValueWriter *m_writer = nullptr; // child
+    QPointer<ValueReadBatch> m_refresh; // child while a refresh runs
+    std::unique_ptr<CopyJob> m_copy;
+    QHash<quint32, QString> m_readFailures; // address << 8 | set
+    bool m_busy = false;
+};
+
+} // namespace DriveDesk

@@ -1,0 +1,67 @@
+#include "PasswordDialog.h"
+
+#include <QDialogButtonBox>
+#include <QFormLayout>
+#include <QIntValidator>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace DriveDesk {
+
+PasswordDialog::PasswordDialog(QWidget *parent)
+    : QDialog(parent)
+    , m_level(new QLabel(this))
+    , m_password(new QLineEdit(this))
+    , m_buttons(new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this))
+{
+    setWindowTitle(tr("Enter Password"));
+    m_level->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_password->setEchoMode(QLineEdit::Password);
+    m_password->setValidator(new QIntValidator(0, kHighestPassword, m_password));
+    m_password->setPlaceholderText(tr("0 to %1").arg(kHighestPassword));
+
+    auto *form = new QFormLayout;
+    form->addRow(tr("Level in force:"), m_level);
+    form->addRow(tr("&Password:"), m_password);
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    layout->addWidget(m_buttons);
+
+    connect(m_buttons, &QDialogButtonBox::accepted, this, &PasswordDialog::accept);
+    connect(m_buttons, &QDialogButtonBox::rejected, this, &PasswordDialog::reject);
+    connect(m_password, &QLineEdit::textChanged, this, &PasswordDialog::updateOk);
+    setLevel(std::nullopt);
+    updateOk();
+    m_password->setFocus();
+}
+
+void PasswordDialog::setLevel(std::optional<PasswordLevel> level, Language language)
+{
+    m_level->setText(level ? tr("%1 (%2)").arg(passwordLevelName(*level, language)).arg(int(*level))
+                           : tr("not read yet"));
+}
+
+std::optional<int> PasswordDialog::password() const
+{
+    if (!m_password->hasAcceptableInput())
+        return std::nullopt;
+    return m_password->text().toInt();
+}
+
+void PasswordDialog::accept()
+{
+    const std::optional<int> number = password();
+    if (!number)
+        return;
+    QDialog::accept();
+    emit passwordEntered(*number);
+}
+
+void PasswordDialog::updateOk()
+{
+    m_buttons->button(QDialogButtonBox::Ok)->setEnabled(m_password->hasAcceptableInput());
+}
+
+} // namespace DriveDesk

@@ -1,0 +1,366 @@
+#include "TelegramMonitor.h"
+
+#include "TrafficFile.h"
+#include "TrafficFilterModel.h"
+#include "TrafficModel.h"
+
+#include "client/DriveClient.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCheckBox>
+#include <QClipboard>
+#include <QDateTime>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFontDatabase>
+#include <QHeaderView>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QScrollBar>
+#include <QSettings>
+#include <QStyle>
+#include <QToolBar>
+#include <QTreeView>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <climits>
+
+namespace DriveDesk {
+
+namespace {
+
+const QString kHeaderKey = QStringLiteral("TelegramMonitor/header");
+const QString kSaveDirectoryKey = QStringLiteral("TelegramMonitor/saveDirectory");
+
+QSettings settings()
+{
+    return QSettings(QStringLiteral("DriveDesk"), QStringLiteral("DriveDesk"));
+}
+
+QIcon themeIcon(const QString &name, QStyle::StandardPixmap fallback)
+{
+    return QIcon::fromTheme(name, QApplication::style()->standardIcon(fallback));
+}
+
+} // namespace
+
+TelegramMonitor::TelegramMonitor(QWidget *parent)
+    : QDockWidget(tr("Telegram monitor"), parent)
+    , m_model(new TrafficModel(this))
+    , m_filter(new TrafficFilterModel(this))
+{
+    setObjectName(QStringLiteral("TelegramMonitor")); // QMainWindow::saveState() needs it
+    m_filter->setTrafficModel(m_model);
+
+    m_view = new QTreeView;
+    m_view->setObjectName(QStringLiteral("telegramList"));
+    m_view->setModel(m_filter);
+    m_view->setRootIsDecorated(false);
+    m_view->setItemsExpandable(false);
+    m_view->setUniformRowHeights(true); // thousands of rows: no per-row height measuring
+    m_view->setAllColumnsShowFocus(true);
+    m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_view->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    // keepTopRowsInView() counts in rows.
+    m_view->setVerticalScrollMode(QAbstractItemView::ScrollPerItem);
+    m_view->setTextElideMode(Qt::ElideRight);
+    m_view->installEventFilter(this);
+
+    // Widths for a typical telegram; the user's own widths are restored over them.
+    const QFontMetrics metrics(m_view->font());
+    const QFontMetrics fixed(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    QHeaderView *header = m_view->header();
+    header->setStretchLastSection(true);
+    header->resizeSection(TrafficModel::TimeColumn,
+                          metrics.horizontalAdvance(QStringLiteral("00:00:00.000")) + 24);
+    header->resizeSection(
+        TrafficModel::DirectionColumn,
+        metrics.horizontalAdvance(TrafficFormat::direction(TrafficRecord::Kind::Received)) + 48);
+    header->resizeSection(TrafficModel::BytesColumn,
+                          fixed.horizontalAdvance(QString(20 * 3, QLatin1Char('0'))));
+    header->resizeSection(TrafficModel::CharactersColumn,
+                          fixed.horizontalAdvance(QString(30, QLatin1Char('0'))));
+    header->restoreState(settings().value(kHeaderKey).toByteArray());
+
+    m_copyAction = new QAction(themeIcon(QStringLiteral("edit-copy"), QStyle::SP_FileIcon),
+                               tr("&Copy"), m_view);
+    m_copyAction->setShortcut(QKeySequence::Copy);
+    m_copyAction->setShortcutContext(Qt::WidgetShortcut);
+    connect(m_copyAction, &QAction::triggered, this, &TelegramMonitor::copySelection);
+    m_view->addAction(m_copyAction);
+    m_view->setContextMenuPolicy(Qt::ActionsContextMenu);
+
+    m_status = new QLabel;
+    m_status->setObjectName(QStringLiteral("monitorStatus"));
+    m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_notice = new QLabel;
+    m_notice->setObjectName(QStringLiteral("monitorNotice"));
+    m_notice->setWordWrap(true);
+    m_notice->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_notice->hide();
+
+    auto *content = new QWidget;
+    auto *layout = new QVBoxLayout(content);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(2);
+    layout->addWidget(createToolBar());
+    layout->addWidget(m_view, 1);
+    layout->addWidget(m_status);
+    layout->addWidget(m_notice);
+    setWidget(content);
+
+    connect(m_model, &TrafficModel::batchAboutToBeShown, this, [this] {
+        m_followNewest = isAtBottom();
+        m_inBatch = true;
+    });
+    connect(m_model, &TrafficModel::batchShown, this, [this] {
+        m_inBatch = false;
+        if (m_followNewest)
+            m_view->scrollToBottom();
+    });
+    // A batch that overflows the capacity drops the oldest rows: whoever reads further up
+    // keeps the same telegrams in view instead of seeing them slide away.
+    connect(m_filter, &QAbstractItemModel::rowsRemoved, this,
+            [this](const QModelIndex &, int first, int last) {
+                if (m_inBatch && !m_followNewest && first == 0)
+                    keepTopRowsInView(last - first + 1);
+            });
+    connect(m_model, &TrafficModel::countsChanged, this, &TelegramMonitor::updateStatus);
+    updateCharactersColumn();
+    updateStatus();
+}
+
+TelegramMonitor::~TelegramMonitor()
+{
+    settings().setValue(kHeaderKey, m_view->header()->saveState());
+}
+
+QWidget *TelegramMonitor::createToolBar()
+{
+    auto *toolBar = new QToolBar;
+    toolBar->setObjectName(QStringLiteral("monitorToolBar"));
+    toolBar->setIconSize(QSize(16, 16));
+    toolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+
+    m_pauseAction = toolBar->addAction(
+        themeIcon(QStringLiteral("media-playback-pause"), QStyle::SP_MediaPause), tr("Pause"));
+    m_pauseAction->setCheckable(true);
+    m_pauseAction->setToolTip(tr("Hold new telegrams back and show them on resume"));
+    connect(m_pauseAction, &QAction::toggled, this, &TelegramMonitor::setPaused);
+
+    QAction *clearAction = toolBar->addAction(
+        themeIcon(QStringLiteral("edit-clear"), QStyle::SP_DialogResetButton), tr("Clear"));
+    clearAction->setToolTip(tr("Forget every telegram listed and held"));
+    connect(clearAction, &QAction::triggered, this, &TelegramMonitor::clear);
+
+    QAction *saveAction = toolBar->addAction(
+        themeIcon(QStringLiteral("document-save-as"), QStyle::SP_DialogSaveButton), tr("Save…"));
+    saveAction->setToolTip(tr("Save the telegrams the filter shows to a CSV or text file"));
+    connect(saveAction, &QAction::triggered, this, &TelegramMonitor::chooseFileAndSave);
+
+    toolBar->addSeparator();
+    m_filterEdit = new QLineEdit;
+    m_filterEdit->setObjectName(QStringLiteral("monitorFilter"));
+    m_filterEdit->setPlaceholderText(tr("Filter: meaning, hex bytes or characters"));
+    m_filterEdit->setClearButtonEnabled(true);
+    connect(m_filterEdit, &QLineEdit::textChanged, this, &TelegramMonitor::setFilterText);
+    toolBar->addWidget(m_filterEdit);
+
+    m_errorsOnlyBox = new QCheckBox(tr("Errors only"));
+    m_errorsOnlyBox->setObjectName(QStringLiteral("monitorErrorsOnly"));
+    connect(m_errorsOnlyBox, &QCheckBox::toggled, this, &TelegramMonitor::setErrorsOnly);
+    toolBar->addWidget(m_errorsOnlyBox);
+    return toolBar;
+}
+
+void TelegramMonitor::attach(DriveClient *client)
+{
+    if (m_trafficConnection)
+        disconnect(m_trafficConnection);
+    m_trafficConnection = {};
+    if (!client)
+        return;
+    m_model->setProtocol(client->settings().protocol);
+    updateCharactersColumn();
+    m_trafficConnection = connect(client, &DriveClient::traffic, m_model, &TrafficModel::append);
+}
+
+void TelegramMonitor::setPaused(bool paused)
+{
+    m_model->setPaused(paused);
+    m_pauseAction->setChecked(paused);
+    m_pauseAction->setText(paused ? tr("Resume") : tr("Pause"));
+    m_pauseAction->setIcon(
+        paused ? themeIcon(QStringLiteral("media-playback-start"), QStyle::SP_MediaPlay)
+               : themeIcon(QStringLiteral("media-playback-pause"), QStyle::SP_MediaPause));
+}
+
+bool TelegramMonitor::isPaused() const
+{
+    return m_model->isPaused();
+}
+
+void TelegramMonitor::clear()
+{
+    m_model->clear();
+    m_followNewest = true;
+    showNotice({}, false);
+}
+
+void TelegramMonitor::setFilterText(const QString &text)
+{
+    m_filter->setFilterText(text);
+    if (m_filterEdit->text() != text)
+        m_filterEdit->setText(text);
+    if (m_followNewest)
+        m_view->scrollToBottom();
+    updateStatus();
+}
+
+void TelegramMonitor::setErrorsOnly(bool on)
+{
+    m_filter->setErrorsOnly(on);
+    m_errorsOnlyBox->setChecked(on);
+    if (m_followNewest)
+        m_view->scrollToBottom();
+    updateStatus();
+}
+
+bool TelegramMonitor::saveTo(const QString &path, QString *error)
+{
+    QList<TrafficEntry> entries;
+    entries.reserve(m_filter->rowCount());
+    for (int row = 0; row < m_filter->rowCount(); ++row)
+        entries << m_model->entry(m_filter->mapToSource(m_filter->index(row, 0)).row());
+    QString reason;
+    if (!TrafficFile::save(path, entries, &reason)) {
+        showNotice(reason, true);
+        if (error)
+            *error = reason;
+        return false;
+    }
+    showNotice(tr("Saved %Ln telegram(s) to %1.", nullptr, int(entries.size()))
+                   .arg(QDir::toNativeSeparators(path)),
+               false);
+    return true;
+}
+
+void TelegramMonitor::chooseFileAndSave()
+{
+    const QString directory = settings().value(kSaveDirectoryKey, QDir::homePath()).toString();
+    const QString suggested = QDir(directory).filePath(
+        QStringLiteral("telegrams-%1.csv")
+            .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-hhmmss"))));
+    const QString csvFilter = tr("CSV files (*.csv)");
+    QString selectedFilter = csvFilter;
+    QString path = QFileDialog::getSaveFileName(
+        this, tr("Save telegrams"), suggested,
+        csvFilter + QStringLiteral(";;") + tr("Text files (*.txt)"), &selectedFilter);
+    if (path.isEmpty())
+        return;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += selectedFilter == csvFilter ? QStringLiteral(".csv") : QStringLiteral(".txt");
+    settings().setValue(kSaveDirectoryKey, QFileInfo(path).absolutePath());
+    QString error;
+    if (!saveTo(path, &error))
+        QMessageBox::warning(this, tr("Save telegrams"), error);
+}
+
+void TelegramMonitor::copySelection() const
+{
+    QModelIndexList rows = m_view->selectionModel()->selectedRows();
+    if (rows.isEmpty())
+        return;
+    std::sort(rows.begin(), rows.end(),
+              [](const QModelIndex &a, const QModelIndex &b) { return a.row() < b.row(); });
+    const bool withCharacters = !m_view->isColumnHidden(TrafficModel::CharactersColumn);
+    QStringList lines;
+    lines.reserve(rows.size());
+    for (const QModelIndex &row : std::as_const(rows)) {
+        const TrafficEntry &entry = m_model->entry(m_filter->mapToSource(row).row());
+        QStringList fields = TrafficFormat::fields(entry, TrafficFormat::Clock::TimeOfDay);
+        if (!withCharacters)
+            fields.removeAt(TrafficFormat::Characters);
+        lines << TrafficFormat::tabSeparated(fields);
+    }
+    QGuiApplication::clipboard()->setText(lines.join(QLatin1Char('\n')) + QLatin1Char('\n'));
+}
+
+QString TelegramMonitor::statusText() const
+{
+    return m_status->text();
+}
+
+QString TelegramMonitor::noticeText() const
+{
+    return m_notice->text();
+}
+
+bool TelegramMonitor::eventFilter(QObject *watched, QEvent *event)
+{
+    // Ctrl+C in the list copies whole rows, even where the main window has its own Copy.
+    if (watched == m_view
+        && (event->type() == QEvent::ShortcutOverride || event->type() == QEvent::KeyPress)) {
+        auto *key = static_cast<QKeyEvent *>(event);
+        if (key->matches(QKeySequence::Copy)) {
+            event->accept();
+            if (event->type() == QEvent::KeyPress)
+                copySelection();
+            return true;
+        }
+    }
+    return QDockWidget::eventFilter(watched, event);
+}
+
+void TelegramMonitor::updateStatus()
+{
+    const int rows = m_model->rowCount();
+    QStringList parts;
+    if (m_filter->isFiltering())
+        parts << tr("%1 of %Ln telegram(s) shown", nullptr, rows)
+                     .arg(QLocale().toString(m_filter->rowCount()));
+    else
+        parts << tr("%Ln telegram(s)", nullptr, rows);
+    if (m_model->droppedCount() > 0)
+        parts << tr("%Ln older telegram(s) dropped: the monitor keeps the latest %1", nullptr,
+                    int(std::min<qint64>(m_model->droppedCount(), INT_MAX)))
+                     .arg(QLocale().toString(m_model->capacity()));
+    if (m_model->isPaused())
+        parts << tr("paused: %Ln telegram(s) held, shown on resume", nullptr,
+                    m_model->waitingCount());
+    m_status->setText(parts.join(QStringLiteral(" · ")));
+}
+
+void TelegramMonitor::updateCharactersColumn()
+{
+    m_view->setColumnHidden(TrafficModel::CharactersColumn,
+                            !TrafficFormat::isAscii(m_model->protocol()));
+}
+
+void TelegramMonitor::showNotice(const QString &text, bool problem)
+{
+    m_notice->setText(text);
+    m_notice->setVisible(!text.isEmpty());
+    QFont font = m_notice->font();
+    font.setBold(problem);
+    m_notice->setFont(font);
+}
+
+bool TelegramMonitor::isAtBottom() const
+{
+    const QScrollBar *bar = m_view->verticalScrollBar();
+    return bar->value() >= bar->maximum();
+}
+
+void TelegramMonitor::keepTopRowsInView(int removedRows)
+{
+    QScrollBar *bar = m_view->verticalScrollBar();
+    bar->setValue(std::max(bar->value() - removedRows, 0));
+}
+
+} // namespace DriveDesk

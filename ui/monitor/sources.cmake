@@ -1,0 +1,8 @@
+# The telegram monitor dock: the traffic model and its filter, formatting and saving.
+target_sources(drivedesk_ui PRIVATE
+    monitor/TelegramMonitor.cpp monitor/TelegramMonitor.h
+    monitor/TrafficFile.cpp monitor/TrafficFile.h
+    monitor/TrafficFilterModel.cpp monitor/TrafficFilterModel.h
+    monitor/TrafficFormat.cpp monitor/TrafficFormat.h
+    monitor/TrafficModel.cpp monitor/TrafficModel.h
+)
