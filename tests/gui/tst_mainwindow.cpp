@@ -1,0 +1,289 @@
+#include "tst_mainwindow_support.h"
+
+#include "main/NoticeBar.h"
+#include "main/RecentConnections.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QStatusBar>
+
+#include <memory>
+
+using namespace DriveDesk;
+using namespace DriveDesk::MainWindowTest;
+
+// The main window against the simulated F5: connecting and scanning, browsing groups, search
+// and filters, favourites, a lost link and reconnecting, cancelling a scan.
+class TestMainWindow : public QObject
+{
+    Q_OBJECT
+private:
+    IsolatedSettings m_settings;
+    std::unique_ptr<MainWindow> m_window;
+
+    QString statusLabel(const char *name) const
+    {
+        const auto *label = m_window->statusBar()->findChild<QLabel *>(QString::fromLatin1(name));
+        return label ? label->text() : QString();
+    }
+
+    void clickGroup(const QString &text)
+    {
+        QTreeWidget *tree = m_window->browser()->groupTree();
+        QTreeWidgetItem *item = groupItem(*m_window, text);
+        QVERIFY2(item, qPrintable(text));
+        QTest::mouseClick(tree->viewport(), Qt::LeftButton, {},
+                          tree->visualItemRect(item).center());
+    }
+
+    QString rootText() const { return m_window->browser()->view()->rootIndex().data().toString(); }
+
+private slots:
+    void init()
+    {
+        m_settings.clear();
+        m_window = std::make_unique<MainWindow>();
+        m_window->resize(1300, 800);
+        m_window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    }
+
+    void cleanup() { m_window.reset(); }
+
+    void connectingScansTheDriveIntoTheWindow()
+    {
+        m_window->connectTo(simulated());
+        QVERIFY(m_window->noticeBar()->isVisible());
+        QCOMPARE(m_window->noticeBar()->kind(), NoticeBar::Kind::Progress);
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->isReady(), kWaitMs);
+        QVERIFY(!m_window->noticeBar()->isVisible());
+
+        QTreeWidget *tree = m_window->browser()->groupTree();
+        QCOMPARE(tree->topLevelItemCount(), kSimulatedGroups + 1);
+        QCOMPARE(tree->topLevelItem(0)->text(0), QStringLiteral("All parameters"));
+        QCOMPARE(tree->topLevelItem(0)->text(1), QString::number(kSimulatedParameters));
+        QStringList ids;
+        for (int i = 1; i < tree->topLevelItemCount(); ++i)
+            ids << tree->topLevelItem(i)->text(0).section(QStringLiteral("  "), 0, 0);
+        QCOMPARE(ids.mid(0, 5),
+                 (QStringList { QStringLiteral("ru"), QStringLiteral("op"), QStringLiteral("Pn"),
+                                QStringLiteral("uF"), QStringLiteral("dr") }));
+        QCOMPARE(tree->topLevelItem(1)->text(0), QStringLiteral("ru  Run parameters"));
+        QCOMPARE(shownAddresses(*m_window).size(), kSimulatedParameters);
+        QVERIFY(m_window->model()->value(kInverterState, 0).has_value());
+
+        QTRY_COMPARE(statusLabel("passwordLevel"), QStringLiteral("Password level: Application"));
+        QTRY_VERIFY(statusLabel("parameterSets").contains(QStringLiteral("Active set: 0")));
+        QVERIFY(statusLabel("parameterSets").contains(QStringLiteral("Set pointer (Fr.09): 0")));
+        QVERIFY(statusLabel("connectionState").startsWith(QStringLiteral("Connected")));
+        QVERIFY(m_window->windowTitle().contains(QStringLiteral("simulated")));
+        QCOMPARE(RecentConnections::last().kind, ConnectionSettings::Kind::Simulated);
+    }
+
+    void groupsChooseWhatTheTableShows()
+    {
+        QVERIFY(connectAndRead(*m_window, simulated()));
+        ParameterView *view = m_window->browser()->view();
+
+        clickGroup(QStringLiteral("op  "));
+        QCOMPARE(rootText(), QStringLiteral("op  Operational parameters"));
+        const QList<quint16> op = shownAddresses(*m_window);
+        QCOMPARE(op.size(), 17);
+        for (quint16 address : op)
+            QCOMPARE(address & 0xFF00, 0x0300);
+        QVERIFY(!view->isColumnHidden(ParameterModel::FirstSetColumn + 7));
+
+        // The run display has no set-programmable parameter: one value column.
+        clickGroup(QStringLiteral("ru  "));
+        QCOMPARE(rootText(), QStringLiteral("ru  Run parameters"));
+        QCOMPARE(shownAddresses(*m_window).size(), 18);
+        QCOMPARE(view->model()->index(0, 0, view->rootIndex()).data().toString(),
+                 QStringLiteral("ru.00"));
+        QVERIFY(view->isColumnHidden(ParameterModel::FirstSetColumn + 1));
+        QVERIFY(!view->isColumnHidden(ParameterModel::FirstSetColumn));
+
+        clickGroup(QStringLiteral("All parameters"));
+        QVERIFY(!view->rootIndex().isValid());
+        QCOMPARE(shownAddresses(*m_window).size(), kSimulatedParameters);
+        QCOMPARE(m_window->browser()->shownGroup(), QString());
+    }
+
+    void searchAsYouTypeLooksThroughEveryGroup()
+    {
+        QVERIFY(connectAndRead(*m_window, simulated()));
+        clickGroup(QStringLiteral("op  "));
+        QLineEdit *search = m_window->browser()->searchField();
+        QTest::keySequence(m_window.get(), QKeySequence::Find);
+        QTRY_VERIFY(search->hasFocus());
+
+        QTest::keyClicks(search, QStringLiteral("speed"));
+        const QList<quint16> found = shownAddresses(*m_window);
+        QVERIFY(found.size() > 3);
+        QVERIFY(found.size() < kSimulatedParameters);
+        QSet<int> pages;
+        for (quint16 address : found) {
+            const QModelIndex index = m_window->model()->indexOf(address);
+            QVERIFY(index.data(ParameterModel::SearchTextRole)
+                        .toString()
+                        .contains(QStringLiteral("speed")));
+            pages.insert(address >> 8);
+        }
+        QVERIFY2(pages.size() > 1, "a search looks through every group, not just op");
+        QVERIFY(m_window->browser()
+                    ->findChild<QLabel *>(QStringLiteral("scopeLabel"))
+                    ->text()
+                    .startsWith(QStringLiteral("Search results")));
+
+        search->clear();
+        QTest::keyClicks(search, QStringLiteral("ru.3"));
+        QVERIFY(shownAddresses(*m_window).contains(quint16(0x0203)));
+
+        // Nothing matches: the table says so instead of showing an empty grid.
+        search->clear();
+        QTest::keyClicks(search, QStringLiteral("no such parameter"));
+        QVERIFY(shownAddresses(*m_window).isEmpty());
+        QVERIFY(
+            m_window->browser()->findChild<QLabel *>(QStringLiteral("emptyNotice"))->isVisible());
+
+        search->clear();
+        QCOMPARE(rootText(), QStringLiteral("op  Operational parameters"));
+        QCOMPARE(shownAddresses(*m_window).size(), 17);
+    }
+
+    void differsFromDefaultShowsWhatWasChanged()
+    {
+        QVERIFY(connectAndRead(*m_window, simulated()));
+        int differing = 0;
+        ParameterModel *model = m_window->model();
+        for (int group = 0; group < model->rowCount(); ++group) {
+            for (int row = 0; row < model->rowCount(model->index(group, 0)); ++row) {
+                differing += model->index(row, 0, model->index(group, 0))
+                                 .data(ParameterModel::DiffersFromDefaultRole)
+                                 .toBool();
+            }
+        }
+        QVERIFY(differing > 0);
+
+        auto *box = m_window->browser()->findChild<QCheckBox *>();
+        QVERIFY(box);
+        QCOMPARE(box->text().remove(QLatin1Char('&')), QStringLiteral("Differs from default"));
+        box->click();
+        QVERIFY(m_window->browser()->differsAction()->isChecked());
+        const QList<quint16> shown = shownAddresses(*m_window);
+        QCOMPARE(shown.size(), differing);
+        for (quint16 address : shown) {
+            QVERIFY(model->indexOf(address).data(ParameterModel::DiffersFromDefaultRole).toBool());
+        }
+        m_window->browser()->differsAction()->trigger();
+        QVERIFY(!box->isChecked());
+        QCOMPARE(shownAddresses(*m_window).size(), kSimulatedParameters);
+    }
+
+    void favouritesAreStarredAndRememberedPerDrive()
+    {
+        QVERIFY(connectAndRead(*m_window, simulated()));
+        m_window->browser()->showGroup(QStringLiteral("op"));
+        ParameterView *view = m_window->browser()->view();
+        const QModelIndex id
+            = viewIndex(*m_window, kFixedSpeed1).siblingAtColumn(ParameterModel::IdColumn);
+        view->scrollTo(id);
+        const QRect star = view->starRect(id);
+        QVERIFY(!star.isEmpty());
+        QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, star.center());
+        QVERIFY(m_window->model()->isFavourite(kFixedSpeed1));
+
+        m_window->browser()->showGroup(QString());
+        m_window->browser()->favouritesAction()->trigger();
+        QCOMPARE(shownAddresses(*m_window), QList<quint16> { kFixedSpeed1 });
+
+        // Another window on the same drive finds the star again.
+        MainWindow second;
+        QVERIFY(connectAndRead(second, simulated()));
+        QVERIFY(second.model()->isFavourite(kFixedSpeed1));
+        QCOMPARE(second.model()->favourites().size(), 1);
+    }
+
+    void lostLinkKeepsWhatWasReadAndReconnects()
+    {
+        SimulationOptions options;
+        options.replyLatencyUs = 0;
+        ServedDrive server(Protocol::Hsp5, options);
+        QString error;
+        QVERIFY2(server.listen(0, &error), qPrintable(error));
+        const bool read = connectAndRead(*m_window, server.settings(Protocol::Hsp5));
+        QVERIFY2(read, qPrintable(m_window->noticeBar()->text()));
+        const std::optional<qint32> before = m_window->model()->value(kDemoPeriod, 0);
+        QVERIFY(before);
+
+        server.close();
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->noticeBar()->kind(), NoticeBar::Kind::Problem, kWaitMs);
+        QVERIFY(m_window->noticeBar()->isVisible());
+        QVERIFY(m_window->noticeBar()->text().contains(QStringLiteral("lost")));
+        QCOMPARE(statusLabel("connectionState"), QStringLiteral("Connection lost"));
+        QVERIFY(m_window->statusBar()->currentMessage().contains(QStringLiteral("lost")));
+        // What was read stays; nothing can be edited meanwhile.
+        QCOMPARE(m_window->model()->rowCount(), kSimulatedGroups);
+        QCOMPARE(m_window->model()->value(kDemoPeriod, 0), before);
+        QCOMPARE(m_window->browser()->view()->editTriggers(), QAbstractItemView::NoEditTriggers);
+        QVERIFY(!m_window->isReady());
+
+        QVERIFY2(server.listen(server.port(), &error), qPrintable(error));
+        auto *reconnect
+            = m_window->noticeBar()->findChild<QPushButton *>(QStringLiteral("noticeReconnect"));
+        QVERIFY(reconnect && reconnect->isVisible());
+        QTest::mouseClick(reconnect, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->isReady(), kWaitMs);
+        QVERIFY(!m_window->noticeBar()->isVisible());
+        QVERIFY(m_window->browser()->view()->editTriggers() != QAbstractItemView::NoEditTriggers);
+        QCOMPARE(m_window->model()->rowCount(), kSimulatedGroups);
+    }
+
+    void scanCanBeCancelledAndStartedAgain()
+    {
+        ConnectionSettings settings = simulated();
+        settings.simulation.replyLatencyUs = 3000; // slow enough to cancel halfway
+        m_window->connectTo(settings);
+        auto *progress
+            = m_window->noticeBar()->findChild<QProgressBar *>(QStringLiteral("noticeProgress"));
+        QTRY_VERIFY_WITH_TIMEOUT(progress->maximum() == 1000 && progress->value() > 0, kWaitMs);
+        auto *cancel
+            = m_window->noticeBar()->findChild<QPushButton *>(QStringLiteral("noticeCancel"));
+        QTest::mouseClick(cancel, Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->noticeBar()->kind(), NoticeBar::Kind::Information,
+                                  kWaitMs);
+        QVERIFY(m_window->noticeBar()->text().contains(QStringLiteral("cancelled")));
+        QCOMPARE(m_window->model()->rowCount(), 0);
+
+        // Refresh reads the drive again when nothing was read.
+        QTest::keyClick(m_window.get(), Qt::Key_F5);
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->isReady(), 60000);
+        QCOMPARE(m_window->model()->rowCount(), kSimulatedGroups);
+    }
+
+    void layoutAndFiltersAreRemembered()
+    {
+        QVERIFY(connectAndRead(*m_window, simulated()));
+        m_window->browser()->showGroup(QStringLiteral("uF"));
+        m_window->browser()->rawValuesAction()->trigger();
+        m_window->browser()->view()->header()->resizeSection(ParameterModel::NameColumn, 321);
+        m_window->close();
+        m_window.reset();
+
+        MainWindow again;
+        QVERIFY(again.browser()->rawValuesAction()->isChecked());
+        QVERIFY(connectAndRead(again, simulated()));
+        QCOMPARE(again.browser()->shownGroup(), QStringLiteral("uF"));
+        QCOMPARE(again.browser()->view()->rootIndex().data().toString().left(4),
+                 QStringLiteral("uF  "));
+        QCOMPARE(again.browser()->view()->header()->sectionSize(ParameterModel::NameColumn), 321);
+        QVERIFY(again.model()->showsRawValues());
+    }
+};
+
+QTEST_MAIN(TestMainWindow)
+#include "tst_mainwindow.moc"

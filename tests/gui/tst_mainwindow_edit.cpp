@@ -1,0 +1,227 @@
+#include "tst_mainwindow_support.h"
+
+#include "delegate/ParameterDelegate.h"
+#include "edit/PasswordDialog.h"
+#include "edit/SetsDialog.h"
+#include "main/DriveSession.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QLabel>
+#include <QLineEdit>
+#include <QStatusBar>
+#include <QTimer>
+#include <QUndoStack>
+
+#include <functional>
+#include <memory>
+
+using namespace DriveDesk;
+using namespace DriveDesk::MainWindowTest;
+
+// Editing in the main window against the simulated F5: a value typed into the table is
+// written and read back, one set or several, a refusal is shown in the drive's words, undo
+// writes the old value back, reset to default, refresh and the password.
+class TestMainWindowEdit : public QObject
+{
+    Q_OBJECT
+private:
+    IsolatedSettings m_settings;
+    std::unique_ptr<MainWindow> m_window;
+
+    QAction *action(const char *name) const
+    {
+        auto *found = m_window->findChild<QAction *>(QString::fromLatin1(name));
+        Q_ASSERT(found);
+        return found;
+    }
+    DriveClient *client() const { return m_window->session()->client(); }
+    EditState state(quint16 address, int set) const
+    {
+        return m_window->model()->editState(address, set);
+    }
+    // Works the modal dialog `T` that `trigger` opens, once it is up.
+    template<typename T>
+    void answerDialog(const std::function<void(T *)> &work, const std::function<void()> &trigger)
+    {
+        bool answered = false;
+        auto *timer = new QTimer(m_window.get());
+        connect(timer, &QTimer::timeout, this, [&answered, timer, work] {
+            if (auto *dialog = qobject_cast<T *>(QApplication::activeModalWidget())) {
+                timer->stop();
+                answered = true;
+                work(dialog);
+            }
+        });
+        timer->start(10);
+        trigger();
+        delete timer;
+        QVERIFY(answered);
+    }
+
+private slots:
+    void init()
+    {
+        m_settings.clear();
+        m_window = std::make_unique<MainWindow>();
+        m_window->resize(1300, 800);
+        m_window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+        QVERIFY(connectAndRead(*m_window, simulated()));
+        // The level is known: the table locks what lies above it.
+        QTRY_VERIFY(!m_window->statusBar()
+                         ->findChild<QLabel *>(QStringLiteral("passwordLevel"))
+                         ->text()
+                         .isEmpty());
+    }
+
+    void cleanup() { m_window.reset(); }
+
+    void valueTypedIntoOneSetIsWrittenAndReadBack()
+    {
+        m_window->browser()->showGroup(QStringLiteral("op"));
+        ParameterView *view = m_window->browser()->view();
+        const QModelIndex index = viewIndex(*m_window, kFixedSpeed1, 2);
+        view->scrollTo(index);
+        view->setCurrentIndex(index);
+        view->edit(index);
+        QWidget *editor = view->indexWidget(index);
+        QVERIFY(editor);
+        editor->setFocus();
+        QTest::keyClick(editor, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClicks(editor, QStringLiteral("250"));
+        QTest::keyClick(editor, Qt::Key_Return);
+
+        QTRY_COMPARE_WITH_TIMEOUT(state(kFixedSpeed1, 2), EditState::Written, kWaitMs);
+        QCOMPARE(m_window->model()->value(kFixedSpeed1, 2), 250);
+        QCOMPARE(viewIndex(*m_window, kFixedSpeed1, 2).data().toString(),
+                 QStringLiteral("250 1/min"));
+        QCOMPARE(driveValue(client(), kFixedSpeed1, 2), 250);
+        QCOMPARE(driveValue(client(), kFixedSpeed1, 1), 100); // the other sets stay
+        QCOMPARE(state(kFixedSpeed1, 1), EditState::None);
+    }
+
+    void valueWrittenToSeveralSets()
+    {
+        m_window->browser()->showGroup(QStringLiteral("op"));
+        ParameterView *view = m_window->browser()->view();
+        // As the view commits an editor: setData on the table's model, set 0.
+        const QModelIndex set0 = viewIndex(*m_window, kFixedSpeed1, 0);
+        QVERIFY(view->model()->setData(set0, QStringLiteral("300")));
+        QTRY_COMPARE_WITH_TIMEOUT(state(kFixedSpeed1, 0), EditState::Written, kWaitMs);
+        view->setCurrentIndex(set0);
+
+        answerDialog<SetsDialog>(
+            [](SetsDialog *dialog) {
+                QCOMPARE(dialog->mode(), SetsDialog::Mode::ChooseSets);
+                dialog->setSetMask(0x0E); // sets 1, 2, 3
+                dialog->accept();
+            },
+            [this] { action("writeSetsAction")->trigger(); });
+
+        for (int set = 1; set <= 3; ++set) {
+            QTRY_COMPARE_WITH_TIMEOUT(state(kFixedSpeed1, set), EditState::Written, kWaitMs);
+            QCOMPARE(m_window->model()->value(kFixedSpeed1, set), 300);
+            QCOMPARE(driveValue(client(), kFixedSpeed1, set), 300);
+        }
+        QCOMPARE(driveValue(client(), kFixedSpeed1, 4), 100);
+    }
+
+    void refusedWriteShowsTheDrivesReason()
+    {
+        // ud.01 takes passwords: the drive refuses a wrong one (ack 8).
+        m_window->browser()->showGroup(QStringLiteral("ud"));
+        const QModelIndex index = viewIndex(*m_window, kPassword, 0);
+        QVERIFY(m_window->browser()->view()->model()->setData(index, QStringLiteral("1234")));
+        QTRY_COMPARE_WITH_TIMEOUT(state(kPassword, 0), EditState::Failed, kWaitMs);
+        QTRY_VERIFY(
+            m_window->statusBar()->currentMessage().contains(QStringLiteral("password invalid")));
+        QVERIFY(
+            index.data(Qt::ToolTipRole).toString().contains(QStringLiteral("password invalid")));
+        QVERIFY(m_window->undoStack()->count() == 0); // nothing happened to undo
+    }
+
+    void valueOutsideTheLimitsIsRefusedInTheTable()
+    {
+        m_window->browser()->showGroup(QStringLiteral("op"));
+        ParameterView *view = m_window->browser()->view();
+        const QModelIndex index = viewIndex(*m_window, kFixedSpeed1, 0);
+        view->setCurrentIndex(index);
+        view->edit(index);
+        QWidget *editor = view->indexWidget(index);
+        QVERIFY(editor);
+        editor->setFocus();
+        QTest::keyClick(editor, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClicks(editor, QStringLiteral("9999"));
+        QTest::keyClick(editor, Qt::Key_Return);
+        QTRY_VERIFY(m_window->statusBar()->currentMessage().contains(QStringLiteral("4000")));
+        QCOMPARE(state(kFixedSpeed1, 0), EditState::None);
+        QCOMPARE(driveValue(client(), kFixedSpeed1, 0), 100);
+    }
+
+    void undoWritesTheOldValueBack()
+    {
+        m_window->browser()->showGroup(QStringLiteral("op"));
+        QCOMPARE(m_window->model()->value(kDemoPeriod, 0), 200);
+        QVERIFY(!action("undoAction")->isEnabled());
+        const QModelIndex index = viewIndex(*m_window, kDemoPeriod, 0);
+        QVERIFY(m_window->browser()->view()->model()->setData(index, QStringLiteral("30.0")));
+        QTRY_COMPARE_WITH_TIMEOUT(state(kDemoPeriod, 0), EditState::Written, kWaitMs);
+        QCOMPARE(driveValue(client(), kDemoPeriod), 300);
+        QTRY_VERIFY(action("undoAction")->isEnabled());
+
+        action("undoAction")->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->model()->value(kDemoPeriod, 0), 200, kWaitMs);
+        QCOMPARE(driveValue(client(), kDemoPeriod), 200);
+        QTRY_VERIFY(action("redoAction")->isEnabled());
+
+        action("redoAction")->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->model()->value(kDemoPeriod, 0), 300, kWaitMs);
+        QCOMPARE(driveValue(client(), kDemoPeriod), 300);
+    }
+
+    void resetToDefaultOfTheSelectedCell()
+    {
+        m_window->browser()->showGroup(QStringLiteral("op"));
+        ParameterView *view = m_window->browser()->view();
+        const QModelIndex index = viewIndex(*m_window, kFixedSpeed1, 5);
+        QVERIFY(view->model()->setData(index, QStringLiteral("-250")));
+        QTRY_COMPARE_WITH_TIMEOUT(state(kFixedSpeed1, 5), EditState::Written, kWaitMs);
+        view->setCurrentIndex(index);
+        view->selectionModel()->select(index, QItemSelectionModel::ClearAndSelect);
+        QVERIFY(action("resetAction")->isEnabled());
+        action("resetAction")->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->model()->value(kFixedSpeed1, 5), 100, kWaitMs);
+        QCOMPARE(driveValue(client(), kFixedSpeed1, 5), 100);
+    }
+
+    void refreshShowsWhatChangedOnTheDrive()
+    {
+        // Changed behind the window's back, then F5.
+        const QFuture<Reply> write = client()->writeValue(kDemoPeriod, 450, 0x01);
+        QVERIFY(waitFinished(write));
+        QVERIFY(write.result().ok());
+        QCOMPARE(m_window->model()->value(kDemoPeriod, 0), 200);
+        action("refreshAction")->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->model()->value(kDemoPeriod, 0), 450, kWaitMs);
+    }
+
+    void passwordOpensAHigherLevel()
+    {
+        auto *level = m_window->statusBar()->findChild<QLabel *>(QStringLiteral("passwordLevel"));
+        QCOMPARE(level->text(), QStringLiteral("Password level: Application"));
+        answerDialog<PasswordDialog>(
+            [](PasswordDialog *dialog) {
+                auto *field = dialog->findChild<QLineEdit *>();
+                QVERIFY(field);
+                field->setText(QStringLiteral("500"));
+                dialog->accept();
+            },
+            [this] { action("passwordAction")->trigger(); });
+        QTRY_COMPARE_WITH_TIMEOUT(level->text(), QStringLiteral("Password level: Drive mode"),
+                                  kWaitMs);
+    }
+};
+
+QTEST_MAIN(TestMainWindowEdit)
+#include "tst_mainwindow_edit.moc"

@@ -1,0 +1,109 @@
+#include "DriveInfoDialog.h"
+
+#include "RecentConnections.h"
+
+#include "model/ParameterFormat.h"
+#include "protocol/Codec.h"
+
+#include <QApplication>
+#include <QClipboard>
+#include <QDialogButtonBox>
+#include <QPushButton>
+#include <QTextBrowser>
+#include <QVBoxLayout>
+
+namespace DriveDesk {
+
+namespace {
+
+// The identification parameters of an F5 in the order they are shown: group id and number.
+struct IdentificationParameter
+{
+    const char *group;
+    quint8 number;
+};
+constexpr IdentificationParameter kIdentification[] = {
+    { "Sy", 2 }, // inverter identifier
+    { "Sy", 3 }, // power unit code
+    { "In", 0 }, // inverter type
+    { "In", 1 }, // rated current
+    { "In", 4 }, // voltage class
+    { "In", 6 }, // software version
+    { "In", 7 }, // software date
+    { "In", 10 }, // serial number
+};
+
+} // namespace
+
+QList<DriveInfoDialog::Line> DriveInfoDialog::lines(const DriveDescription &drive,
+                                                    const ConnectionSettings &settings)
+{
+    QList<Line> lines;
+    if (!drive.identification.isEmpty())
+        lines.append({ tr("Identification"), drive.identification });
+    for (const IdentificationParameter &id : kIdentification) {
+        const GroupDescription *group = drive.findGroup(QString::fromLatin1(id.group));
+        if (!group)
+            continue;
+        const ParameterDescription *parameter = drive.find(quint16(group->address + id.number));
+        if (!parameter)
+            continue;
+        const QString label
+            = QStringLiteral("%1 (%2)").arg(parameter->name, parameterId(group->id, id.number));
+        const std::optional<qint32> value = parameter->values[0];
+        lines.append(
+            { label,
+              value ? ParameterFormat(*parameter).text(*value)
+                    : tr("not read: %1")
+                          .arg(parameter->error.isEmpty() ? tr("no value") : parameter->error) });
+    }
+    lines.append({ tr("Connection"), RecentConnections::describe(settings) });
+    lines.append({ tr("Protocol"), protocolName(settings.protocol).toUpper() });
+    if (settings.protocol != Protocol::Hsp5)
+        lines.append({ tr("Drive address"), QString::number(settings.driveAddress) });
+    lines.append({ tr("Parameter groups"), QString::number(drive.groups.size()) });
+    lines.append({ tr("Parameters"), QString::number(drive.parameterCount()) });
+    if (!drive.incompleteReason.isEmpty())
+        lines.append({ tr("Scan incomplete"), drive.incompleteReason });
+    return lines;
+}
+
+DriveInfoDialog::DriveInfoDialog(const DriveDescription &drive, const ConnectionSettings &settings,
+                                 QWidget *parent)
+    : QDialog(parent)
+    , m_lines(lines(drive, settings))
+{
+    setWindowTitle(tr("Drive information"));
+    m_text = new QTextBrowser;
+    m_text->setObjectName(QStringLiteral("driveInformation"));
+    m_text->setOpenLinks(false);
+    QString html = QStringLiteral("<table cellspacing=\"4\">");
+    for (const Line &line : std::as_const(m_lines)) {
+        html += QStringLiteral("<tr><td><b>%1</b></td><td>%2</td></tr>")
+                    .arg(line.label.toHtmlEscaped(), line.value.toHtmlEscaped());
+    }
+    html += QStringLiteral("</table>");
+    m_text->setHtml(html);
+
+    auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close);
+    QPushButton *copy = buttons->addButton(tr("&Copy"), QDialogButtonBox::ActionRole);
+    copy->setObjectName(QStringLiteral("copyInformation"));
+    connect(copy, &QPushButton::clicked, this,
+            [this] { QApplication::clipboard()->setText(plainText()); });
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(m_text);
+    layout->addWidget(buttons);
+    resize(fontMetrics().averageCharWidth() * 90, fontMetrics().height() * 24);
+}
+
+QString DriveInfoDialog::plainText() const
+{
+    QStringList text;
+    for (const Line &line : m_lines)
+        text << QStringLiteral("%1: %2").arg(line.label, line.value);
+    return text.join(QLatin1Char('\n')) + QLatin1Char('\n');
+}
+
+} // namespace DriveDesk

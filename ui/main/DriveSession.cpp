@@ -1,0 +1,157 @@
+#include "DriveSession.h"
+
+#include "edit/AccessController.h"
+#include "edit/EditController.h"
+#include "edit/PollingController.h"
+#include "model/ParameterModel.h"
+
+namespace DriveDesk {
+
+namespace {
+
+const QString kLiveGroup = QStringLiteral("ru");
+const QString kSetGroup = QStringLiteral("Fr");
+constexpr quint8 kActiveSetNumber = 2; // Fr.02
+constexpr quint8 kSetPointerNumber = 9; // Fr.09
+
+} // namespace
+
+DriveSession::DriveSession(const ConnectionSettings &settings, ParameterModel *model,
+                           QUndoStack *undoStack, QObject *parent)
+    : QObject(parent)
+    , m_model(model)
+{
+    m_client = new DriveClient(settings);
+    m_edit = new EditController(m_client, model, undoStack, this);
+    m_polling = new PollingController(m_client, model, this);
+    m_polling->setGroup(kLiveGroup);
+    m_access = new AccessController(m_client, model, this);
+
+    connect(m_client, &DriveClient::stateChanged, this, &DriveSession::stateChanged);
+    connect(m_client, &DriveClient::connected, this, &DriveSession::onConnected);
+    connect(m_client, &DriveClient::connectionFailed, this, &DriveSession::connectionFailed);
+    connect(m_client, &DriveClient::linkLost, this, [this](const QString &reason) {
+        m_polling->setEnabled(false);
+        emit linkLost(reason);
+    });
+    connect(m_edit, &EditController::message, this, &DriveSession::message);
+    connect(m_access, &AccessController::message, this, &DriveSession::message);
+    connect(m_polling, &PollingController::message, this, &DriveSession::message);
+    connect(&m_scan, &QFutureWatcherBase::progressValueChanged, this, [this](int value) {
+        emit scanProgress(value, m_scan.progressMaximum(), m_scan.progressText());
+    });
+    connect(&m_scan, &QFutureWatcherBase::progressTextChanged, this, [this](const QString &text) {
+        emit scanProgress(m_scan.progressValue(), m_scan.progressMaximum(), text);
+    });
+    connect(&m_scan, &QFutureWatcherBase::finished, this, &DriveSession::onScanFinished);
+}
+
+DriveSession::~DriveSession()
+{
+    m_scan.disconnect(this);
+    if (m_scan.isRunning())
+        m_scan.cancel();
+    // The controllers hold the client: they go first.
+    delete m_access;
+    delete m_polling;
+    delete m_edit;
+    delete m_client;
+}
+
+void DriveSession::start()
+{
+    m_client->connectToDrive();
+}
+
+void DriveSession::disconnectFromDrive()
+{
+    cancelScan();
+    m_polling->setEnabled(false);
+    m_client->disconnectFromDrive();
+}
+
+void DriveSession::cancelScan()
+{
+    if (m_scan.isRunning())
+        m_scan.cancel();
+}
+
+void DriveSession::rescan()
+{
+    if (m_scan.isRunning() || m_client->state() != DriveClient::State::Connected)
+        return;
+    m_polling->setEnabled(false);
+    m_scan.setFuture(m_client->scan());
+    emit scanStarted();
+}
+
+void DriveSession::onConnected()
+{
+    emit connected();
+    if (!m_described) {
+        rescan();
+        return;
+    }
+    // Back after a lost link: the model still holds what was read; bring the values up to date.
+    afterRead();
+    m_edit->refresh();
+}
+
+void DriveSession::onScanFinished()
+{
+    const QFuture<DriveDescription> future = m_scan.future();
+    if (future.isCanceled() || future.resultCount() == 0) {
+        emit scanFinished(tr("the scan was cancelled"));
+        applyPolling();
+        return;
+    }
+    const DriveDescription drive = future.result();
+    m_activeSet.reset();
+    m_setPointer.reset();
+    if (const GroupDescription *sets = drive.findGroup(kSetGroup)) {
+        const auto address = [&](quint8 number) -> std::optional<quint16> {
+            const quint16 a = quint16(sets->address + number);
+            return drive.find(a) ? std::optional<quint16>(a) : std::nullopt;
+        };
+        m_activeSet = address(kActiveSetNumber);
+        m_setPointer = address(kSetPointerNumber);
+    }
+    m_model->setDescription(drive);
+    m_described = true;
+    emit described(drive);
+    afterRead();
+    emit scanFinished(drive.incompleteReason);
+}
+
+void DriveSession::afterRead()
+{
+    m_access->readLevel();
+    readSetPointers();
+    applyPolling();
+}
+
+void DriveSession::readSetPointers()
+{
+    for (const std::optional<quint16> &address : { m_activeSet, m_setPointer }) {
+        if (!address)
+            continue;
+        m_client->readValue(*address, 0x01).then(this, [this](const Reply &reply) {
+            if (const auto *value = reply.data<ParameterValue>())
+                m_model->setValue(value->address, 0, value->value);
+        });
+    }
+}
+
+void DriveSession::setPollingWanted(bool on)
+{
+    m_pollingWanted = on;
+    applyPolling();
+}
+
+void DriveSession::applyPolling()
+{
+    m_polling->setEnabled(m_pollingWanted && m_described && !m_scan.isRunning()
+                          && m_client->state() == DriveClient::State::Connected);
+}
+
+} // namespace DriveDesk

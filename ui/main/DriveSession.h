@@ -1,0 +1,88 @@
+#pragma once
+
+#include "client/DriveClient.h"
+
+#include <QFutureWatcher>
+#include <QObject>
+
+#include <optional>
+
+class QUndoStack;
+
+namespace DriveDesk {
+
+class AccessController;
+class EditController;
+class ParameterModel;
+class PollingController;
+
+// One connection to one drive and the way from connecting over the scan to a filled model:
+// the client (working in its own thread) and the edit, polling and access controllers that
+// work through it. A lost link leaves the model as it is; reconnecting re-reads the values.
+// Lives in the GUI thread.
+class DriveSession : public QObject
+{
+    Q_OBJECT
+public:
+    DriveSession(const ConnectionSettings &settings, ParameterModel *model, QUndoStack *undoStack,
+                 QObject *parent = nullptr);
+    ~DriveSession() override;
+
+    DriveClient *client() const { return m_client; }
+    EditController *editController() const { return m_edit; }
+    PollingController *pollingController() const { return m_polling; }
+    AccessController *accessController() const { return m_access; }
+    const ConnectionSettings &settings() const { return m_client->settings(); }
+    DriveClient::State state() const { return m_client->state(); }
+
+    // Connects; the first time the drive is scanned into the model, later its values re-read.
+    void start();
+    void disconnectFromDrive();
+    void cancelScan();
+    // Reads everything again (metadata included) into the model.
+    void rescan();
+    bool isScanning() const { return m_scan.isRunning(); }
+    // A scan filled the model: there is something to edit and to refresh.
+    bool hasDescription() const { return m_described; }
+
+    // Polling of the live values runs while this is on and the drive is connected and read.
+    void setPollingWanted(bool on);
+    bool isPollingWanted() const { return m_pollingWanted; }
+
+    // Fr.02 (active set) and Fr.09 (set pointer) where the drive has them.
+    std::optional<quint16> activeSetAddress() const { return m_activeSet; }
+    std::optional<quint16> setPointerAddress() const { return m_setPointer; }
+
+signals:
+    void stateChanged(DriveDesk::DriveClient::State state);
+    void connected();
+    void connectionFailed(const QString &reason);
+    void linkLost(const QString &reason);
+    void scanStarted();
+    void scanProgress(int value, int maximum, const QString &text);
+    // The model holds the drive now. `drive` is the scan's result (metadata and values).
+    void described(const DriveDesk::DriveDescription &drive);
+    // Empty when the scan read everything; otherwise why it stopped or what it missed.
+    void scanFinished(const QString &problem);
+    void message(const QString &text);
+
+private:
+    void onConnected();
+    void onScanFinished();
+    void afterRead();
+    void readSetPointers();
+    void applyPolling();
+
+    DriveClient *m_client = nullptr; // owned; deleted after the controllers that use it
+    EditController *m_edit = nullptr;
+    PollingController *m_polling = nullptr;
+    AccessController *m_access = nullptr;
+    ParameterModel *m_model = nullptr;
+    QFutureWatcher<DriveDescription> m_scan;
+    std::optional<quint16> m_activeSet;
+    std::optional<quint16> m_setPointer;
+    bool m_described = false;
+    bool m_pollingWanted = false;
+};
+
+} // namespace DriveDesk

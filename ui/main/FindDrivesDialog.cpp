@@ -1,0 +1,221 @@
+#include "FindDrivesDialog.h"
+
+#include "protocol/Codec.h"
+
+#include <QDialogButtonBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace DriveDesk {
+
+namespace {
+
+constexpr int kFirstAddress = 0;
+constexpr int kLastAddress = 239;
+
+// The bus without a drive address: "DIN66019II on /dev/ttyUSB0 at 38400 baud".
+QString busName(const ConnectionSettings &settings)
+{
+    const QString protocol = protocolName(settings.protocol).toUpper();
+    switch (settings.kind) {
+    case ConnectionSettings::Kind::Serial:
+        return FindDrivesDialog::tr("the %1 bus on %2 at %3 baud")
+            .arg(protocol, settings.device)
+            .arg(settings.baudRate);
+    case ConnectionSettings::Kind::Tcp:
+        return FindDrivesDialog::tr("the %1 bus behind %2").arg(protocol, settings.target().mid(4));
+    case ConnectionSettings::Kind::Simulated:
+        break;
+    }
+    return FindDrivesDialog::tr("the simulated %1 bus").arg(protocol);
+}
+
+} // namespace
+
+FindDrivesDialog::FindDrivesDialog(QWidget *parent)
+    : QDialog(parent)
+{
+    setWindowTitle(tr("Find drives"));
+    m_bus = new QLabel;
+    m_bus->setWordWrap(true);
+    m_progress = new QProgressBar;
+    m_progress->setObjectName(QStringLiteral("searchProgress"));
+    m_progress->setRange(0, kLastAddress - kFirstAddress + 1);
+    m_progress->setValue(0);
+    m_stop = new QPushButton(tr("&Stop"));
+    m_stop->setObjectName(QStringLiteral("stopSearch"));
+    auto *progressRow = new QHBoxLayout;
+    progressRow->addWidget(m_progress, 1);
+    progressRow->addWidget(m_stop);
+    m_status = new QLabel;
+    m_status->setObjectName(QStringLiteral("searchStatus"));
+    m_status->setWordWrap(true);
+    m_drives = new QListWidget;
+    m_drives->setObjectName(QStringLiteral("foundDrives"));
+
+    m_buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
+    m_buttons->button(QDialogButtonBox::Ok)->setText(tr("&Connect"));
+    m_again = m_buttons->addButton(tr("Search &again"), QDialogButtonBox::ActionRole);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(m_bus);
+    layout->addLayout(progressRow);
+    layout->addWidget(m_status);
+    layout->addWidget(new QLabel(tr("Drives that answered:")));
+    layout->addWidget(m_drives);
+    layout->addWidget(m_buttons);
+    resize(420, 380);
+
+    connect(m_buttons, &QDialogButtonBox::accepted, this, &FindDrivesDialog::accept);
+    connect(m_buttons, &QDialogButtonBox::rejected, this, &FindDrivesDialog::reject);
+    connect(m_stop, &QPushButton::clicked, this, &FindDrivesDialog::cancelSearch);
+    connect(m_again, &QPushButton::clicked, this, &FindDrivesDialog::start);
+    connect(m_drives, &QListWidget::currentRowChanged, this, &FindDrivesDialog::updateButtons);
+    connect(m_drives, &QListWidget::itemActivated, this, &FindDrivesDialog::accept);
+    connect(&m_watcher, &QFutureWatcherBase::progressValueChanged, m_progress,
+            &QProgressBar::setValue);
+    connect(&m_watcher, &QFutureWatcherBase::progressTextChanged, m_status, &QLabel::setText);
+    connect(&m_watcher, &QFutureWatcherBase::finished, this, &FindDrivesDialog::onFinished);
+}
+
+FindDrivesDialog::FindDrivesDialog(DriveClient *client, QWidget *parent)
+    : FindDrivesDialog(parent)
+{
+    m_client = client;
+    m_bus->setText(tr("Asking every address %2..%3 on %1 whether a drive answers.")
+                       .arg(busName(client->settings()))
+                       .arg(kFirstAddress)
+                       .arg(kLastAddress));
+    start();
+}
+
+FindDrivesDialog::FindDrivesDialog(const ConnectionSettings &settings, QWidget *parent)
+    : FindDrivesDialog(parent)
+{
+    m_ownClient = std::make_unique<DriveClient>(settings);
+    m_client = m_ownClient.get();
+    m_bus->setText(tr("Asking every address %2..%3 on %1 whether a drive answers.")
+                       .arg(busName(settings))
+                       .arg(kFirstAddress)
+                       .arg(kLastAddress));
+    connect(m_client, &DriveClient::connected, this, &FindDrivesDialog::search);
+    connect(m_client, &DriveClient::connectionFailed, this, &FindDrivesDialog::fail);
+    start();
+}
+
+FindDrivesDialog::~FindDrivesDialog()
+{
+    m_watcher.disconnect(this);
+    if (m_watcher.isRunning())
+        m_watcher.cancel();
+}
+
+void FindDrivesDialog::start()
+{
+    if (!m_client)
+        return;
+    if (m_client->state() == DriveClient::State::Connected) {
+        search();
+        return;
+    }
+    if (!m_ownClient) {
+        fail(tr("not connected to the bus"));
+        return;
+    }
+    m_status->setText(tr("Opening the connection..."));
+    m_stop->setEnabled(true);
+    m_again->setEnabled(false);
+    m_ownClient->connectToDrive();
+}
+
+void FindDrivesDialog::search()
+{
+    if (m_watcher.isRunning())
+        return;
+    m_found.clear();
+    m_drives->clear();
+    m_progress->setValue(0);
+    m_status->setText(tr("Searching..."));
+    m_watcher.setFuture(m_client->findDrives(kFirstAddress, kLastAddress));
+    updateButtons();
+}
+
+void FindDrivesDialog::cancelSearch()
+{
+    if (m_watcher.isRunning()) {
+        m_watcher.cancel();
+    } else if (m_ownClient && m_ownClient->state() == DriveClient::State::Connecting) {
+        m_ownClient->disconnectFromDrive();
+        m_status->setText(tr("Stopped."));
+    }
+    updateButtons();
+}
+
+void FindDrivesDialog::onFinished()
+{
+    const QFuture<QList<int>> future = m_watcher.future();
+    if (future.isCanceled()) {
+        m_status->setText(tr("Stopped after %1 of %2 addresses.")
+                              .arg(m_progress->value())
+                              .arg(m_progress->maximum()));
+    } else {
+        m_found = future.resultCount() > 0 ? future.result() : QList<int>();
+        const bool complete = m_watcher.progressValue() >= m_watcher.progressMaximum();
+        if (!complete) {
+            // The search ended early: the text says why (the link went away, ...).
+            m_status->setText(tr("The search stopped: %1").arg(m_watcher.progressText()));
+        } else if (m_found.isEmpty()) {
+            m_status->setText(tr("No drive answered. Check the wiring, the baud rate and the "
+                                 "protocol."));
+        } else {
+            m_status->setText(tr("%n drive(s) answered.", nullptr, int(m_found.size())));
+        }
+    }
+    for (int address : std::as_const(m_found)) {
+        auto *item = new QListWidgetItem(tr("Drive at address %1").arg(address));
+        item->setData(Qt::UserRole, address);
+        m_drives->addItem(item);
+    }
+    if (m_drives->count() > 0)
+        m_drives->setCurrentRow(0);
+    updateButtons();
+    emit searchFinished();
+}
+
+void FindDrivesDialog::fail(const QString &reason)
+{
+    m_status->setText(tr("Could not search: %1").arg(reason));
+    updateButtons();
+    emit searchFinished();
+}
+
+void FindDrivesDialog::updateButtons()
+{
+    const bool searching = m_watcher.isRunning();
+    m_stop->setEnabled(searching);
+    m_again->setEnabled(!searching);
+    m_buttons->button(QDialogButtonBox::Ok)
+        ->setEnabled(!searching && m_drives->currentItem() != nullptr);
+}
+
+void FindDrivesDialog::accept()
+{
+    const QListWidgetItem *item = m_drives->currentItem();
+    if (m_watcher.isRunning() || !item)
+        return;
+    m_chosen = item->data(Qt::UserRole).toInt();
+    QDialog::accept();
+}
+
+void FindDrivesDialog::reject()
+{
+    if (m_watcher.isRunning())
+        m_watcher.cancel();
+    QDialog::reject();
+}
+
+} // namespace DriveDesk

@@ -1,0 +1,407 @@
+#include "MainWindow.h"
+
+#include "DriveSession.h"
+#include "NoticeBar.h"
+#include "ParameterBrowser.h"
+#include "ParameterView.h"
+#include "RecentConnections.h"
+
+#include "delegate/ParameterDelegate.h"
+#include "edit/AccessController.h"
+#include "edit/EditController.h"
+#include "edit/PollingController.h"
+#include "model/ParameterModel.h"
+#include "monitor/TelegramMonitor.h"
+#include "parameters/ParameterId.h"
+
+#include <QAction>
+#include <QCloseEvent>
+#include <QCryptographicHash>
+#include <QFile>
+#include <QIcon>
+#include <QLabel>
+#include <QProgressBar>
+#include <QSettings>
+#include <QStatusBar>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+namespace DriveDesk {
+
+namespace {
+
+const QString kGeometryKey = QStringLiteral("window/geometry");
+const QString kStateKey = QStringLiteral("window/state");
+const QString kBrowserKey = QStringLiteral("window/browser");
+const QString kPollingKey = QStringLiteral("polling/enabled");
+const QString kIntervalKey = QStringLiteral("polling/intervalMs");
+const QString kFavouritesGroup = QStringLiteral("favourites");
+
+// Favourites belong to a drive: its identification and serial number (In.10) where it has
+// them, otherwise where it was reached.
+QString favouritesKey(const DriveDescription &drive, const ConnectionSettings &settings)
+{
+    QString identity = drive.identification;
+    if (const GroupDescription *info = drive.findGroup(QStringLiteral("In"))) {
+        if (const ParameterDescription *serial = drive.find(quint16(info->address + 10))) {
+            if (serial->values[0])
+                identity += QStringLiteral("/serial %1").arg(*serial->values[0]);
+        }
+    }
+    if (identity.isEmpty())
+        identity = QStringLiteral("%1/%2").arg(settings.target()).arg(settings.driveAddress);
+    return QString::fromLatin1(
+        QCryptographicHash::hash(identity.toUtf8(), QCryptographicHash::Sha1).toHex().left(16));
+}
+
+// The icon built into the program (resources/), or the desktop theme's.
+QIcon applicationIcon()
+{
+    QIcon icon;
+    for (int size : { 16, 32, 48, 64, 128, 256 }) {
+        const QString file = QStringLiteral(":/icons/drivedesk-%1.png").arg(size);
+        if (QFile::exists(file))
+            icon.addFile(file, QSize(size, size));
+    }
+    return icon.isNull() ? QIcon::fromTheme(QStringLiteral("drivedesk")) : icon;
+}
+
+} // namespace
+
+MainWindow::MainWindow(Language language, QWidget *parent)
+    : QMainWindow(parent)
+    , m_language(language)
+{
+    setObjectName(QStringLiteral("mainWindow"));
+    setWindowTitle(tr("DriveDesk"));
+    setWindowIcon(applicationIcon());
+    m_model = new ParameterModel(this);
+    m_undoStack = new QUndoStack(this);
+    m_browser = new ParameterBrowser(m_model);
+    m_notice = new NoticeBar;
+
+    auto *central = new QWidget;
+    auto *layout = new QVBoxLayout(central);
+    layout->setContentsMargins(4, 4, 4, 0);
+    layout->addWidget(m_notice);
+    layout->addWidget(m_browser, 1);
+    setCentralWidget(central);
+
+    m_monitor = new TelegramMonitor(this);
+    if (m_monitor->objectName().isEmpty())
+        m_monitor->setObjectName(QStringLiteral("telegramMonitor"));
+    addDockWidget(Qt::BottomDockWidgetArea, m_monitor);
+    m_monitor->hide();
+
+    createActions();
+    createMenus();
+    createToolBar();
+    createStatusBar();
+
+    connect(m_notice, &NoticeBar::cancelClicked, this, [this] {
+        if (m_session)
+            m_session->cancelScan();
+    });
+    connect(m_notice, &NoticeBar::reconnectClicked, this, &MainWindow::reconnect);
+    connect(m_notice, &NoticeBar::connectClicked, this, &MainWindow::openConnectionDialog);
+    connect(m_browser->delegate(), &ParameterDelegate::editRefused, this,
+            [this](const QModelIndex &, const QString &reason) { showMessage(reason); });
+    connect(m_model, &ParameterModel::favouritesChanged, this, &MainWindow::saveFavourites);
+    connect(m_model, &QAbstractItemModel::dataChanged, this,
+            [this](const QModelIndex &topLeft, const QModelIndex &bottomRight) {
+                if (!m_session)
+                    return;
+                const auto address = topLeft.data(ParameterModel::AddressRole).value<quint16>();
+                if (topLeft.row() != bottomRight.row() || address == m_session->activeSetAddress()
+                    || address == m_session->setPointerAddress())
+                    updateSetsLabel();
+            });
+    connect(m_model, &QAbstractItemModel::modelReset, this, &MainWindow::updateSetsLabel);
+    connect(m_browser->view()->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+            &MainWindow::updateActions);
+    connect(m_browser->view()->selectionModel(), &QItemSelectionModel::currentChanged, this,
+            &MainWindow::updateActions);
+
+    restoreSettings();
+    m_notice->showInformation(
+        tr("Not connected. Choose Connect... (%1) to reach a drive or the simulated one.")
+            .arg(m_connectAction->shortcut().toString(QKeySequence::NativeText)));
+    onStateChanged(DriveClient::State::Disconnected);
+}
+
+MainWindow::~MainWindow()
+{
+    // The session's client may still answer into the model: it goes before the model does.
+    delete m_session;
+    // Children still talk while they are destroyed (the stack announces its clearing, an open
+    // editor commits): nothing here is left to update.
+    m_undoStack->disconnect(this);
+    m_model->disconnect(this);
+    m_browser->delegate()->disconnect(this);
+    m_browser->view()->selectionModel()->disconnect(this);
+}
+
+bool MainWindow::isReady() const
+{
+    return m_session && m_session->state() == DriveClient::State::Connected
+        && m_session->hasDescription() && !m_session->isScanning();
+}
+
+void MainWindow::connectTo(ConnectionSettings settings)
+{
+    settings.language = m_language;
+    if (m_session) {
+        m_monitor->attach(nullptr);
+        delete m_session;
+        m_session = nullptr;
+    }
+    m_model->clear();
+    m_undoStack->clear();
+    m_favouritesKey.clear();
+    setWindowTitle(tr("DriveDesk"));
+
+    m_session = new DriveSession(settings, m_model, m_undoStack, this);
+    DriveSession *session = m_session;
+    connect(session, &DriveSession::stateChanged, this, &MainWindow::onStateChanged);
+    connect(session, &DriveSession::connected, this, [this, session] {
+        RecentConnections::remember(session->settings());
+        if (!session->hasDescription()) {
+            m_notice->showProgress(tr("Connected. Reading the drive..."), 0, 0);
+            return;
+        }
+        // Back after a lost link: the table stays, its values are read again.
+        m_notice->hide();
+        showMessage(tr("Reconnected to %1; reading the values again.")
+                        .arg(RecentConnections::describe(session->settings())));
+    });
+    connect(session, &DriveSession::connectionFailed, this, &MainWindow::onConnectionFailed);
+    connect(session, &DriveSession::linkLost, this, &MainWindow::onLinkLost);
+    connect(session, &DriveSession::scanStarted, this, [this] {
+        m_notice->showProgress(tr("Reading the drive..."), 0, 1000);
+        m_browser->setEmptyText(tr("Reading the drive..."));
+        updateActions();
+    });
+    connect(session, &DriveSession::scanProgress, this, &MainWindow::onScanProgress);
+    connect(session, &DriveSession::described, this, &MainWindow::onDescribed);
+    connect(session, &DriveSession::scanFinished, this, &MainWindow::onScanFinished);
+    connect(session, &DriveSession::message, this, &MainWindow::showMessage);
+    connect(session->accessController(), &AccessController::levelChanged, this,
+            &MainWindow::onLevelChanged);
+    EditController *edit = session->editController();
+    connect(edit, &EditController::busyChanged, this, [this](bool busy) {
+        m_busy->setVisible(busy);
+        updateActions();
+    });
+    connect(edit, &EditController::progress, this, [this](int done, int total) {
+        m_busy->setRange(0, total);
+        m_busy->setValue(done);
+    });
+    m_monitor->attach(session->client());
+    session->pollingController()->setIntervalMs(m_pollingIntervalMs);
+    session->setPollingWanted(m_pollingAction->isChecked());
+
+    m_levelLabel->clear();
+    m_browser->setEmptyText(tr("Connecting..."));
+    m_notice->showProgress(tr("Connecting to %1...").arg(RecentConnections::describe(settings)), 0,
+                           0);
+    session->start();
+    updateActions();
+}
+
+void MainWindow::onStateChanged(DriveClient::State state)
+{
+    QString text;
+    switch (state) {
+    case DriveClient::State::Disconnected:
+        text = tr("Not connected");
+        break;
+    case DriveClient::State::Connecting:
+        text = tr("Connecting...");
+        break;
+    case DriveClient::State::Connected:
+        text = tr("Connected: %1").arg(RecentConnections::describe(m_session->settings()));
+        break;
+    case DriveClient::State::Lost:
+        text = tr("Connection lost");
+        break;
+    }
+    m_stateLabel->setText(text);
+    updateActions();
+}
+
+void MainWindow::onScanProgress(int value, int maximum, const QString &text)
+{
+    m_notice->showProgress(text.isEmpty() ? tr("Reading the drive...")
+                                          : tr("Reading the drive: %1").arg(text),
+                           value, maximum);
+}
+
+void MainWindow::onDescribed(const DriveDescription &drive)
+{
+    m_favouritesKey = favouritesKey(drive, m_session->settings());
+    QSettings settings;
+    const QStringList stored
+        = settings.value(kFavouritesGroup + QLatin1Char('/') + m_favouritesKey).toStringList();
+    QSet<quint16> favourites;
+    for (const QString &hex : stored) {
+        bool ok = false;
+        const uint address = hex.toUInt(&ok, 16);
+        if (ok && address <= 0xFFFF && m_model->parameter(quint16(address)))
+            favourites.insert(quint16(address));
+    }
+    m_model->setFavourites(favourites);
+    const QString name = drive.identification.isEmpty()
+        ? RecentConnections::describe(m_session->settings())
+        : drive.identification;
+    setWindowTitle(tr("%1 - DriveDesk").arg(name));
+}
+
+void MainWindow::onScanFinished(const QString &problem)
+{
+    m_browser->setEmptyText(problem.isEmpty()
+                                ? tr("The drive reported no parameters.")
+                                : tr("Nothing was read from the drive: %1.").arg(problem));
+    if (problem.isEmpty()) {
+        m_notice->hide();
+        int parameters = 0;
+        for (int group = 0; group < m_model->rowCount(); ++group)
+            parameters += m_model->rowCount(m_model->index(group, 0));
+        showMessage(tr("Read %n parameter(s)", nullptr, parameters)
+                    + tr(" in %n group(s).", nullptr, m_model->rowCount()));
+    } else if (m_model->rowCount() == 0) {
+        m_notice->showInformation(
+            tr("Nothing was read: %1. Press Refresh (%2) to read the drive.")
+                .arg(problem, m_refreshAction->shortcut().toString(QKeySequence::NativeText)));
+    } else {
+        m_notice->showProblem(tr("The drive was read only in part: %1").arg(problem));
+    }
+    updateActions();
+    emit driveRead();
+}
+
+void MainWindow::onLinkLost(const QString &reason)
+{
+    const QString text = tr("The connection to the drive was lost: %1. What was read stays "
+                            "shown; editing is off until the drive is reconnected.")
+                             .arg(reason);
+    m_notice->showProblem(text);
+    showMessage(tr("Connection lost: %1").arg(reason));
+    updateActions();
+}
+
+void MainWindow::onConnectionFailed(const QString &reason)
+{
+    m_browser->setEmptyText(tr("Could not connect: %1").arg(reason));
+    m_notice->showProblem(tr("Could not connect to %1: %2")
+                              .arg(RecentConnections::describe(m_session->settings()), reason));
+    showMessage(tr("Could not connect: %1").arg(reason));
+    updateActions();
+}
+
+void MainWindow::onLevelChanged(PasswordLevel level)
+{
+    m_levelLabel->setText(tr("Password level: %1").arg(passwordLevelName(level, m_language)));
+}
+
+void MainWindow::showMessage(const QString &text)
+{
+    statusBar()->showMessage(text);
+}
+
+void MainWindow::updateSetsLabel()
+{
+    const auto valueText = [this](std::optional<quint16> address) {
+        if (!address)
+            return QString();
+        const std::optional<qint32> value = m_model->value(*address, 0);
+        return value ? QString::number(*value) : tr("?");
+    };
+    const QString active = m_session ? valueText(m_session->activeSetAddress()) : QString();
+    const QString pointer = m_session ? valueText(m_session->setPointerAddress()) : QString();
+    QStringList parts;
+    if (!active.isEmpty())
+        parts << tr("Active set: %1").arg(active);
+    if (!pointer.isEmpty())
+        parts << tr("Set pointer (Fr.09): %1").arg(pointer);
+    m_setsLabel->setText(parts.join(QStringLiteral("   ")));
+    m_setsLabel->setVisible(!parts.isEmpty());
+}
+
+void MainWindow::reconnect()
+{
+    if (!m_session) {
+        openConnectionDialog();
+        return;
+    }
+    m_notice->showProgress(
+        tr("Connecting to %1...").arg(RecentConnections::describe(m_session->settings())), 0, 0);
+    m_session->start();
+}
+
+void MainWindow::disconnectFromDrive()
+{
+    if (!m_session)
+        return;
+    m_session->disconnectFromDrive();
+    m_notice->showInformation(tr("Disconnected from %1. What was read stays shown.")
+                                  .arg(RecentConnections::describe(m_session->settings())),
+                              true);
+    updateActions();
+}
+
+void MainWindow::refresh()
+{
+    if (!m_session || m_session->state() != DriveClient::State::Connected)
+        return;
+    if (!m_session->hasDescription())
+        m_session->rescan();
+    else
+        m_session->editController()->refresh();
+}
+
+void MainWindow::saveFavourites()
+{
+    if (m_favouritesKey.isEmpty())
+        return;
+    QStringList addresses;
+    const QSet<quint16> favourites = m_model->favourites();
+    for (quint16 address : favourites)
+        addresses << QString::number(address, 16).rightJustified(4, QLatin1Char('0'));
+    addresses.sort();
+    QSettings settings;
+    const QString key = kFavouritesGroup + QLatin1Char('/') + m_favouritesKey;
+    if (addresses.isEmpty())
+        settings.remove(key);
+    else
+        settings.setValue(key, addresses);
+}
+
+void MainWindow::restoreSettings()
+{
+    QSettings settings;
+    if (!restoreGeometry(settings.value(kGeometryKey).toByteArray()))
+        resize(1300, 820);
+    restoreState(settings.value(kStateKey).toByteArray());
+    m_browser->restoreState(settings.value(kBrowserKey).toByteArray());
+    m_pollingAction->setChecked(settings.value(kPollingKey, false).toBool());
+    setPollingInterval(settings.value(kIntervalKey, m_pollingIntervalMs).toInt());
+}
+
+void MainWindow::saveSettings()
+{
+    QSettings settings;
+    settings.setValue(kGeometryKey, saveGeometry());
+    settings.setValue(kStateKey, saveState());
+    settings.setValue(kBrowserKey, m_browser->saveState());
+    settings.setValue(kPollingKey, m_pollingAction->isChecked());
+    settings.setValue(kIntervalKey, m_pollingIntervalMs);
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    saveSettings();
+    saveFavourites();
+    QMainWindow::closeEvent(event);
+}
+
+} // namespace DriveDesk

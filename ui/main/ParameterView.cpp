@@ -1,0 +1,60 @@
+#include "ParameterView.h"
+
+#include "model/ParameterModel.h"
+
+#include <QMouseEvent>
+
+namespace DriveDesk {
+
+ParameterView::ParameterView(QWidget *parent)
+    : QTreeView(parent)
+{
+    setObjectName(QStringLiteral("parameterView"));
+    setUniformRowHeights(true); // 5,000 rows scroll without measuring each one
+    setAlternatingRowColors(true);
+    setSelectionBehavior(QAbstractItemView::SelectItems);
+    setSelectionMode(QAbstractItemView::ExtendedSelection);
+    setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
+                    | QAbstractItemView::AnyKeyPressed);
+    setAllColumnsShowFocus(false);
+    setContextMenuPolicy(Qt::CustomContextMenu);
+}
+
+QRect ParameterView::starRect(const QModelIndex &index) const
+{
+    const QModelIndex id = index.siblingAtColumn(ParameterModel::IdColumn);
+    if (!id.isValid() || id.data(ParameterModel::IsGroupRole).toBool())
+        return {};
+    QStyleOptionViewItem option;
+    initViewItemOption(&option);
+    option.rect = visualRect(id);
+    option.features |= QStyleOptionViewItem::HasDecoration | QStyleOptionViewItem::HasDisplay;
+    option.icon = id.data(Qt::DecorationRole).value<QIcon>();
+    option.text = id.data(Qt::DisplayRole).toString();
+    return style()->subElementRect(QStyle::SE_ItemViewItemDecoration, &option, this);
+}
+
+void ParameterView::cancelEditing()
+{
+    if (state() != EditingState)
+        return;
+    if (QWidget *editor = indexWidget(currentIndex()))
+        closeEditor(editor, QAbstractItemDelegate::NoHint);
+}
+
+void ParameterView::mousePressEvent(QMouseEvent *event)
+{
+    if (event->button() == Qt::LeftButton) {
+        const QModelIndex index = indexAt(event->position().toPoint());
+        if (index.column() == ParameterModel::IdColumn
+            && starRect(index).contains(event->position().toPoint())) {
+            const bool favourite = index.data(ParameterModel::FavouriteRole).toBool();
+            model()->setData(index, !favourite, ParameterModel::FavouriteRole);
+            event->accept();
+            return;
+        }
+    }
+    QTreeView::mousePressEvent(event);
+}
+
+} // namespace DriveDesk

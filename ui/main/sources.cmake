@@ -1,0 +1,14 @@
+# The shell: the main window, its dialogs and the start-up options.
+target_sources(drivedesk_ui PRIVATE
+    main/ConnectionDialog.cpp main/ConnectionDialog.h
+    main/DriveInfoDialog.cpp main/DriveInfoDialog.h
+    main/DriveSession.cpp main/DriveSession.h
+    main/FilterBar.cpp main/FilterBar.h
+    main/FindDrivesDialog.cpp main/FindDrivesDialog.h
+    main/MainWindow.cpp main/MainWindowActions.cpp main/MainWindowCommands.cpp main/MainWindow.h
+    main/NoticeBar.cpp main/NoticeBar.h
+    main/ParameterBrowser.cpp main/ParameterBrowser.h
+    main/ParameterView.cpp main/ParameterView.h
+    main/RecentConnections.cpp main/RecentConnections.h
+    main/StartupOptions.cpp main/StartupOptions.h
+)
