@@ -1,5 +1,7 @@
 #include "CommandLine.h"
 
+#include "link/ConnectionOptions.h"
+
 #include <QCommandLineParser>
 #include <QRegularExpression>
 
@@ -66,11 +68,7 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     parser.setOptionsAfterPositionalArgumentsMode(QCommandLineParser::ParseAsOptions);
     const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
                                   QStringLiteral("help"));
-    const QCommandLineOption connect(QStringLiteral("connect"), {}, QStringLiteral("target"));
-    const QCommandLineOption protocol(QStringLiteral("protocol"), {}, QStringLiteral("name"));
-    const QCommandLineOption address(QStringLiteral("address"), {}, QStringLiteral("n"));
-    const QCommandLineOption baud(QStringLiteral("baud"), {}, QStringLiteral("n"));
-    const QCommandLineOption language(QStringLiteral("language"), {}, QStringLiteral("lang"));
+    const ConnectionOptions connection;
     const QCommandLineOption timeout(QStringLiteral("timeout"), {}, QStringLiteral("ms"));
     const QCommandLineOption quiet(QStringLiteral("quiet"), QStringLiteral("quiet"));
     const QCommandLineOption format(QStringLiteral("format"), {}, QStringLiteral("format"));
@@ -78,8 +76,8 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     const QCommandLineOption set(QStringLiteral("set"), {}, QStringLiteral("n"));
     const QCommandLineOption sets(QStringLiteral("sets"), {}, QStringLiteral("list"));
     const QCommandLineOption raw(QStringLiteral("raw"), QStringLiteral("raw"));
-    parser.addOptions({help, connect, protocol, address, baud, language, timeout, quiet, format,
-                       values, set, sets, raw});
+    connection.addTo(parser);
+    parser.addOptions({help, timeout, quiet, format, values, set, sets, raw});
     *helpText = usage();
 
     // A negative value ("write uF.07 -5") is not an option: shield such words from the parser.
@@ -103,58 +101,14 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     helpText->clear();
 
     CliRequest request;
-    if (!parser.isSet(connect)) {
-        *error = QStringLiteral("--connect is missing: give tcp:HOST:PORT, serial:DEVICE or sim");
+    if (!connection.settings(parser, &request.connection, error))
         return std::nullopt;
-    }
-    if (!request.connection.parseTarget(parser.value(connect), error))
-        return std::nullopt;
-    if (parser.isSet(protocol)) {
-        const auto p = protocolFromName(parser.value(protocol));
-        if (!p) {
-            *error = QStringLiteral("unknown protocol '%1': use hsp5, din66019ii or din66019")
-                         .arg(parser.value(protocol));
-            return std::nullopt;
-        }
-        request.connection.protocol = *p;
-    }
-    auto integer = [&](const QCommandLineOption &option, int low, int high, int *out) {
-        if (!parser.isSet(option))
-            return true;
-        bool ok = false;
-        const int n = parser.value(option).toInt(&ok);
-        if (!ok || n < low || n > high) {
-            *error = QStringLiteral("--%1 %2: expected a number from %3 to %4")
-                         .arg(option.names().constFirst(), parser.value(option))
-                         .arg(low)
-                         .arg(high);
-            return false;
-        }
-        *out = n;
-        return true;
-    };
-    int baudRate = request.connection.baudRate;
     int setNumber = -1;
-    if (!integer(address, 0, 239, &request.connection.driveAddress)
-        || !integer(baud, 50, 4000000, &baudRate) || !integer(timeout, 1, 600000, &request.timeoutMs)
-        || !integer(set, 0, 7, &setNumber))
+    if (!ConnectionOptions::integer(parser, timeout, 1, 600000, &request.timeoutMs, error)
+        || !ConnectionOptions::integer(parser, set, 0, 7, &setNumber, error))
         return std::nullopt;
-    request.connection.baudRate = baudRate;
-    request.connection.simulation.driveAddresses = {request.connection.driveAddress};
-    request.connection.simulation.baudRate = baudRate;
     if (setNumber >= 0)
         request.set = setNumber;
-    if (parser.isSet(language)) {
-        const QString lang = parser.value(language).toLower();
-        if (lang == QLatin1String("en")) {
-            request.connection.language = Language::English;
-        } else if (lang == QLatin1String("de")) {
-            request.connection.language = Language::German;
-        } else {
-            *error = QStringLiteral("unknown language '%1': use en or de").arg(lang);
-            return std::nullopt;
-        }
-    }
     if (parser.isSet(format)) {
         const QString f = parser.value(format).toLower();
         if (f != QLatin1String("json") && f != QLatin1String("table")) {

@@ -1,0 +1,85 @@
+#include "ConnectionOptions.h"
+
+namespace DriveDesk {
+
+void ConnectionOptions::addTo(QCommandLineParser &parser) const
+{
+    parser.addOptions({m_connect, m_protocol, m_address, m_baud, m_language});
+}
+
+bool ConnectionOptions::hasTargetDetails(const QCommandLineParser &parser) const
+{
+    return parser.isSet(m_protocol) || parser.isSet(m_address) || parser.isSet(m_baud);
+}
+
+bool ConnectionOptions::integer(const QCommandLineParser &parser, const QCommandLineOption &option,
+                                int low, int high, int *value, QString *error)
+{
+    if (!parser.isSet(option))
+        return true;
+    bool ok = false;
+    const int n = parser.value(option).toInt(&ok);
+    if (!ok || n < low || n > high) {
+        *error = tr("--%1 %2: expected a number from %3 to %4")
+                     .arg(option.names().constFirst(), parser.value(option))
+                     .arg(low)
+                     .arg(high);
+        return false;
+    }
+    *value = n;
+    return true;
+}
+
+bool ConnectionOptions::language(const QCommandLineParser &parser,
+                                 std::optional<Language> *language, QString *error) const
+{
+    if (!parser.isSet(m_language))
+        return true;
+    const QString name = parser.value(m_language).toLower();
+    if (name == QLatin1String("en")) {
+        *language = Language::English;
+    } else if (name == QLatin1String("de")) {
+        *language = Language::German;
+    } else {
+        *error = tr("unknown language \"%1\": use en or de").arg(name);
+        return false;
+    }
+    return true;
+}
+
+bool ConnectionOptions::settings(const QCommandLineParser &parser, ConnectionSettings *settings,
+                                 QString *error) const
+{
+    ConnectionSettings result;
+    if (!parser.isSet(m_connect)) {
+        *error = tr("--connect is missing: give tcp:HOST:PORT, serial:DEVICE or sim");
+        return false;
+    }
+    if (!result.parseTarget(parser.value(m_connect), error))
+        return false;
+    if (parser.isSet(m_protocol)) {
+        const auto protocol = protocolFromName(parser.value(m_protocol));
+        if (!protocol) {
+            *error = tr("unknown protocol \"%1\": use hsp5, din66019ii or din66019")
+                         .arg(parser.value(m_protocol));
+            return false;
+        }
+        result.protocol = *protocol;
+    }
+    int baudRate = result.baudRate;
+    if (!integer(parser, m_address, 0, 239, &result.driveAddress, error)
+        || !integer(parser, m_baud, 50, 4000000, &baudRate, error))
+        return false;
+    result.baudRate = baudRate;
+    // The simulated drive answers where the options say a drive is.
+    result.simulation.driveAddresses = {result.driveAddress};
+    result.simulation.baudRate = baudRate;
+    std::optional<Language> chosen;
+    if (!language(parser, &chosen, error))
+        return false;
+    result.language = chosen.value_or(Language::English);
+    *settings = result;
+    return true;
+}
+
+} // namespace DriveDesk
