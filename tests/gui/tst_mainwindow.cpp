@@ -3,6 +3,7 @@
 #include "main/NoticeBar.h"
 #include "main/RecentConnections.h"
 
+#include <QAbstractItemModelTester>
 #include <QAction>
 #include <QCheckBox>
 #include <QHeaderView>
@@ -10,6 +11,7 @@
 #include <QLineEdit>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSignalSpy>
 #include <QStatusBar>
 
 #include <memory>
@@ -34,11 +36,10 @@ private:
 
     void clickGroup(const QString &text)
     {
-        QTreeWidget *tree = m_window->browser()->groupTree();
-        QTreeWidgetItem *item = groupItem(*m_window, text);
-        QVERIFY2(item, qPrintable(text));
-        QTest::mouseClick(tree->viewport(), Qt::LeftButton, {},
-                          tree->visualItemRect(item).center());
+        QTreeView *tree = m_window->browser()->groupTree();
+        const QModelIndex item = groupItem(*m_window, text);
+        QVERIFY2(item.isValid(), qPrintable(text));
+        QTest::mouseClick(tree->viewport(), Qt::LeftButton, {}, tree->visualRect(item).center());
     }
 
     QString rootText() const { return m_window->browser()->view()->rootIndex().data().toString(); }
@@ -63,17 +64,21 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(m_window->isReady(), kWaitMs);
         QVERIFY(!m_window->noticeBar()->isVisible());
 
-        QTreeWidget *tree = m_window->browser()->groupTree();
-        QCOMPARE(tree->topLevelItemCount(), kSimulatedGroups + 1);
-        QCOMPARE(tree->topLevelItem(0)->text(0), QStringLiteral("All parameters"));
-        QCOMPARE(tree->topLevelItem(0)->text(1), QString::number(kSimulatedParameters));
+        const QAbstractItemModel *groups = m_window->browser()->groupTree()->model();
+        const auto text = [groups](int row, int column) {
+            return groups->index(row, column).data().toString();
+        };
+        QCOMPARE(groups->rowCount(), kSimulatedGroups + 1);
+        QCOMPARE(text(0, 0), QStringLiteral("All parameters"));
+        QCOMPARE(text(0, 1), QString::number(kSimulatedParameters));
         QStringList ids;
-        for (int i = 1; i < tree->topLevelItemCount(); ++i)
-            ids << tree->topLevelItem(i)->text(0).section(QStringLiteral("  "), 0, 0);
+        for (int row = 1; row < groups->rowCount(); ++row)
+            ids << text(row, 0).section(QStringLiteral("  "), 0, 0);
         QCOMPARE(ids.mid(0, 5),
                  (QStringList { QStringLiteral("ru"), QStringLiteral("op"), QStringLiteral("Pn"),
                                 QStringLiteral("uF"), QStringLiteral("dr") }));
-        QCOMPARE(tree->topLevelItem(1)->text(0), QStringLiteral("ru  Run parameters"));
+        QCOMPARE(text(1, 0), QStringLiteral("ru  Run parameters"));
+        QCOMPARE(text(1, 1), QStringLiteral("18"));
         QCOMPARE(shownAddresses(*m_window).size(), kSimulatedParameters);
         QVERIFY(m_window->model()->value(kInverterState, 0).has_value());
 
@@ -111,6 +116,41 @@ private slots:
         QVERIFY(!view->rootIndex().isValid());
         QCOMPARE(shownAddresses(*m_window).size(), kSimulatedParameters);
         QCOMPARE(m_window->browser()->shownGroup(), QString());
+    }
+
+    // The group list is the parameter model's own group rows, kept whole through a rescan, and
+    // can be walked with the keyboard.
+    void groupListFollowsTheModelAndTheKeyboard()
+    {
+        QTreeView *tree = m_window->browser()->groupTree();
+        QAbstractItemModelTester tester(tree->model(),
+                                        QAbstractItemModelTester::FailureReportingMode::QtTest);
+        QCOMPARE(tree->model()->rowCount(), 1); // "All parameters" before any drive
+        QVERIFY(connectAndRead(*m_window, simulated()));
+        QCOMPARE(tree->model()->rowCount(), kSimulatedGroups + 1);
+
+        tree->setFocus();
+        tree->setCurrentIndex(groupItem(*m_window, QStringLiteral("All parameters")));
+        QTest::keyClick(tree, Qt::Key_Down);
+        QCOMPARE(m_window->browser()->shownGroup(), QStringLiteral("ru"));
+        QCOMPARE(rootText(), QStringLiteral("ru  Run parameters"));
+        QTest::keyClick(tree, Qt::Key_Down);
+        QCOMPARE(m_window->browser()->shownGroup(), QStringLiteral("op"));
+        QCOMPARE(tree->currentIndex().data().toString(),
+                 QStringLiteral("op  Operational parameters"));
+        QCOMPARE(tree->currentIndex().siblingAtColumn(1).data().toString(), QStringLiteral("17"));
+
+        // Reading the drive again keeps the group chosen, in the list and in the table.
+        QSignalSpy reset(m_window->model(), &QAbstractItemModel::modelReset);
+        QVERIFY(connectAndRead(*m_window, simulated()));
+        QVERIFY(!reset.isEmpty());
+        QCOMPARE(tree->currentIndex().data().toString(),
+                 QStringLiteral("op  Operational parameters"));
+        QCOMPARE(m_window->browser()->shownGroup(), QStringLiteral("op"));
+        QCOMPARE(rootText(), QStringLiteral("op  Operational parameters"));
+        QTest::keyClick(tree, Qt::Key_Home);
+        QCOMPARE(m_window->browser()->shownGroup(), QString());
+        QVERIFY(!m_window->browser()->view()->rootIndex().isValid());
     }
 
     void searchAsYouTypeLooksThroughEveryGroup()

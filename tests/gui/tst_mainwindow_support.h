@@ -12,7 +12,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QThread>
-#include <QTreeWidget>
+#include <QTreeView>
 
 // What the main window tests share: settings of their own, the simulated F5 and waiting for
 // the window to have read it.
@@ -163,11 +163,13 @@ inline QList<quint16> shownAddresses(MainWindow &window)
     return addresses;
 }
 
-inline QTreeWidgetItem *groupItem(MainWindow &window, const QString &text)
+// The row of the group list whose text starts so ("op  ", "All parameters").
+inline QModelIndex groupItem(MainWindow &window, const QString &text)
 {
-    const QList<QTreeWidgetItem *> items
-        = window.browser()->groupTree()->findItems(text, Qt::MatchStartsWith);
-    return items.isEmpty() ? nullptr : items.constFirst();
+    const QAbstractItemModel *groups = window.browser()->groupTree()->model();
+    const QModelIndexList rows = groups->match(groups->index(0, 0), Qt::DisplayRole, text, 1,
+                                               Qt::MatchStartsWith);
+    return rows.isEmpty() ? QModelIndex() : rows.constFirst();
 }
 
 } // namespace DriveDesk::MainWindowTest

@@ -1,6 +1,7 @@
 #include "ParameterBrowser.h"
 
 #include "FilterBar.h"
+#include "GroupListModel.h"
 #include "ParameterView.h"
 
 #include "delegate/ParameterDelegate.h"
@@ -15,23 +16,17 @@
 #include <QLineEdit>
 #include <QMap>
 #include <QMenu>
+#include <QScopedValueRollback>
 #include <QSplitter>
 #include <QStackedWidget>
-#include <QTreeWidget>
+#include <QTreeView>
 #include <QVBoxLayout>
 
 namespace DriveDesk {
 
 namespace {
 
-constexpr int kIdRole = Qt::UserRole + 1; // group tree: the group's id, empty for all
 constexpr quint32 kStateVersion = 1;
-
-// The group rows of the model read "ru  Run display": the id comes before the two spaces.
-QString groupIdOf(const QModelIndex &group)
-{
-    return group.data(Qt::DisplayRole).toString().section(QStringLiteral("  "), 0, 0);
-}
 
 } // namespace
 
@@ -43,15 +38,20 @@ ParameterBrowser::ParameterBrowser(ParameterModel *model, QWidget *parent)
     m_filter->setSourceModel(m_model);
     m_delegate = new ParameterDelegate(this);
 
-    m_groups = new QTreeWidget;
+    m_groupList = new GroupListModel(m_model, this);
+    m_groups = new QTreeView;
     m_groups->setObjectName(QStringLiteral("groupTree"));
-    m_groups->setColumnCount(2);
-    m_groups->setHeaderLabels({ tr("Group"), tr("Parameters") });
+    m_groups->setModel(m_groupList);
     m_groups->setRootIsDecorated(false);
+    m_groups->setItemsExpandable(false);
     m_groups->setUniformRowHeights(true);
+    m_groups->setAllColumnsShowFocus(true);
+    m_groups->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_groups->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_groups->header()->setStretchLastSection(false);
-    m_groups->header()->setSectionResizeMode(0, QHeaderView::Stretch);
-    m_groups->header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+    m_groups->header()->setSectionResizeMode(GroupListModel::GroupColumn, QHeaderView::Stretch);
+    m_groups->header()->setSectionResizeMode(GroupListModel::CountColumn,
+                                             QHeaderView::ResizeToContents);
 
     m_view = new ParameterView;
     m_view->setModel(m_filter);
@@ -100,7 +100,8 @@ ParameterBrowser::ParameterBrowser(ParameterModel *model, QWidget *parent)
     layout->addWidget(m_splitter);
 
     connect(m_model, &QAbstractItemModel::modelReset, this, &ParameterBrowser::rebuildGroups);
-    connect(m_groups, &QTreeWidget::currentItemChanged, this, &ParameterBrowser::onGroupSelected);
+    connect(m_groups->selectionModel(), &QItemSelectionModel::currentChanged, this,
+            &ParameterBrowser::onGroupSelected);
     connect(searchField(), &QLineEdit::textChanged, this, [this](const QString &text) {
         m_filter->setFilterText(text);
         applyScope();
@@ -167,55 +168,60 @@ QAction *ParameterBrowser::rawValuesAction() const
 
 void ParameterBrowser::rebuildGroups()
 {
-    const QSignalBlocker blocker(m_groups);
-    m_groups->clear();
-    auto *all = new QTreeWidgetItem(m_groups, { tr("All parameters"), {} });
-    all->setData(0, kIdRole, QString());
-    QFont bold = all->font(0);
-    bold.setBold(true);
-    all->setFont(0, bold);
-    int total = 0;
-    QTreeWidgetItem *current = all;
+    m_groupAddresses.clear();
+    const DriveDescription drive = m_model->description();
+    for (const GroupDescription &group : drive.groups)
+        m_groupAddresses.insert(group.id, group.address);
     // The group shown before, or the one asked for before the drive was read.
     const QString wanted = m_pendingGroup.isEmpty() ? m_groupId : m_pendingGroup;
+    const QModelIndex current = m_groupList->rowOf(sourceGroupOf(wanted));
+    {
+        const QScopedValueRollback rebuilding(m_rebuilding, true);
+        m_groups->setCurrentIndex(current);
+    }
+    m_groupId = groupIdOf(m_groupList->sourceGroup(current));
+    // Cleared for a new scan: the same group comes back once the drive has been read again.
+    m_pendingGroup = m_model->rowCount() > 0 ? QString() : wanted;
+    applyScope();
+}
+
+QString ParameterBrowser::groupIdOf(const QModelIndex &group) const
+{
+    if (!group.isValid() || !group.data(ParameterModel::IsGroupRole).toBool())
+        return {};
+    return m_groupAddresses.key(group.data(ParameterModel::AddressRole).value<quint16>());
+}
+
+QModelIndex ParameterBrowser::sourceGroupOf(const QString &groupId) const
+{
+    const auto address = m_groupAddresses.constFind(groupId);
+    if (groupId.isEmpty() || address == m_groupAddresses.constEnd())
+        return {};
     for (int row = 0; row < m_model->rowCount(); ++row) {
         const QModelIndex group = m_model->index(row, 0);
-        const int count = m_model->rowCount(group);
-        total += count;
-        auto *item = new QTreeWidgetItem(
-            m_groups, { group.data(Qt::DisplayRole).toString(), QString::number(count) });
-        item->setData(0, kIdRole, groupIdOf(group));
-        item->setToolTip(0, group.data(Qt::ToolTipRole).toString());
-        item->setTextAlignment(1, Qt::AlignRight | Qt::AlignVCenter);
-        if (groupIdOf(group) == wanted)
-            current = item;
+        if (group.data(ParameterModel::AddressRole).value<quint16>() == *address)
+            return group;
     }
-    all->setText(1, QString::number(total));
-    all->setTextAlignment(1, Qt::AlignRight | Qt::AlignVCenter);
-    m_groups->setCurrentItem(current);
-    m_groupId = current->data(0, kIdRole).toString();
-    if (m_model->rowCount() > 0)
-        m_pendingGroup.clear();
-    applyScope();
+    return {};
 }
 
 bool ParameterBrowser::showGroup(const QString &groupId)
 {
-    for (int i = 0; i < m_groups->topLevelItemCount(); ++i) {
-        QTreeWidgetItem *item = m_groups->topLevelItem(i);
-        if (item->data(0, kIdRole).toString() == groupId) {
-            m_groups->setCurrentItem(item);
-            onGroupSelected();
-            return true;
-        }
-    }
-    return false;
+    const QModelIndex group = sourceGroupOf(groupId);
+    if (!groupId.isEmpty() && !group.isValid())
+        return false;
+    m_groups->setCurrentIndex(m_groupList->rowOf(group));
+    onGroupSelected();
+    return true;
 }
 
 void ParameterBrowser::onGroupSelected()
 {
-    const QTreeWidgetItem *item = m_groups->currentItem();
-    m_groupId = item ? item->data(0, kIdRole).toString() : QString();
+    const QModelIndex current = m_groups->currentIndex();
+    // While rebuilding, or while the list is reset, the current row says nothing.
+    if (m_rebuilding || !current.isValid())
+        return;
+    m_groupId = groupIdOf(m_groupList->sourceGroup(current));
     m_pendingGroup.clear();
     applyScope();
 }
@@ -224,13 +230,8 @@ void ParameterBrowser::applyScope()
 {
     const bool searching = !m_filter->filterText().trimmed().isEmpty();
     QModelIndex sourceGroup;
-    if (!searching && !m_groupId.isEmpty()) {
-        for (int row = 0; row < m_model->rowCount() && !sourceGroup.isValid(); ++row) {
-            const QModelIndex group = m_model->index(row, 0);
-            if (groupIdOf(group) == m_groupId)
-                sourceGroup = group;
-        }
-    }
+    if (!searching)
+        sourceGroup = sourceGroupOf(m_groupId);
     QString title;
     if (sourceGroup.isValid()) {
         m_root = m_filter->mapFromSource(sourceGroup);

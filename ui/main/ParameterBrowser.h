@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QHash>
 #include <QPersistentModelIndex>
 #include <QWidget>
 
@@ -8,11 +9,12 @@ class QLabel;
 class QLineEdit;
 class QSplitter;
 class QStackedWidget;
-class QTreeWidget;
+class QTreeView;
 
 namespace DriveDesk {
 
 class FilterBar;
+class GroupListModel;
 class ParameterDelegate;
 class ParameterFilterModel;
 class ParameterModel;
@@ -34,7 +36,8 @@ public:
     ParameterDelegate *delegate() const { return m_delegate; }
     FilterBar *filterBar() const { return m_filterBar; }
     QLineEdit *searchField() const;
-    QTreeWidget *groupTree() const { return m_groups; }
+    QTreeView *groupTree() const { return m_groups; }
+    GroupListModel *groupModel() const { return m_groupList; }
     QSplitter *splitter() const { return m_splitter; }
 
     // Checkable actions for the menus, in step with the check boxes above the table.
@@ -67,6 +70,10 @@ public:
 private:
     void rebuildGroups();
     void onGroupSelected();
+    // A group row of the parameter or filter model -> its id, by the group's address.
+    QString groupIdOf(const QModelIndex &group) const;
+    // The group's row in the parameter model; invalid for an empty or unknown id.
+    QModelIndex sourceGroupOf(const QString &groupId) const;
     void applyScope();
     void followFilter();
     // One group fills the table (no search overrides it).
@@ -79,7 +86,8 @@ private:
     ParameterFilterModel *m_filter = nullptr;
     ParameterDelegate *m_delegate = nullptr;
     ParameterView *m_view = nullptr;
-    QTreeWidget *m_groups = nullptr;
+    QTreeView *m_groups = nullptr;
+    GroupListModel *m_groupList = nullptr;
     QSplitter *m_splitter = nullptr;
     FilterBar *m_filterBar = nullptr;
     QLabel *m_scope = nullptr;
@@ -91,6 +99,8 @@ private:
     QString m_emptyText;
     QString m_pendingGroup; // to show once the drive has been read (restored state)
     QPersistentModelIndex m_root; // the shown group in the filter model
+    QHash<QString, quint16> m_groupAddresses; // group id -> address, from the description
+    bool m_rebuilding = false; // the list's current row is being set from m_groupId
 };
 
 } // namespace DriveDesk

@@ -5,6 +5,7 @@ target_sources(drivedesk_ui PRIVATE
     main/DriveSession.cpp main/DriveSession.h
     main/FilterBar.cpp main/FilterBar.h
     main/FindDrivesDialog.cpp main/FindDrivesDialog.h
+    main/GroupListModel.cpp main/GroupListModel.h
     main/MainWindow.cpp main/MainWindowActions.cpp main/MainWindowCommands.cpp main/MainWindow.h
     main/NoticeBar.cpp main/NoticeBar.h
     main/ParameterBrowser.cpp main/ParameterBrowser.h
