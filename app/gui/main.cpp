@@ -4,6 +4,8 @@
 #include "main/StartupOptions.h"
 
 #include <QApplication>
+#include <QLibraryInfo>
+#include <QLocale>
 #include <QTimer>
 #include <QTranslator>
 
@@ -28,11 +30,18 @@ int main(int argc, char **argv)
     }
 
     const DriveDesk::Language language = options.uiLanguage();
+    const bool german = language == DriveDesk::Language::German;
+    // Qt's own dialogs and buttons, then ours; English has a catalogue too, for its plurals.
+    QTranslator qtTranslator;
+    if (german
+        && qtTranslator.load(QLocale(QLocale::German), QStringLiteral("qtbase"),
+                             QStringLiteral("_"), QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+        QApplication::installTranslator(&qtTranslator);
     QTranslator translator;
-    // Without the German catalogue the window stays English; the drive's texts are German still.
-    if (language == DriveDesk::Language::German
-        && translator.load(QStringLiteral(":/i18n/drivedesk_de.qm")))
+    if (translator.load(german ? QStringLiteral(":/i18n/drivedesk_de.qm")
+                               : QStringLiteral(":/i18n/drivedesk_en.qm")))
         QApplication::installTranslator(&translator);
+    QLocale::setDefault(QLocale(german ? QLocale::German : QLocale::English));
 
     DriveDesk::MainWindow window(language);
     window.show();

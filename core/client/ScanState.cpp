@@ -41,8 +41,9 @@ QString summary(const QStringList &problems)
 {
     if (problems.size() == 1)
         return problems.first();
-    return QCoreApplication::translate("DriveDesk::DriveScanner", "%1 (and %n more)", nullptr,
-                                       int(problems.size() - 1))
+    // A named count: lupdate hangs on a cast such as int(...) in translate()'s count argument.
+    const int more = int(problems.size()) - 1;
+    return QCoreApplication::translate("DriveDesk::DriveScanner", "%1 (and %n more)", nullptr, more)
         .arg(problems.first());
 }
 

@@ -8,10 +8,11 @@ namespace DriveDesk {
 
 namespace {
 
-QString tr(const char *text)
+// The translation context of this file's messages: ConnectionSettings is a plain value type.
+class ConnectionSettingsText
 {
-    return QCoreApplication::translate("DriveDesk::ConnectionSettings", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(ConnectionSettingsText)
+};
 
 bool isDin(Protocol protocol)
 {
@@ -36,7 +37,8 @@ bool splitHostPort(const QString &text, QString *host, quint16 *port, QString *e
     if (text.startsWith(QLatin1Char('['))) {
         const qsizetype close = text.indexOf(QLatin1Char(']'));
         if (close < 0 || text.mid(close + 1, 1) != QLatin1String(":")) {
-            *error = tr("\"%1\" is not HOST:PORT (an IPv6 address is written [ADDRESS]:PORT)")
+            *error = ConnectionSettingsText::tr(
+                         "\"%1\" is not HOST:PORT (an IPv6 address is written [ADDRESS]:PORT)")
                          .arg(text);
             return false;
         }
@@ -45,20 +47,22 @@ bool splitHostPort(const QString &text, QString *host, quint16 *port, QString *e
     } else {
         const qsizetype colon = text.lastIndexOf(QLatin1Char(':'));
         if (colon < 0) {
-            *error = tr("\"%1\" has no port: write tcp:HOST:PORT").arg(text);
+            *error
+                = ConnectionSettingsText::tr("\"%1\" has no port: write tcp:HOST:PORT").arg(text);
             return false;
         }
         hostPart = text.left(colon);
         portPart = text.mid(colon + 1);
     }
     if (hostPart.isEmpty()) {
-        *error = tr("the host is missing in \"%1\": write tcp:HOST:PORT").arg(text);
+        *error = ConnectionSettingsText::tr("the host is missing in \"%1\": write tcp:HOST:PORT")
+                     .arg(text);
         return false;
     }
     bool ok = false;
     const uint number = portPart.toUInt(&ok);
     if (!ok || number < 1 || number > 65535) {
-        *error = tr("\"%1\" is not a TCP port (1..65535)").arg(portPart);
+        *error = ConnectionSettingsText::tr("\"%1\" is not a TCP port (1..65535)").arg(portPart);
         return false;
     }
     *host = hostPart;
@@ -96,7 +100,8 @@ bool ConnectionSettings::parseTarget(const QString &target, QString *error)
 
     if (scheme == QLatin1String("sim") || scheme == QLatin1String("simulated")) {
         if (!rest.isEmpty()) {
-            message = tr("\"%1\": the simulated drive takes no further address (write sim)")
+            message = ConnectionSettingsText::tr(
+                          "\"%1\": the simulated drive takes no further address (write sim)")
                           .arg(target);
             return false;
         }
@@ -115,7 +120,8 @@ bool ConnectionSettings::parseTarget(const QString &target, QString *error)
     }
     if (scheme == QLatin1String("serial")) {
         if (rest.isEmpty()) {
-            message = tr("\"%1\" names no serial device: write serial:/dev/ttyUSB0 or serial:COM3")
+            message = ConnectionSettingsText::tr(
+                          "\"%1\" names no serial device: write serial:/dev/ttyUSB0 or serial:COM3")
                           .arg(target);
             return false;
         }
@@ -123,7 +129,8 @@ bool ConnectionSettings::parseTarget(const QString &target, QString *error)
         device = rest;
         return true;
     }
-    message = tr("unknown connection \"%1\": expected tcp:HOST:PORT, serial:DEVICE or sim")
+    message = ConnectionSettingsText::tr(
+                  "unknown connection \"%1\": expected tcp:HOST:PORT, serial:DEVICE or sim")
                   .arg(target);
     return false;
 }
@@ -145,15 +152,17 @@ QString ConnectionSettings::displayName() const
 {
     QString what = protocolTitle(protocol);
     if (isDin(protocol) && kind != Kind::Simulated)
-        what += tr(" drive %1").arg(driveAddress);
+        what += ConnectionSettingsText::tr(" drive %1").arg(driveAddress);
     switch (kind) {
-    case Kind::Simulated: return tr("simulated %1 drive").arg(what);
+    case Kind::Simulated:
+        return ConnectionSettingsText::tr("simulated %1 drive").arg(what);
     case Kind::Serial:
-        return tr("%1 on %2 (%3 %4)")
+        return ConnectionSettingsText::tr("%1 on %2 (%3 %4)")
             .arg(what, device)
             .arg(baudRate)
             .arg(characterFormatName(effectiveDataBits(), effectiveParity(), effectiveStopBits()));
-    case Kind::Tcp: return tr("%1 via %2").arg(what, target().mid(4));
+    case Kind::Tcp:
+        return ConnectionSettingsText::tr("%1 via %2").arg(what, target().mid(4));
     }
     return what;
 }

@@ -6,22 +6,13 @@
 
 namespace DriveDesk {
 
-namespace {
-
-QString tr(const char *text)
-{
-    return ParameterDocument::tr(text);
-}
-
-} // namespace
-
 JsonObjectReader JsonObjectReader::element(const QString &key, const QJsonArray &array,
                                            qsizetype index)
 {
     const QString where = indexed(place(key), index);
     const QJsonValue json = array.at(index);
     if (!json.isObject())
-        fail(where, tr("expected an object"));
+        fail(where, ParameterDocument::tr("expected an object"));
     return JsonObjectReader(json.toObject(), where, m_error);
 }
 
@@ -45,7 +36,7 @@ QJsonValue JsonObjectReader::value(const QString &key)
 {
     m_read.insert(key);
     if (!m_object.contains(key)) {
-        fail(place(key), tr("missing"));
+        fail(place(key), ParameterDocument::tr("missing"));
         return {};
     }
     return m_object.value(key);
@@ -65,12 +56,13 @@ std::optional<qint64> JsonObjectReader::checkedInteger(const QJsonValue &json, c
     const double number = json.toDouble();
     if (!json.isDouble() || !std::isfinite(number) || std::trunc(number) != number
         || std::fabs(number) > 9.0e18) {
-        fail(where, tr("expected an integer"));
+        fail(where, ParameterDocument::tr("expected an integer"));
         return std::nullopt;
     }
     const qint64 integer = json.toInteger();
     if (integer < minimum || integer > maximum) {
-        fail(where, tr("%1 is outside %2..%3").arg(integer).arg(minimum).arg(maximum));
+        fail(where,
+             ParameterDocument::tr("%1 is outside %2..%3").arg(integer).arg(minimum).arg(maximum));
         return std::nullopt;
     }
     return integer;
@@ -80,7 +72,7 @@ QString JsonObjectReader::string(const QString &key)
 {
     const QJsonValue json = value(key);
     if (ok() && !json.isString())
-        fail(place(key), tr("expected a string"));
+        fail(place(key), ParameterDocument::tr("expected a string"));
     return json.toString();
 }
 
@@ -88,7 +80,7 @@ bool JsonObjectReader::boolean(const QString &key)
 {
     const QJsonValue json = value(key);
     if (ok() && !json.isBool())
-        fail(place(key), tr("expected true or false"));
+        fail(place(key), ParameterDocument::tr("expected true or false"));
     return json.toBool();
 }
 
@@ -96,7 +88,7 @@ QJsonArray JsonObjectReader::array(const QString &key)
 {
     const QJsonValue json = value(key);
     if (ok() && !json.isArray())
-        fail(place(key), tr("expected an array"));
+        fail(place(key), ParameterDocument::tr("expected an array"));
     return json.toArray();
 }
 
@@ -104,7 +96,7 @@ QJsonObject JsonObjectReader::object(const QString &key)
 {
     const QJsonValue json = value(key);
     if (ok() && !json.isObject())
-        fail(place(key), tr("expected an object"));
+        fail(place(key), ParameterDocument::tr("expected an object"));
     return json.toObject();
 }
 
@@ -112,7 +104,7 @@ void JsonObjectReader::finish()
 {
     for (auto it = m_object.constBegin(); it != m_object.constEnd(); ++it) {
         if (!m_read.contains(it.key()))
-            fail(place(it.key()), tr("unknown field"));
+            fail(place(it.key()), ParameterDocument::tr("unknown field"));
     }
 }
 

@@ -20,11 +20,6 @@ namespace {
 constexpr qint64 kInt32Min = std::numeric_limits<qint32>::min();
 constexpr qint64 kInt32Max = std::numeric_limits<qint32>::max();
 
-QString tr(const char *text)
-{
-    return ParameterDocument::tr(text);
-}
-
 QString onOff(bool value)
 {
     return value ? QStringLiteral("true") : QStringLiteral("false");
@@ -45,7 +40,7 @@ void checkDerived(JsonObjectReader &reader, const ParameterDescription &paramete
             reader.fail(reader.place(QStringLiteral("id")), why);
         else if (reader.ok() && *address != parameter.address)
             reader.fail(reader.place(QStringLiteral("id")),
-                        tr("'%1' names %2, not the address %3")
+                        ParameterDocument::tr("'%1' names %2, not the address %3")
                             .arg(id, ParameterId::hexAddress(*address),
                                  ParameterId::hexAddress(parameter.address)));
     }
@@ -53,7 +48,7 @@ void checkDerived(JsonObjectReader &reader, const ParameterDescription &paramete
         const QString unit = reader.string(QStringLiteral("unit"));
         if (reader.ok() && unit != scaling.unitSymbol())
             reader.fail(reader.place(QStringLiteral("unit")),
-                        tr("'%1' does not agree with scaling.flags (unit '%2')")
+                        ParameterDocument::tr("'%1' does not agree with scaling.flags (unit '%2')")
                             .arg(unit, scaling.unitSymbol()));
     }
     if (reader.has(QStringLiteral("decimals"))) {
@@ -61,21 +56,23 @@ void checkDerived(JsonObjectReader &reader, const ParameterDescription &paramete
             = reader.integer(QStringLiteral("decimals"), 0, DisplayScaling::kMaxDecimals);
         if (reader.ok() && decimals != scaling.decimals())
             reader.fail(reader.place(QStringLiteral("decimals")),
-                        tr("%1 does not agree with scaling.flags (%2 decimals)")
-                            .arg(decimals)
-                            .arg(scaling.decimals()));
+                        ParameterDocument::tr("%1 does not agree with scaling.flags (%n decimals)",
+                                              nullptr, scaling.decimals())
+                            .arg(decimals));
     }
     if (reader.has(QStringLiteral("setProgrammable"))) {
         const bool set = reader.boolean(QStringLiteral("setProgrammable"));
         if (reader.ok() && set != properties.isSetProgrammable())
-            reader.fail(reader.place(QStringLiteral("setProgrammable")),
-                        tr("%1 does not agree with properties1 bit 11").arg(onOff(set)));
+            reader.fail(
+                reader.place(QStringLiteral("setProgrammable")),
+                ParameterDocument::tr("%1 does not agree with properties1 bit 11").arg(onOff(set)));
     }
     if (reader.has(QStringLiteral("readOnly"))) {
         const bool readOnly = reader.boolean(QStringLiteral("readOnly"));
         if (reader.ok() && readOnly != properties.isReadOnly())
             reader.fail(reader.place(QStringLiteral("readOnly")),
-                        tr("%1 does not agree with properties2 bit 3").arg(onOff(readOnly)));
+                        ParameterDocument::tr("%1 does not agree with properties2 bit 3")
+                            .arg(onOff(readOnly)));
     }
 }
 
@@ -89,10 +86,11 @@ void readValues(JsonObjectReader &reader, ParameterDescription &parameter)
     if (values.size() != kParameterSets && (setProgrammable || values.size() != 1)) {
         reader.fail(reader.place(key),
                     setProgrammable
-                        ? tr("%1 entries; a set-programmable parameter has one for each of "
-                             "the 8 sets")
-                              .arg(values.size())
-                        : tr("%1 entries; expected 1 (or 8, one for each set)").arg(values.size()));
+                        ? ParameterDocument::tr("%n entries; a set-programmable parameter has one "
+                                                "for each of the 8 sets",
+                                                nullptr, int(values.size()))
+                        : ParameterDocument::tr("%n entries; expected 1 (or 8, one for each set)",
+                                                nullptr, int(values.size())));
         return;
     }
     for (qsizetype set = 0; set < values.size() && reader.ok(); ++set) {
@@ -129,9 +127,9 @@ void readPlaintexts(JsonObjectReader &reader, ParameterDescription &parameter)
         fields.finish();
         if (fields.ok() && definition >= parameter.plaintexts.size()) {
             fields.fail(fields.place(QStringLiteral("definition")),
-                        tr("%1, but plaintextDefinitions has %2 entries")
-                            .arg(definition)
-                            .arg(parameter.plaintexts.size()));
+                        ParameterDocument::tr("%1, but plaintextDefinitions has %n entries",
+                                              nullptr, int(parameter.plaintexts.size()))
+                            .arg(definition));
         }
         if (fields.ok())
             parameter.plaintexts[definition].entries.append(entry);
@@ -154,7 +152,7 @@ ParameterDescription readParameter(JsonObjectReader &reader, const GroupDescript
         return parameter;
     if ((parameter.address & 0xFF00) != (group.address & 0xFF00)) {
         reader.fail(reader.place(QStringLiteral("address")),
-                    tr("%1 is not in group %2 (%3)")
+                    ParameterDocument::tr("%1 is not in group %2 (%3)")
                         .arg(ParameterId::hexAddress(parameter.address), group.id,
                              ParameterId::hexAddress(group.address)));
         return parameter;
@@ -209,7 +207,7 @@ GroupDescription readGroupHeader(JsonObjectReader &reader)
     if (reader.ok()
         && (shortcut.size() > 1 || (shortcut.size() == 1 && shortcut.at(0).unicode() > 0xFF)))
         reader.fail(reader.place(QStringLiteral("shortcut")),
-                    tr("'%1' is not one Latin-1 character").arg(shortcut));
+                    ParameterDocument::tr("'%1' is not one Latin-1 character").arg(shortcut));
     group.shortcut = shortcut.isEmpty() ? 0 : char(shortcut.at(0).unicode());
     group.properties = quint16(reader.integer(QStringLiteral("properties"), 0, 0xFFFF));
     group.highestNumber = quint8(reader.integer(QStringLiteral("highestNumber"), 0, 0xFF));
@@ -245,10 +243,10 @@ bool readGroups(JsonObjectReader &root, DriveDescription &drive)
         for (const GroupDescription &other : std::as_const(drive.groups)) {
             if (other.id == group.id)
                 reader.fail(reader.place(QStringLiteral("id")),
-                            tr("'%1' appears twice").arg(group.id));
+                            ParameterDocument::tr("'%1' appears twice").arg(group.id));
             else if (other.address == group.address)
                 reader.fail(reader.place(QStringLiteral("address")),
-                            tr("%1 is also the address of group %2")
+                            ParameterDocument::tr("%1 is also the address of group %2")
                                 .arg(ParameterId::hexAddress(group.address), other.id));
         }
         addresses.append({ group.id, group.address });
@@ -266,7 +264,8 @@ bool readGroups(JsonObjectReader &root, DriveDescription &drive)
             ParameterDescription parameter = readParameter(fields, group, addresses);
             if (fields.ok() && seen.contains(parameter.address))
                 fields.fail(fields.place(QStringLiteral("address")),
-                            tr("%1 appears twice").arg(ParameterId::hexAddress(parameter.address)));
+                            ParameterDocument::tr("%1 appears twice")
+                                .arg(ParameterId::hexAddress(parameter.address)));
             seen.insert(parameter.address);
             group.parameters.append(parameter);
         }
@@ -292,29 +291,32 @@ std::optional<DriveDescription> ParameterDocument::fromJson(const QByteArray &js
         const QByteArray before = json.left(parseError.offset);
         const qsizetype line = before.count('\n') + 1;
         const qsizetype column = parseError.offset - (before.lastIndexOf('\n') + 1) + 1;
-        return fail(tr("not valid JSON: %1 at line %2, column %3")
+        return fail(ParameterDocument::tr("not valid JSON: %1 at line %2, column %3")
                         .arg(parseError.errorString())
                         .arg(line)
                         .arg(column));
     }
     if (!document.isObject())
-        return fail(tr("not a DriveDesk parameter file: the document is not a JSON object"));
+        return fail(ParameterDocument::tr(
+            "not a DriveDesk parameter file: the document is not a JSON object"));
 
     JsonObjectReader root(document.object(), QString(), &fault);
     const QJsonValue format = root.value(QStringLiteral("format"));
     if (!root.ok() || format.toString() != kFormat) {
-        return fail(tr("not a DriveDesk parameter file: format is %1, expected '%2'")
-                        .arg(format.isString() ? QStringLiteral("'%1'").arg(format.toString())
-                                               : tr("missing or not a string"),
-                             kFormat));
+        return fail(
+            ParameterDocument::tr("not a DriveDesk parameter file: format is %1, expected '%2'")
+                .arg(format.isString() ? QStringLiteral("'%1'").arg(format.toString())
+                                       : ParameterDocument::tr("missing or not a string"),
+                     kFormat));
     }
     const QJsonValue version = root.value(QStringLiteral("version"));
     if (!version.isDouble())
-        return fail(tr("version: missing or not a number"));
+        return fail(ParameterDocument::tr("version: missing or not a number"));
     if (version.toDouble() != kVersion) {
-        return fail(tr("version: %1 is not supported (this DriveDesk reads version %2)")
-                        .arg(version.toDouble())
-                        .arg(kVersion));
+        return fail(
+            ParameterDocument::tr("version: %1 is not supported (this DriveDesk reads version %2)")
+                .arg(version.toDouble())
+                .arg(kVersion));
     }
 
     DriveDescription drive;

@@ -10,7 +10,7 @@ if(TARGET drivedesk_ui)
         SOURCES gui/tst_parameterdelegate.cpp gui/GuiTestDrive.h LIBS drivedesk_ui)
 endif()
 
-foreach(area main edit monitor)
+foreach(area main edit monitor i18n)
     if(EXISTS ${CMAKE_CURRENT_LIST_DIR}/${area}.cmake)
         include(${CMAKE_CURRENT_LIST_DIR}/${area}.cmake)
     endif()

@@ -1,0 +1,280 @@
+#include "edit/EditController.h"
+#include "link/ConnectionSettings.h"
+#include "model/ParameterModel.h"
+#include "monitor/TrafficFormat.h"
+#include "parameters/ParameterDocument.h"
+#include "parameters/ParameterId.h"
+
+#include <QFile>
+#include <QRegularExpression>
+#include <QSet>
+#include <QSignalSpy>
+#include <QTest>
+#include <QTranslator>
+#include <QUndoStack>
+#include <QXmlStreamReader>
+
+using namespace DriveDesk;
+
+namespace {
+
+// One <message> of a Qt Linguist file.
+struct CatalogueEntry
+{
+    QString context;
+    QString source;
+    QString comment;
+    QString translationType; // "", "unfinished", "vanished" or "obsolete"
+    QStringList forms;       // the translation, or its numerus forms
+    bool numerus = false;
+
+    QString key() const { return context + QLatin1Char('|') + source + QLatin1Char('|') + comment; }
+};
+
+struct Catalogue
+{
+    QString language;
+    QList<CatalogueEntry> entries;
+    QString error;
+};
+
+Catalogue readCatalogue(const QString &path)
+{
+    Catalogue catalogue;
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        catalogue.error = QStringLiteral("cannot read %1: %2").arg(path, file.errorString());
+        return catalogue;
+    }
+    QXmlStreamReader xml(&file);
+    QString context;
+    CatalogueEntry entry;
+    while (!xml.atEnd()) {
+        xml.readNext();
+        if (xml.isStartElement()) {
+            const auto name = xml.name();
+            if (name == QLatin1String("TS")) {
+                catalogue.language = xml.attributes().value(QLatin1String("language")).toString();
+            } else if (name == QLatin1String("name")) {
+                context = xml.readElementText();
+            } else if (name == QLatin1String("message")) {
+                entry = CatalogueEntry();
+                entry.context = context;
+                entry.numerus = xml.attributes().value(QLatin1String("numerus"))
+                                == QLatin1String("yes");
+            } else if (name == QLatin1String("source")) {
+                entry.source = xml.readElementText();
+            } else if (name == QLatin1String("comment")) {
+                entry.comment = xml.readElementText();
+            } else if (name == QLatin1String("translation")) {
+                entry.translationType = xml.attributes().value(QLatin1String("type")).toString();
+                if (!entry.numerus)
+                    entry.forms << xml.readElementText();
+            } else if (name == QLatin1String("numerusform")) {
+                entry.forms << xml.readElementText();
+            }
+        } else if (xml.isEndElement() && xml.name() == QLatin1String("message")) {
+            catalogue.entries << entry;
+        }
+    }
+    if (xml.hasError())
+        catalogue.error = QStringLiteral("%1: %2 at line %3")
+                              .arg(path, xml.errorString())
+                              .arg(xml.lineNumber());
+    return catalogue;
+}
+
+// %1..%99, %n and %Ln: what a translation must keep for arg() and the count to land.
+QSet<QString> placeholders(const QString &text)
+{
+    static const QRegularExpression pattern(QStringLiteral("%(L?n|[1-9][0-9]?)"));
+    QSet<QString> found;
+    for (auto it = pattern.globalMatch(text); it.hasNext();)
+        found.insert(it.next().captured());
+    return found;
+}
+
+// How many keyboard accelerators ("&File"; not "&&" nor a lone "& ") a text holds.
+int accelerators(const QString &text)
+{
+    int count = 0;
+    for (qsizetype i = 0; i + 1 < text.size(); ++i) {
+        if (text.at(i) != QLatin1Char('&'))
+            continue;
+        if (text.at(i + 1) == QLatin1Char('&'))
+            ++i;
+        else if (!text.at(i + 1).isSpace())
+            ++count;
+    }
+    return count;
+}
+
+// Every way an entry falls short of a finished translation, in words.
+QStringList problemsOf(const CatalogueEntry &entry)
+{
+    QStringList problems;
+    if (!entry.translationType.isEmpty())
+        problems << entry.translationType;
+    if (entry.numerus && entry.forms.size() != 2)
+        problems << QStringLiteral("%1 numerus forms, expected 2").arg(entry.forms.size());
+    for (const QString &form : entry.forms) {
+        if (form.isEmpty()) {
+            problems << QStringLiteral("empty translation");
+            continue;
+        }
+        if (placeholders(form) != placeholders(entry.source))
+            problems << QStringLiteral("placeholders differ in \"%1\"").arg(form);
+        if (accelerators(form) != accelerators(entry.source))
+            problems << QStringLiteral("accelerators differ in \"%1\"").arg(form);
+    }
+    return problems;
+}
+
+QString catalogueFile(const char *name)
+{
+    return QStringLiteral(DRIVEDESK_TRANSLATIONS_DIR "/") + QLatin1String(name);
+}
+
+} // namespace
+
+// The German and English catalogues: drivedesk's resource path loads them, the window's and the
+// core's texts come out German, counts take the right form, and no entry is left unfinished.
+class TestTranslations : public QObject
+{
+    Q_OBJECT
+private slots:
+    void initTestCase()
+    {
+        QVERIFY(m_german.load(QStringLiteral(":/i18n/drivedesk_de.qm")));
+        QVERIFY(m_german.language().startsWith(QLatin1String("de")));
+        QVERIFY(m_english.load(QStringLiteral(":/i18n/drivedesk_en.qm")));
+        QVERIFY(QCoreApplication::installTranslator(&m_german));
+    }
+
+    void cleanupTestCase() { QCoreApplication::removeTranslator(&m_german); }
+
+    void monitorColumnsAreGerman()
+    {
+        QCOMPARE(TrafficFormat::fieldName(TrafficFormat::Time), QStringLiteral("Zeit"));
+        QCOMPARE(TrafficFormat::fieldName(TrafficFormat::Direction), QStringLiteral("Richtung"));
+        QCOMPARE(TrafficFormat::fieldName(TrafficFormat::Meaning), QStringLiteral("Bedeutung"));
+        QCOMPARE(TrafficFormat::direction(TrafficRecord::Kind::Error), QStringLiteral("Fehler"));
+    }
+
+    void parameterColumnsAreGerman()
+    {
+        ParameterModel model;
+        const auto header = [&model](int column) {
+            return model.headerData(column, Qt::Horizontal).toString();
+        };
+        QCOMPARE(header(ParameterModel::DefaultColumn), QStringLiteral("Vorgabewert"));
+        QCOMPARE(header(ParameterModel::UnitColumn), QStringLiteral("Einheit"));
+        QCOMPARE(header(ParameterModel::AccessColumn), QStringLiteral("Zugriff"));
+        QCOMPARE(header(ParameterModel::columnOfSet(3)), QStringLiteral("Satz 3"));
+    }
+
+    void editControllerSpeaksGerman()
+    {
+        DriveClient client(ConnectionSettings{});
+        ParameterModel model;
+        QUndoStack undoStack;
+        EditController controller(&client, &model, &undoStack);
+        QSignalSpy messages(&controller, &EditController::message);
+        controller.write(0x0203, 0x01, 5);
+        QCOMPARE(messages.size(), 1);
+        QCOMPARE(messages.first().first().toString(),
+                 QStringLiteral("Nicht geschrieben: dieser Umrichter hat keinen Parameter 0203h"));
+    }
+
+    // The core's messages reach the window too; their contexts must match the catalogue's.
+    void coreMessagesAreGerman()
+    {
+        QString error;
+        QVERIFY(!ParameterId::parse(QString(), QList<GroupAddress>(), &error));
+        QCOMPARE(error, QStringLiteral("kein Parameter angegeben"));
+
+        ConnectionSettings settings;
+        QVERIFY(!settings.parseTarget(QStringLiteral("tcp:localhost"), &error));
+        QCOMPARE(error, QStringLiteral("„localhost“ hat keinen Port: tcp:HOST:PORT angeben"));
+
+        QVERIFY(!ParameterDocument::fromJson("[]", &error));
+        QVERIFY2(error.startsWith(QLatin1String("keine DriveDesk-Parameterdatei")),
+                 qPrintable(error));
+        QVERIFY(!ParameterDocument::fromJson(R"({"format": "drivedesk-parameters", "version": 1})",
+                                             &error));
+        QCOMPARE(error, QStringLiteral("drive: fehlt"));
+    }
+
+    void countsTakeTheirForm()
+    {
+        const auto german = [this](const char *context, const char *source, int n) {
+            return m_german.translate(context, source, nullptr, n);
+        };
+        QCOMPARE(german("DriveDesk::TelegramMonitor", "%Ln telegram(s)", 1),
+                 QStringLiteral("%Ln Telegramm"));
+        QCOMPARE(german("DriveDesk::TelegramMonitor", "%Ln telegram(s)", 7),
+                 QStringLiteral("%Ln Telegramme"));
+        QCOMPARE(QCoreApplication::translate("DriveDesk::ParameterModel", "%1, %n parameter(s)",
+                                             nullptr, 1),
+                 QStringLiteral("%1, 1 Parameter"));
+
+        const auto english = [this](const char *context, const char *source, int n) {
+            return m_english.translate(context, source, nullptr, n);
+        };
+        QCOMPARE(english("DriveDesk::TelegramMonitor", "%Ln telegram(s)", 1),
+                 QStringLiteral("%Ln telegram"));
+        QCOMPARE(english("DriveDesk::TelegramMonitor", "%Ln telegram(s)", 2),
+                 QStringLiteral("%Ln telegrams"));
+        QCOMPARE(english("ParameterDocument", "%n entries; expected 1 (or 8, one for each set)", 0),
+                 QStringLiteral("%n entries; expected 1 (or 8, one for each set)"));
+        QCOMPARE(english("DriveDesk::TrafficModel", "%n byte(s)", 1), QStringLiteral("%n byte"));
+    }
+
+    void cataloguesAreComplete_data()
+    {
+        QTest::addColumn<QString>("path");
+        QTest::addColumn<QString>("language");
+        QTest::newRow("German") << catalogueFile("drivedesk_de.ts") << QStringLiteral("de");
+        QTest::newRow("English") << catalogueFile("drivedesk_en.ts") << QStringLiteral("en");
+    }
+
+    void cataloguesAreComplete()
+    {
+        QFETCH(QString, path);
+        QFETCH(QString, language);
+        const Catalogue catalogue = readCatalogue(path);
+        QVERIFY2(catalogue.error.isEmpty(), qPrintable(catalogue.error));
+        QVERIFY2(catalogue.language.startsWith(language), qPrintable(catalogue.language));
+        QVERIFY(catalogue.entries.size() > 100);
+
+        QStringList problems;
+        for (const CatalogueEntry &entry : catalogue.entries) {
+            const QStringList found = problemsOf(entry);
+            if (!found.isEmpty())
+                problems << QStringLiteral("%1 \"%2\": %3")
+                                .arg(entry.context, entry.source, found.join(QStringLiteral("; ")));
+        }
+        QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
+    }
+
+    void bothCataloguesHoldTheSameTexts()
+    {
+        QSet<QString> german;
+        for (const CatalogueEntry &entry : readCatalogue(catalogueFile("drivedesk_de.ts")).entries)
+            german.insert(entry.key());
+        QSet<QString> english;
+        for (const CatalogueEntry &entry : readCatalogue(catalogueFile("drivedesk_en.ts")).entries)
+            english.insert(entry.key());
+        QVERIFY2(german == english,
+                 qPrintable(QStringList((german - english).values()).join(QLatin1Char('\n'))
+                            + QLatin1Char('\n')
+                            + QStringList((english - german).values()).join(QLatin1Char('\n'))));
+    }
+
+private:
+    QTranslator m_german;
+    QTranslator m_english;
+};
+
+QTEST_MAIN(TestTranslations)
+#include "tst_translations.moc"

@@ -1,0 +1,2046 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de" sourcelanguage="en">
+<context>
+    <name>ConnectionOptions</name>
+    <message>
+        <source>--%1 %2: expected a number from %3 to %4</source>
+        <translation>--%1 %2: erwartet wird eine Zahl von %3 bis %4</translation>
+    </message>
+    <message>
+        <source>unknown language &quot;%1&quot;: use en or de</source>
+        <translation>unbekannte Sprache „%1“: en oder de angeben</translation>
+    </message>
+    <message>
+        <source>--connect is missing: give tcp:HOST:PORT, serial:DEVICE or sim</source>
+        <translation>--connect fehlt: tcp:HOST:PORT, serial:GERÄT oder sim angeben</translation>
+    </message>
+    <message>
+        <source>unknown protocol &quot;%1&quot;: use hsp5, din66019ii or din66019</source>
+        <translation>unbekanntes Protokoll „%1“: hsp5, din66019ii oder din66019 angeben</translation>
+    </message>
+</context>
+<context>
+    <name>ConnectionSettingsText</name>
+    <message>
+        <source>&quot;%1&quot; is not HOST:PORT (an IPv6 address is written [ADDRESS]:PORT)</source>
+        <translation>„%1“ ist nicht HOST:PORT (eine IPv6-Adresse wird [ADRESSE]:PORT geschrieben)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; has no port: write tcp:HOST:PORT</source>
+        <translation>„%1“ hat keinen Port: tcp:HOST:PORT angeben</translation>
+    </message>
+    <message>
+        <source>the host is missing in &quot;%1&quot;: write tcp:HOST:PORT</source>
+        <translation>in „%1“ fehlt der Host: tcp:HOST:PORT angeben</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a TCP port (1..65535)</source>
+        <translation>„%1“ ist kein TCP-Port (1..65535)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: the simulated drive takes no further address (write sim)</source>
+        <translation>„%1“: der simulierte Umrichter braucht keine weitere Adresse (sim angeben)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; names no serial device: write serial:/dev/ttyUSB0 or serial:COM3</source>
+        <translation>„%1“ nennt keine serielle Schnittstelle: serial:/dev/ttyUSB0 oder serial:COM3 angeben</translation>
+    </message>
+    <message>
+        <source>unknown connection &quot;%1&quot;: expected tcp:HOST:PORT, serial:DEVICE or sim</source>
+        <translation>unbekannte Verbindung „%1“: erwartet wird tcp:HOST:PORT, serial:GERÄT oder sim</translation>
+    </message>
+    <message>
+        <source> drive %1</source>
+        <translation> Umrichter %1</translation>
+    </message>
+    <message>
+        <source>simulated %1 drive</source>
+        <translation>simulierter %1-Umrichter</translation>
+    </message>
+    <message>
+        <source>%1 on %2 (%3 %4)</source>
+        <translation>%1 an %2 (%3 %4)</translation>
+    </message>
+    <message>
+        <source>%1 via %2</source>
+        <translation>%1 über %2</translation>
+    </message>
+</context>
+<context>
+    <name>DisplayScaling</name>
+    <message>
+        <source>calculation mode %1</source>
+        <translation>Berechnungsmodus %1</translation>
+    </message>
+    <message>
+        <source>divisor 0</source>
+        <translation>Divisor 0</translation>
+    </message>
+    <message>
+        <source>%1 (no scaling: %2)</source>
+        <translation>%1 (keine Normierung: %2)</translation>
+    </message>
+    <message>
+        <source>%1 (no scaling: value + offset is 0)</source>
+        <translation>%1 (keine Normierung: Wert + Offset ist 0)</translation>
+    </message>
+    <message>
+        <source>no value given</source>
+        <translation>kein Wert angegeben</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; cannot be converted: the scaling of this parameter is invalid (%2)</source>
+        <translation>„%1“ kann nicht umgerechnet werden: die Normierung dieses Parameters ist ungültig (%2)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a number</source>
+        <translation>„%1“ ist keine Zahl</translation>
+    </message>
+    <message>
+        <source>unit &apos;%1&apos; does not match: this value has no unit</source>
+        <translation>Einheit „%1“ passt nicht: dieser Wert hat keine Einheit</translation>
+    </message>
+    <message>
+        <source>unit &apos;%1&apos; does not match &apos;%2&apos;</source>
+        <translation>Einheit „%1“ passt nicht zu „%2“</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a hexadecimal number</source>
+        <translation>„%1“ ist keine Hexadezimalzahl</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; does not fit in 32 bits</source>
+        <translation>„%1“ passt nicht in 32 Bit</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has too many digits</source>
+        <translation>„%1“ hat zu viele Stellen</translation>
+    </message>
+    <message>
+        <source>every raw value shows 0 in this scaling (multiplier 0): the raw value cannot be chosen</source>
+        <translation>bei dieser Normierung zeigt jeder Rohwert 0 (Multiplikator 0): der Rohwert lässt sich nicht bestimmen</translation>
+    </message>
+    <message>
+        <source>no raw value gives %1 in this scaling</source>
+        <translation>kein Rohwert ergibt bei dieser Normierung %1</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is out of range</source>
+        <translation>„%1“ liegt außerhalb des Wertebereichs</translation>
+    </message>
+    <message>
+        <source>no raw value gives 0 in this scaling</source>
+        <translation>kein Rohwert ergibt bei dieser Normierung 0</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is out of range: it needs raw value %2, beyond 32 bits</source>
+        <translation>„%1“ liegt außerhalb des Wertebereichs: dafür wäre der Rohwert %2 nötig, jenseits von 32 Bit</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::AccessController</name>
+    <message>
+        <source>The password level could not be read: %1</source>
+        <translation>Die Passwortebene konnte nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>Password not accepted: %1</source>
+        <translation>Passwort nicht angenommen: %1</translation>
+    </message>
+    <message>
+        <source>Password accepted</source>
+        <translation>Passwort angenommen</translation>
+    </message>
+    <message>
+        <source>The password parameter reads %1, which names no password level: the level stays %2</source>
+        <translation>Der Passwortparameter zeigt %1, das ist keine Passwortebene: die Ebene bleibt %2</translation>
+    </message>
+    <message>
+        <source>Password level: %1</source>
+        <translation>Passwortebene: %1</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::BitFieldEditor</name>
+    <message>
+        <source>Definition %1</source>
+        <translation>Definition %1</translation>
+    </message>
+    <message>
+        <source>%1 (no plaintext)</source>
+        <translation>%1 (kein Klartext)</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ClientWorker</name>
+    <message>
+        <source>arrived before the open request was sent, ignored: %1</source>
+        <translation>kam an, bevor die offene Anfrage gesendet war, ignoriert: %1</translation>
+    </message>
+    <message>
+        <source>a request where answers are expected, ignored: %1</source>
+        <translation>eine Anfrage, wo Antworten erwartet werden, ignoriert: %1</translation>
+    </message>
+    <message>
+        <source>the answer with invoke id %1 belongs to no open request, ignored</source>
+        <translation>die Antwort mit Invoke-ID %1 gehört zu keiner offenen Anfrage, ignoriert</translation>
+    </message>
+    <message>
+        <source>the answer does not match its request (%1), not accepted</source>
+        <translation>die Antwort passt nicht zu ihrer Anfrage (%1), nicht angenommen</translation>
+    </message>
+    <message>
+        <source>line error: %1</source>
+        <translation>Leitungsfehler: %1</translation>
+    </message>
+    <message>
+        <source>inverter request: %1</source>
+        <translation>Anfrage des Umrichters: %1</translation>
+    </message>
+    <message>
+        <source>cannot answer the inverter&apos;s request: %1</source>
+        <translation>die Anfrage des Umrichters kann nicht beantwortet werden: %1</translation>
+    </message>
+    <message>
+        <source>the client was closed</source>
+        <translation>der Client wurde geschlossen</translation>
+    </message>
+    <message>
+        <source>disconnected</source>
+        <translation>getrennt</translation>
+    </message>
+    <message>
+        <source>the link was lost</source>
+        <translation>die Verbindung ist abgebrochen</translation>
+    </message>
+    <message>
+        <source>only requests can be sent, this is an answer</source>
+        <translation>nur Anfragen können gesendet werden, dies ist eine Antwort</translation>
+    </message>
+    <message>
+        <source>%1 has no %2 of %3</source>
+        <translation>%1 kennt kein %2 für %3</translation>
+    </message>
+    <message>
+        <source>write</source>
+        <translation>Schreiben</translation>
+    </message>
+    <message>
+        <source>read</source>
+        <translation>Lesen</translation>
+    </message>
+    <message>
+        <source>drive address %1 is outside 0..239 (240..255: groups and broadcast)</source>
+        <translation>Umrichteradresse %1 liegt außerhalb von 0..239 (240..255: Gruppen und Broadcast)</translation>
+    </message>
+    <message>
+        <source>address %1 is a group or broadcast address: no drive answers there, so it takes writes only</source>
+        <translation>Adresse %1 ist eine Gruppen- oder Broadcast-Adresse: dort antwortet kein Umrichter, daher nur Schreiben möglich</translation>
+    </message>
+    <message>
+        <source>the codec cannot encode it</source>
+        <translation>der Codec kann sie nicht codieren</translation>
+    </message>
+    <message>
+        <source>to drive %1: %2</source>
+        <translation>an Umrichter %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ConnectionDialog</name>
+    <message>
+        <source>Connect to a drive</source>
+        <translation>Mit einem Umrichter verbinden</translation>
+    </message>
+    <message>
+        <source>&amp;Recent connections</source>
+        <translation>&amp;Letzte Verbindungen</translation>
+    </message>
+    <message>
+        <source>&amp;Serial port</source>
+        <translation>&amp;Serielle Schnittstelle</translation>
+    </message>
+    <message>
+        <source>&amp;TCP</source>
+        <translation>&amp;TCP</translation>
+    </message>
+    <message>
+        <source>Si&amp;mulated drive</source>
+        <translation>Si&amp;mulierter Umrichter</translation>
+    </message>
+    <message>
+        <source>HSP5</source>
+        <translation>HSP5</translation>
+    </message>
+    <message>
+        <source>DIN66019II</source>
+        <translation>DIN66019II</translation>
+    </message>
+    <message>
+        <source>DIN66019</source>
+        <translation>DIN66019</translation>
+    </message>
+    <message>
+        <source>The drive&apos;s address on a DIN66019(II) bus, 0..239</source>
+        <translation>Die Adresse des Umrichters an einem DIN66019(II)-Bus, 0..239</translation>
+    </message>
+    <message>
+        <source>&amp;Find drives...</source>
+        <translation>Umrichter s&amp;uchen …</translation>
+    </message>
+    <message>
+        <source>Ask every address 0..239 on the bus which drives answer</source>
+        <translation>Jede Adresse 0..239 am Bus abfragen, welche Umrichter antworten</translation>
+    </message>
+    <message>
+        <source>Drive &amp;address:</source>
+        <translation>Umrichter&amp;adresse:</translation>
+    </message>
+    <message>
+        <source>&amp;Protocol:</source>
+        <translation>&amp;Protokoll:</translation>
+    </message>
+    <message>
+        <source>&amp;Connect</source>
+        <translation>&amp;Verbinden</translation>
+    </message>
+    <message>
+        <source>The serial port, or type a device such as /dev/ttyUSB0 or COM3</source>
+        <translation>Die serielle Schnittstelle, oder ein Gerät wie /dev/ttyUSB0 oder COM3 eingeben</translation>
+    </message>
+    <message>
+        <source>R&amp;efresh</source>
+        <translation>A&amp;ktualisieren</translation>
+    </message>
+    <message>
+        <source>Look for serial ports again</source>
+        <translation>Erneut nach seriellen Schnittstellen suchen</translation>
+    </message>
+    <message>
+        <source>P&amp;ort:</source>
+        <translation>P&amp;ort:</translation>
+    </message>
+    <message>
+        <source>&amp;Baud rate:</source>
+        <translation>&amp;Baudrate:</translation>
+    </message>
+    <message>
+        <source>host name or IP address of the serial device server</source>
+        <translation>Hostname oder IP-Adresse des seriellen Geräteservers</translation>
+    </message>
+    <message>
+        <source>&amp;Host:</source>
+        <translation>&amp;Host:</translation>
+    </message>
+    <message>
+        <source>Po&amp;rt:</source>
+        <translation>Po&amp;rt:</translation>
+    </message>
+    <message>
+        <source>A simulated KEB COMBIVERT F5 running inside DriveDesk: every parameter, password levels, eight sets and a motor to watch. Nothing needs to be plugged in.</source>
+        <translation>Ein simulierter KEB COMBIVERT F5, der in DriveDesk läuft: alle Parameter, Passwortebenen, acht Parametersätze und ein Motor zum Beobachten. Es muss nichts angeschlossen werden.</translation>
+    </message>
+    <message>
+        <source>no serial port found</source>
+        <translation>keine serielle Schnittstelle gefunden</translation>
+    </message>
+    <message>
+        <source>(none yet)</source>
+        <translation>(noch keine)</translation>
+    </message>
+    <message>
+        <source>No serial port was found. Plug in the adapter and press Refresh, or type the device (e.g. /dev/ttyUSB0 or COM3).</source>
+        <translation>Es wurde keine serielle Schnittstelle gefunden. Adapter einstecken und Aktualisieren drücken, oder das Gerät eingeben (z. B. /dev/ttyUSB0 oder COM3).</translation>
+    </message>
+    <message>
+        <source>Choose the serial port the drive is connected to.</source>
+        <translation>Die serielle Schnittstelle wählen, an der der Umrichter angeschlossen ist.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a baud rate: enter a number such as 38400.</source>
+        <translation>„%1“ ist keine Baudrate: eine Zahl wie 38400 eingeben.</translation>
+    </message>
+    <message>
+        <source>Enter the host name or IP address of the serial device server.</source>
+        <translation>Hostnamen oder IP-Adresse des seriellen Geräteservers eingeben.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a host name or IP address.</source>
+        <translation>„%1“ ist kein Hostname und keine IP-Adresse.</translation>
+    </message>
+    <message>
+        <source>Finding drives needs a DIN66019II or DIN66019 bus: HSP5 is point to point. Choose the protocol first.</source>
+        <translation>Die Umrichtersuche braucht einen DIN66019II- oder DIN66019-Bus: HSP5 ist eine Punkt-zu-Punkt-Verbindung. Zuerst das Protokoll wählen.</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::DriveInfoDialog</name>
+    <message>
+        <source>Identification</source>
+        <translation>Identifikation</translation>
+    </message>
+    <message>
+        <source>not read: %1</source>
+        <translation>nicht gelesen: %1</translation>
+    </message>
+    <message>
+        <source>no value</source>
+        <translation>kein Wert</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>Verbindung</translation>
+    </message>
+    <message>
+        <source>Protocol</source>
+        <translation>Protokoll</translation>
+    </message>
+    <message>
+        <source>Drive address</source>
+        <translation>Umrichteradresse</translation>
+    </message>
+    <message>
+        <source>Parameter groups</source>
+        <translation>Parametergruppen</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Scan incomplete</source>
+        <translation>Einlesen unvollständig</translation>
+    </message>
+    <message>
+        <source>Drive information</source>
+        <translation>Umrichterinformationen</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Kopieren</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::DriveScanner</name>
+    <message>
+        <source>identification</source>
+        <translation>Identifikation</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>group page %1h</source>
+        <translation>Gruppenseite %1h</translation>
+    </message>
+    <message>
+        <source>group page %1h: %2</source>
+        <translation>Gruppenseite %1h: %2</translation>
+    </message>
+    <message>
+        <source>group %1: name</source>
+        <translation>Gruppe %1: Name</translation>
+    </message>
+    <message>
+        <source>name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>limits</source>
+        <translation>Grenzwerte</translation>
+    </message>
+    <message>
+        <source>default value</source>
+        <translation>Vorgabewert</translation>
+    </message>
+    <message>
+        <source>properties</source>
+        <translation>Eigenschaften</translation>
+    </message>
+    <message>
+        <source>values: not read, the properties are unknown</source>
+        <translation>Werte: nicht gelesen, die Eigenschaften sind unbekannt</translation>
+    </message>
+    <message>
+        <source>display scaling</source>
+        <translation>Anzeigenormierung</translation>
+    </message>
+    <message>
+        <source>plaintext indices</source>
+        <translation>Klartextindizes</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>value of set %1</source>
+        <translation>Wert in Satz %1</translation>
+    </message>
+    <message>
+        <source>plaintexts: the drive names %1 definitions, only %2 can be read</source>
+        <translation>Klartexte: der Umrichter nennt %1 Definitionen, nur %2 können gelesen werden</translation>
+    </message>
+    <message>
+        <source>plaintext definition %1</source>
+        <translation>Klartextdefinition %1</translation>
+    </message>
+    <message>
+        <source>plaintext %1.%2</source>
+        <translation>Klartext %1.%2</translation>
+    </message>
+    <message>
+        <source>group %1: parameter %2</source>
+        <translation>Gruppe %1: Parameter %2</translation>
+    </message>
+    <message>
+        <source>the answer carries no %1</source>
+        <translation>die Antwort enthält keine Daten für „%1“</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 (and %n more)</source>
+        <translation>
+            <numerusform>%1 (und %n weiteres)</numerusform>
+            <numerusform>%1 (und %n weitere)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::DriveSearch</name>
+    <message>
+        <source>the addresses %1..%2 hold no drive address (drives are 0..239)</source>
+        <translation>die Adressen %1..%2 enthalten keine Umrichteradresse (Umrichter haben 0..239)</translation>
+    </message>
+    <message>
+        <source>drive %1: %2</source>
+        <translation>Umrichter %1: %2</translation>
+    </message>
+    <message>
+        <source>drive %1 answered</source>
+        <translation>Umrichter %1 hat geantwortet</translation>
+    </message>
+    <message>
+        <source>no drive at %1</source>
+        <translation>kein Umrichter an %1</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::DriveSession</name>
+    <message>
+        <source>the scan was cancelled</source>
+        <translation>das Einlesen wurde abgebrochen</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::EditController</name>
+    <message>
+        <source>Not written: this drive has no parameter %1</source>
+        <translation>Nicht geschrieben: dieser Umrichter hat keinen Parameter %1</translation>
+    </message>
+    <message>
+        <source>%1 not written: no set chosen</source>
+        <translation>%1 nicht geschrieben: kein Satz gewählt</translation>
+    </message>
+    <message>
+        <source>Not reset: this drive has no parameter %1</source>
+        <translation>Nicht zurückgesetzt: dieser Umrichter hat keinen Parameter %1</translation>
+    </message>
+    <message>
+        <source>%1 not reset: no set chosen</source>
+        <translation>%1 nicht zurückgesetzt: kein Satz gewählt</translation>
+    </message>
+    <message>
+        <source>%1 not reset%2: %3</source>
+        <translation>%1%2 nicht zurückgesetzt: %3</translation>
+    </message>
+    <message>
+        <source>%1 = %2 not written%3: %4</source>
+        <translation>%1 = %2%3 nicht geschrieben: %4</translation>
+    </message>
+    <message>
+        <source>Reset %1 to its default%2</source>
+        <translation>%1%2 auf den Vorgabewert zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Write %1 = %2%3</source>
+        <translation>%1 = %2%3 schreiben</translation>
+    </message>
+    <message>
+        <source>%1 reset to its default%2</source>
+        <translation>%1%2 auf den Vorgabewert zurückgesetzt</translation>
+    </message>
+    <message>
+        <source>%1 = %2 written%3</source>
+        <translation>%1 = %2%3 geschrieben</translation>
+    </message>
+    <message>
+        <source>; not%1: %2</source>
+        <translation>; nicht%1: %2</translation>
+    </message>
+    <message>
+        <source>; reading it back failed: %1</source>
+        <translation>; Rücklesen fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>%1%2: the value before the change is not known, so it stays as it is</source>
+        <translation>%1%2: der Wert vor der Änderung ist unbekannt, er bleibt daher, wie er ist</translation>
+    </message>
+    <message>
+        <source>Undone: %1</source>
+        <translation>Rückgängig gemacht: %1</translation>
+    </message>
+    <message>
+        <source>Redone: %1</source>
+        <translation>Wiederhergestellt: %1</translation>
+    </message>
+    <message>
+        <source>Undo failed: %1: %2</source>
+        <translation>Rückgängigmachen fehlgeschlagen: %1: %2</translation>
+    </message>
+    <message>
+        <source>Redo failed: %1: %2</source>
+        <translation>Wiederherstellen fehlgeschlagen: %1: %2</translation>
+    </message>
+    <message>
+        <source> in all sets</source>
+        <translation> in allen Sätzen</translation>
+    </message>
+    <message>
+        <source> in set %1</source>
+        <translation> in Satz %1</translation>
+    </message>
+    <message>
+        <source> in sets %1</source>
+        <translation> in den Sätzen %1</translation>
+    </message>
+    <message>
+        <source>the drive holds %1%2</source>
+        <translation>der Umrichter enthält %1%2</translation>
+    </message>
+    <message>
+        <source>Still copying set %1 to set %2</source>
+        <translation>Satz %1 wird noch in Satz %2 kopiert</translation>
+    </message>
+    <message>
+        <source>Still reading the values</source>
+        <translation>Die Werte werden noch gelesen</translation>
+    </message>
+    <message>
+        <source>Cannot copy set %1 to set %2: the sets are 0 to %3</source>
+        <translation>Satz %1 kann nicht in Satz %2 kopiert werden: die Sätze sind 0 bis %3</translation>
+    </message>
+    <message>
+        <source>Cannot copy set %1 onto itself</source>
+        <translation>Satz %1 kann nicht in sich selbst kopiert werden</translation>
+    </message>
+    <message>
+        <source>Copy set %1 to set %2</source>
+        <translation>Satz %1 in Satz %2 kopieren</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Set %2 holds the values of set %1 already</source>
+        <translation>Satz %2 enthält bereits die Werte von Satz %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Set %1 copied to set %2: %n value(s) written</source>
+        <translation>
+            <numerusform>Satz %1 in Satz %2 kopiert: %n Wert geschrieben</numerusform>
+            <numerusform>Satz %1 in Satz %2 kopiert: %n Werte geschrieben</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n refused (%1)</source>
+        <translation>
+            <numerusform>%n abgelehnt (%1)</numerusform>
+            <numerusform>%n abgelehnt (%1)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>stopped: %1</source>
+        <translation>angehalten: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>cancelled, %n value(s) not copied</source>
+        <translation>
+            <numerusform>abgebrochen, %n Wert nicht kopiert</numerusform>
+            <numerusform>abgebrochen, %n Werte nicht kopiert</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) left as they are: read-only or above the password level</source>
+        <translation>
+            <numerusform>%n Parameter unverändert gelassen: schreibgeschützt oder über der Passwortebene</numerusform>
+            <numerusform>%n Parameter unverändert gelassen: schreibgeschützt oder über der Passwortebene</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) left out: the value in set %1 was never read</source>
+        <translation>
+            <numerusform>%n Parameter ausgelassen: der Wert in Satz %1 wurde nie gelesen</numerusform>
+            <numerusform>%n Parameter ausgelassen: der Wert in Satz %1 wurde nie gelesen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) read</source>
+        <translation>
+            <numerusform>%n Wert gelesen</numerusform>
+            <numerusform>%n Werte gelesen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n could not be read (first: %1%2: %3)</source>
+        <translation>
+            <numerusform>%n konnte nicht gelesen werden (erster: %1%2: %3)</numerusform>
+            <numerusform>%n konnten nicht gelesen werden (erster: %1%2: %3)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>cancelled, %n value(s) not read</source>
+        <translation>
+            <numerusform>abgebrochen, %n Wert nicht gelesen</numerusform>
+            <numerusform>abgebrochen, %n Werte nicht gelesen</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::FilterBar</name>
+    <message>
+        <source>Search every group by id, name or value</source>
+        <translation>Alle Gruppen nach Kennung, Name oder Wert durchsuchen</translation>
+    </message>
+    <message>
+        <source>&amp;Find...</source>
+        <translation>&amp;Suchen …</translation>
+    </message>
+    <message>
+        <source>Search parameters by id, name or value</source>
+        <translation>Parameter nach Kennung, Name oder Wert suchen</translation>
+    </message>
+    <message>
+        <source>Search every group by id (ru.3), name or value as you type (%1)</source>
+        <translation>Alle Gruppen während der Eingabe nach Kennung (ru.3), Name oder Wert durchsuchen (%1)</translation>
+    </message>
+    <message>
+        <source>&amp;Differs from default</source>
+        <translation>Abweichend vom &amp;Vorgabewert</translation>
+    </message>
+    <message>
+        <source>&amp;Differs from Default</source>
+        <translation>&amp;Abweichend vom Vorgabewert</translation>
+    </message>
+    <message>
+        <source>Only parameters whose value differs from the default</source>
+        <translation>Nur Parameter, deren Wert vom Vorgabewert abweicht</translation>
+    </message>
+    <message>
+        <source>F&amp;avourites</source>
+        <translation>&amp;Favoriten</translation>
+    </message>
+    <message>
+        <source>F&amp;avourites Only</source>
+        <translation>Nur &amp;Favoriten</translation>
+    </message>
+    <message>
+        <source>Only the parameters marked with a star</source>
+        <translation>Nur die mit einem Stern markierten Parameter</translation>
+    </message>
+    <message>
+        <source>&amp;Hide above password level</source>
+        <translation>Über der &amp;Passwortebene ausblenden</translation>
+    </message>
+    <message>
+        <source>&amp;Hide Parameters above Password Level</source>
+        <translation>Parameter über der Passwortebene aus&amp;blenden</translation>
+    </message>
+    <message>
+        <source>Hide parameters the password level in force does not open; otherwise they are greyed out</source>
+        <translation>Parameter ausblenden, die die gültige Passwortebene nicht freigibt; sonst werden sie ausgegraut</translation>
+    </message>
+    <message>
+        <source>Ra&amp;w values</source>
+        <translation>&amp;Rohwerte</translation>
+    </message>
+    <message>
+        <source>Show &amp;Raw Values</source>
+        <translation>&amp;Rohwerte anzeigen</translation>
+    </message>
+    <message>
+        <source>Show the raw integers the drive holds instead of scaled values and plaintexts</source>
+        <translation>Die ganzzahligen Rohwerte des Umrichters statt normierter Werte und Klartexte anzeigen</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::FindDrivesDialog</name>
+    <message>
+        <source>the %1 bus on %2 at %3 baud</source>
+        <translation>dem %1-Bus an %2 mit %3 Baud</translation>
+    </message>
+    <message>
+        <source>the %1 bus behind %2</source>
+        <translation>dem %1-Bus hinter %2</translation>
+    </message>
+    <message>
+        <source>the simulated %1 bus</source>
+        <translation>dem simulierten %1-Bus</translation>
+    </message>
+    <message>
+        <source>Find drives</source>
+        <translation>Umrichter suchen</translation>
+    </message>
+    <message>
+        <source>&amp;Stop</source>
+        <translation>&amp;Stopp</translation>
+    </message>
+    <message>
+        <source>&amp;Connect</source>
+        <translation>&amp;Verbinden</translation>
+    </message>
+    <message>
+        <source>Search &amp;again</source>
+        <translation>&amp;Erneut suchen</translation>
+    </message>
+    <message>
+        <source>Drives that answered:</source>
+        <translation>Umrichter, die geantwortet haben:</translation>
+    </message>
+    <message>
+        <source>Asking every address %2..%3 on %1 whether a drive answers.</source>
+        <translation>Alle Adressen %2..%3 auf %1 werden gefragt, ob ein Umrichter antwortet.</translation>
+    </message>
+    <message>
+        <source>not connected to the bus</source>
+        <translation>nicht mit dem Bus verbunden</translation>
+    </message>
+    <message>
+        <source>Opening the connection...</source>
+        <translation>Verbindung wird geöffnet …</translation>
+    </message>
+    <message>
+        <source>Searching...</source>
+        <translation>Suche läuft …</translation>
+    </message>
+    <message>
+        <source>Stopped.</source>
+        <translation>Angehalten.</translation>
+    </message>
+    <message>
+        <source>Stopped after %1 of %2 addresses.</source>
+        <translation>Nach %1 von %2 Adressen angehalten.</translation>
+    </message>
+    <message>
+        <source>The search stopped: %1</source>
+        <translation>Die Suche wurde beendet: %1</translation>
+    </message>
+    <message>
+        <source>No drive answered. Check the wiring, the baud rate and the protocol.</source>
+        <translation>Kein Umrichter hat geantwortet. Verdrahtung, Baudrate und Protokoll prüfen.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n drive(s) answered.</source>
+        <translation>
+            <numerusform>%n Umrichter hat geantwortet.</numerusform>
+            <numerusform>%n Umrichter haben geantwortet.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Drive at address %1</source>
+        <translation>Umrichter an Adresse %1</translation>
+    </message>
+    <message>
+        <source>Could not search: %1</source>
+        <translation>Suche nicht möglich: %1</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::GroupListModel</name>
+    <message>
+        <source>All parameters</source>
+        <translation>Alle Parameter</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>Gruppe</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>Parameter</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::HexValueEdit</name>
+    <message>
+        <source>Hexadecimal, %1 .. %2</source>
+        <translation>Hexadezimal, %1 .. %2</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::MainWindow</name>
+    <message>
+        <source>DriveDesk</source>
+        <translation>DriveDesk</translation>
+    </message>
+    <message>
+        <source>Not connected. Choose Connect... (%1) to reach a drive or the simulated one.</source>
+        <translation>Nicht verbunden. Verbinden … (%1) wählen, um einen Umrichter oder den simulierten zu erreichen.</translation>
+    </message>
+    <message>
+        <source>Connected. Reading the drive...</source>
+        <translation>Verbunden. Umrichter wird eingelesen …</translation>
+    </message>
+    <message>
+        <source>Reconnected to %1; reading the values again.</source>
+        <translation>Wieder verbunden (%1); die Werte werden neu gelesen.</translation>
+    </message>
+    <message>
+        <source>Reading the drive...</source>
+        <translation>Umrichter wird eingelesen …</translation>
+    </message>
+    <message>
+        <source>Connecting...</source>
+        <translation>Verbindung wird aufgebaut …</translation>
+    </message>
+    <message>
+        <source>Connecting to %1...</source>
+        <translation>Verbindung wird aufgebaut: %1 …</translation>
+    </message>
+    <message>
+        <source>Not connected</source>
+        <translation>Nicht verbunden</translation>
+    </message>
+    <message>
+        <source>Connected: %1</source>
+        <translation>Verbunden: %1</translation>
+    </message>
+    <message>
+        <source>Connection lost</source>
+        <translation>Verbindung verloren</translation>
+    </message>
+    <message>
+        <source>Reading the drive: %1</source>
+        <translation>Umrichter wird eingelesen: %1</translation>
+    </message>
+    <message>
+        <source>%1 - DriveDesk</source>
+        <translation>%1 – DriveDesk</translation>
+    </message>
+    <message>
+        <source>The drive reported no parameters.</source>
+        <translation>Der Umrichter hat keine Parameter gemeldet.</translation>
+    </message>
+    <message>
+        <source>Nothing was read from the drive: %1.</source>
+        <translation>Vom Umrichter wurde nichts gelesen: %1.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Read %n parameter(s)</source>
+        <translation>
+            <numerusform>Gelesen: %n Parameter</numerusform>
+            <numerusform>Gelesen: %n Parameter</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source> in %n group(s).</source>
+        <translation>
+            <numerusform> in %n Gruppe.</numerusform>
+            <numerusform> in %n Gruppen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Nothing was read: %1. Press Refresh (%2) to read the drive.</source>
+        <translation>Nichts gelesen: %1. Aktualisieren (%2) drücken, um den Umrichter einzulesen.</translation>
+    </message>
+    <message>
+        <source>The drive was read only in part: %1</source>
+        <translation>Der Umrichter wurde nur teilweise eingelesen: %1</translation>
+    </message>
+    <message>
+        <source>The connection to the drive was lost: %1. What was read stays shown; editing is off until the drive is reconnected.</source>
+        <translation>Die Verbindung zum Umrichter ist abgebrochen: %1. Das Gelesene bleibt sichtbar; Bearbeiten ist gesperrt, bis der Umrichter wieder verbunden ist.</translation>
+    </message>
+    <message>
+        <source>Connection lost: %1</source>
+        <translation>Verbindung verloren: %1</translation>
+    </message>
+    <message>
+        <source>Could not connect: %1</source>
+        <translation>Verbindung nicht möglich: %1</translation>
+    </message>
+    <message>
+        <source>Could not connect to %1: %2</source>
+        <translation>Verbindung nicht möglich (%1): %2</translation>
+    </message>
+    <message>
+        <source>Password level: %1</source>
+        <translation>Passwortebene: %1</translation>
+    </message>
+    <message>
+        <source>?</source>
+        <translation>?</translation>
+    </message>
+    <message>
+        <source>Active set: %1</source>
+        <translation>Aktiver Satz: %1</translation>
+    </message>
+    <message>
+        <source>Set pointer (Fr.09): %1</source>
+        <translation>Satzzeiger (Fr.09): %1</translation>
+    </message>
+    <message>
+        <source>Disconnected from %1. What was read stays shown.</source>
+        <translation>Getrennt (%1). Das Gelesene bleibt sichtbar.</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>&amp;Connect...</source>
+        <translation>&amp;Verbinden …</translation>
+    </message>
+    <message>
+        <source>Connect to a drive or the simulated one</source>
+        <translation>Mit einem Umrichter oder dem simulierten verbinden</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Trennen</translation>
+    </message>
+    <message>
+        <source>&amp;Find Drives...</source>
+        <translation>Umrichter &amp;suchen …</translation>
+    </message>
+    <message>
+        <source>Look for drives at the addresses 0..239 of a DIN66019II bus</source>
+        <translation>Umrichter an den Adressen 0..239 eines DIN66019II-Busses suchen</translation>
+    </message>
+    <message>
+        <source>&amp;Refresh</source>
+        <translation>&amp;Aktualisieren</translation>
+    </message>
+    <message>
+        <source>Read every value from the drive again</source>
+        <translation>Alle Werte erneut vom Umrichter lesen</translation>
+    </message>
+    <message>
+        <source>&amp;Poll Live Values</source>
+        <translation>&amp;Istwerte zyklisch lesen</translation>
+    </message>
+    <message>
+        <source>Read the run display (ru) again and again</source>
+        <translation>Die Betriebsanzeige (ru) fortlaufend lesen</translation>
+    </message>
+    <message>
+        <source>Every %1</source>
+        <translation>Alle %1</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Rückgängig</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Wiederherstellen</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Rückgängig: %1</translation>
+    </message>
+    <message>
+        <source>Undo %1</source>
+        <translation>Rückgängig: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Wiederherstellen: %1</translation>
+    </message>
+    <message>
+        <source>Redo %1</source>
+        <translation>Wiederherstellen: %1</translation>
+    </message>
+    <message>
+        <source>Reset to &amp;Default</source>
+        <translation>Auf &amp;Vorgabewert zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Set the selected values to the drive&apos;s default</source>
+        <translation>Die gewählten Werte auf den Vorgabewert des Umrichters setzen</translation>
+    </message>
+    <message>
+        <source>&amp;Write to Sets...</source>
+        <translation>&amp;In Sätze schreiben …</translation>
+    </message>
+    <message>
+        <source>Write a value to several parameter sets at once</source>
+        <translation>Einen Wert in mehrere Parametersätze zugleich schreiben</translation>
+    </message>
+    <message>
+        <source>&amp;Copy Set...</source>
+        <translation>Satz &amp;kopieren …</translation>
+    </message>
+    <message>
+        <source>Copy every set-programmable value from one set to another</source>
+        <translation>Alle satzprogrammierbaren Werte von einem Satz in einen anderen kopieren</translation>
+    </message>
+    <message>
+        <source>&amp;Password...</source>
+        <translation>&amp;Passwort …</translation>
+    </message>
+    <message>
+        <source>Enter a password to open a higher password level</source>
+        <translation>Ein Passwort eingeben, um eine höhere Passwortebene freizugeben</translation>
+    </message>
+    <message>
+        <source>Drive &amp;Information...</source>
+        <translation>&amp;Umrichterinformationen …</translation>
+    </message>
+    <message>
+        <source>&amp;Telegram Monitor</source>
+        <translation>&amp;Telegramm-Monitor</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>&amp;About DriveDesk</source>
+        <translation>&amp;Über DriveDesk</translation>
+    </message>
+    <message>
+        <source>&amp;Drive</source>
+        <translation>&amp;Umrichter</translation>
+    </message>
+    <message>
+        <source>Polling &amp;Interval</source>
+        <translation>&amp;Leseintervall</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>Über &amp;Qt</translation>
+    </message>
+    <message>
+        <source>Main Toolbar</source>
+        <translation>Hauptwerkzeugleiste</translation>
+    </message>
+    <message>
+        <source>How often the live values are read</source>
+        <translation>Wie oft die Istwerte gelesen werden</translation>
+    </message>
+    <message>
+        <source>The password level in force on the drive (ud.01)</source>
+        <translation>Die am Umrichter gültige Passwortebene (ud.01)</translation>
+    </message>
+    <message>
+        <source>Fr.02: the set the drive works with. Fr.09: the set that indirect addressing reaches.</source>
+        <translation>Fr.02: der Satz, mit dem der Umrichter arbeitet. Fr.09: der Satz, den die indirekte Adressierung erreicht.</translation>
+    </message>
+    <message numerus="yes">
+        <source> and %n more</source>
+        <translation>
+            <numerusform> und %n weiterer</numerusform>
+            <numerusform> und %n weitere</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Not reset, read-only or above the password level in force: %1</source>
+        <translation>Nicht zurückgesetzt, schreibgeschützt oder über der gültigen Passwortebene: %1</translation>
+    </message>
+    <message>
+        <source>%1 is not set-programmable: it holds one value for every set.</source>
+        <translation>%1 ist nicht satzprogrammierbar: er hat einen Wert für alle Sätze.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be changed: it is read-only or above the password level in force.</source>
+        <translation>%1 kann nicht geändert werden: er ist schreibgeschützt oder liegt über der gültigen Passwortebene.</translation>
+    </message>
+    <message>
+        <source>%1 has no value read in set %2 to write.</source>
+        <translation>Für %1 ist in Satz %2 kein gelesener Wert zum Schreiben vorhanden.</translation>
+    </message>
+    <message>
+        <source>Write to Sets</source>
+        <translation>In Sätze schreiben</translation>
+    </message>
+    <message>
+        <source>Write %1 to %2 in:</source>
+        <translation>%1 in %2 schreiben, in:</translation>
+    </message>
+    <message>
+        <source>Copy Set</source>
+        <translation>Satz kopieren</translation>
+    </message>
+    <message>
+        <source>Copy every set-programmable value you may change from one set to another:</source>
+        <translation>Alle satzprogrammierbaren Werte, die Sie ändern dürfen, von einem Satz in einen anderen kopieren:</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Sprache</translation>
+    </message>
+    <message>
+        <source>DriveDesk uses the new language from its next start on: the window&apos;s texts and the drive&apos;s own texts.</source>
+        <translation>DriveDesk verwendet die neue Sprache ab dem nächsten Start: für die Texte des Fensters und die eigenen Texte des Umrichters.</translation>
+    </message>
+    <message>
+        <source>About DriveDesk</source>
+        <translation>Über DriveDesk</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;DriveDesk&lt;/b&gt; %1&lt;/p&gt;&lt;p&gt;Reads and edits the parameters of KEB frequency inverters over HSP5, DIN66019II and DIN66019, and ships a simulated COMBIVERT F5.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;DriveDesk&lt;/b&gt; %1&lt;/p&gt;&lt;p&gt;Liest und bearbeitet die Parameter von KEB-Frequenzumrichtern über HSP5, DIN66019II und DIN66019 und bringt einen simulierten COMBIVERT F5 mit.&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::NoticeBar</name>
+    <message>
+        <source>&amp;Cancel</source>
+        <translation>Abbre&amp;chen</translation>
+    </message>
+    <message>
+        <source>&amp;Reconnect</source>
+        <translation>&amp;Neu verbinden</translation>
+    </message>
+    <message>
+        <source>C&amp;onnect...</source>
+        <translation>V&amp;erbinden …</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ParameterBrowser</name>
+    <message>
+        <source>Search results for “%1”</source>
+        <translation>Suchergebnisse für „%1“</translation>
+    </message>
+    <message>
+        <source>All parameters</source>
+        <translation>Alle Parameter</translation>
+    </message>
+    <message>
+        <source>Not connected. Connect to a drive to see its parameters.</source>
+        <translation>Nicht verbunden. Mit einem Umrichter verbinden, um seine Parameter zu sehen.</translation>
+    </message>
+    <message>
+        <source>No parameter here matches the search and the filters.</source>
+        <translation>Kein Parameter hier passt zur Suche und zu den Filtern.</translation>
+    </message>
+    <message>
+        <source>This group holds no parameters.</source>
+        <translation>Diese Gruppe enthält keine Parameter.</translation>
+    </message>
+    <message>
+        <source>: none shown</source>
+        <translation>: keiner angezeigt</translation>
+    </message>
+    <message numerus="yes">
+        <source>: %n parameter(s)</source>
+        <translation>
+            <numerusform>: %n Parameter</numerusform>
+            <numerusform>: %n Parameter</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source> (filtered)</source>
+        <translation> (gefiltert)</translation>
+    </message>
+    <message>
+        <source>Favourite</source>
+        <translation>Favorit</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ParameterDelegate</name>
+    <message>
+        <source>this parameter cannot be changed now</source>
+        <translation>dieser Parameter kann jetzt nicht geändert werden</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ParameterModel</name>
+    <message>
+        <source>this drive has no parameter %1</source>
+        <translation>dieser Umrichter hat keinen Parameter %1</translation>
+    </message>
+    <message>
+        <source>%1 is read-only</source>
+        <translation>%1 ist schreibgeschützt</translation>
+    </message>
+    <message>
+        <source>%1 needs password level %2</source>
+        <translation>%1 erfordert Passwortebene %2</translation>
+    </message>
+    <message>
+        <source>%1: no set chosen</source>
+        <translation>%1: kein Satz gewählt</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>the drive holds %1, not %2</source>
+        <translation>der Umrichter enthält %1, nicht %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1, %n parameter(s)</source>
+        <translation>
+            <numerusform>%1, %n Parameter</numerusform>
+            <numerusform>%1, %n Parameter</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>?</source>
+        <translation>?</translation>
+    </message>
+    <message>
+        <source>Writing %1 ...</source>
+        <translation>%1 wird geschrieben …</translation>
+    </message>
+    <message>
+        <source>Written: %1</source>
+        <translation>Geschrieben: %1</translation>
+    </message>
+    <message>
+        <source>Writing %1 failed: %2</source>
+        <translation>Schreiben von %1 fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>Not read</source>
+        <translation>Nicht gelesen</translation>
+    </message>
+    <message>
+        <source>Not read: %1</source>
+        <translation>Nicht gelesen: %1</translation>
+    </message>
+    <message>
+        <source>raw %1 = %2h</source>
+        <translation>Rohwert %1 = %2h</translation>
+    </message>
+    <message>
+        <source>read-only (read: %1)</source>
+        <translation>schreibgeschützt (Lesen: %1)</translation>
+    </message>
+    <message>
+        <source>read: %1, write: %2</source>
+        <translation>Lesen: %1, Schreiben: %2</translation>
+    </message>
+    <message>
+        <source>Set 0, or the one value of a parameter that is not set-programmable</source>
+        <translation>Satz 0, oder der einzige Wert eines nicht satzprogrammierbaren Parameters</translation>
+    </message>
+    <message>
+        <source>Value / set 0</source>
+        <translation>Wert / Satz 0</translation>
+    </message>
+    <message>
+        <source>Set %1</source>
+        <translation>Satz %1</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Minimum</source>
+        <translation>Minimum</translation>
+    </message>
+    <message>
+        <source>Maximum</source>
+        <translation>Maximum</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Vorgabewert</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>Access</source>
+        <translation>Zugriff</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::PasswordDialog</name>
+    <message>
+        <source>Enter Password</source>
+        <translation>Passwort eingeben</translation>
+    </message>
+    <message>
+        <source>0 to %1</source>
+        <translation>0 bis %1</translation>
+    </message>
+    <message>
+        <source>Level in force:</source>
+        <translation>Gültige Passwortebene:</translation>
+    </message>
+    <message>
+        <source>&amp;Password:</source>
+        <translation>&amp;Passwort:</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>not read yet</source>
+        <translation>noch nicht gelesen</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::PlaintextComboBox</name>
+    <message>
+        <source>no text chosen</source>
+        <translation>kein Text gewählt</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::PollingController</name>
+    <message>
+        <source>Polling stopped: the connection to the drive was lost</source>
+        <translation>Zyklisches Lesen angehalten: die Verbindung zum Umrichter ist abgebrochen</translation>
+    </message>
+    <message>
+        <source>Polling stopped: disconnected from the drive</source>
+        <translation>Zyklisches Lesen angehalten: vom Umrichter getrennt</translation>
+    </message>
+    <message>
+        <source>Nothing to poll: this drive has no readable values in group %1</source>
+        <translation>Nichts zyklisch zu lesen: dieser Umrichter hat keine lesbaren Werte in Gruppe %1</translation>
+    </message>
+    <message>
+        <source>Polling: %1</source>
+        <translation>Zyklisches Lesen: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Polling: %n value(s) could not be read (first: %1: %2)</source>
+        <translation>
+            <numerusform>Zyklisches Lesen: %n Wert konnte nicht gelesen werden (erster: %1: %2)</numerusform>
+            <numerusform>Zyklisches Lesen: %n Werte konnten nicht gelesen werden (erster: %1: %2)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::PseudoTerminal</name>
+    <message>
+        <source>no path given for the pseudo-terminal link</source>
+        <translation>kein Pfad für den Pseudoterminal-Link angegeben</translation>
+    </message>
+    <message>
+        <source>%1 already exists; choose another path or remove it</source>
+        <translation>%1 existiert bereits; einen anderen Pfad wählen oder ihn entfernen</translation>
+    </message>
+    <message>
+        <source>cannot create the link %1: %2</source>
+        <translation>der Link %1 kann nicht angelegt werden: %2</translation>
+    </message>
+    <message>
+        <source>the pseudo-terminal was closed</source>
+        <translation>das Pseudoterminal wurde geschlossen</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::RecentConnections</name>
+    <message>
+        <source>address %1</source>
+        <translation>Adresse %1</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ScaledSpinBox</name>
+    <message>
+        <source>%1 .. %2</source>
+        <translation>%1 .. %2</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::SerialLink</name>
+    <message>
+        <source>no such serial device</source>
+        <translation>serielle Schnittstelle nicht vorhanden</translation>
+    </message>
+    <message>
+        <source>permission denied (the port may be in use by another program, or the user may lack access to it)</source>
+        <translation>Zugriff verweigert (die Schnittstelle wird vielleicht von einem anderen Programm benutzt, oder dem Benutzer fehlt das Zugriffsrecht)</translation>
+    </message>
+    <message>
+        <source>the port is already open</source>
+        <translation>die Schnittstelle ist bereits geöffnet</translation>
+    </message>
+    <message>
+        <source>the device is no longer available (adapter unplugged?)</source>
+        <translation>das Gerät ist nicht mehr verfügbar (Adapter abgezogen?)</translation>
+    </message>
+    <message>
+        <source>reading from the port failed</source>
+        <translation>Lesen von der Schnittstelle fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>writing to the port failed</source>
+        <translation>Schreiben auf die Schnittstelle fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>the port does not support these settings</source>
+        <translation>die Schnittstelle unterstützt diese Einstellungen nicht</translation>
+    </message>
+    <message>
+        <source>the port is not open</source>
+        <translation>die Schnittstelle ist nicht geöffnet</translation>
+    </message>
+    <message>
+        <source>timeout</source>
+        <translation>Zeitüberschreitung</translation>
+    </message>
+    <message>
+        <source>unknown serial port error</source>
+        <translation>unbekannter Fehler der seriellen Schnittstelle</translation>
+    </message>
+    <message>
+        <source>no serial device given</source>
+        <translation>keine serielle Schnittstelle angegeben</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::SetsDialog</name>
+    <message>
+        <source>Write to Sets</source>
+        <translation>In Sätze schreiben</translation>
+    </message>
+    <message>
+        <source>Write the value to these sets:</source>
+        <translation>Den Wert in diese Sätze schreiben:</translation>
+    </message>
+    <message>
+        <source>&amp;All</source>
+        <translation>&amp;Alle</translation>
+    </message>
+    <message>
+        <source>&amp;None</source>
+        <translation>&amp;Keine</translation>
+    </message>
+    <message>
+        <source>Copy Set</source>
+        <translation>Satz kopieren</translation>
+    </message>
+    <message>
+        <source>Copy every set-programmable value of one set into another:</source>
+        <translation>Alle satzprogrammierbaren Werte eines Satzes in einen anderen kopieren:</translation>
+    </message>
+    <message>
+        <source>&amp;From:</source>
+        <translation>&amp;Von:</translation>
+    </message>
+    <message>
+        <source>&amp;To:</source>
+        <translation>&amp;Nach:</translation>
+    </message>
+    <message>
+        <source>Set %1 (active)</source>
+        <translation>Satz %1 (aktiv)</translation>
+    </message>
+    <message>
+        <source>Set %1</source>
+        <translation>Satz %1</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::SimulatedLink</name>
+    <message>
+        <source>parity error on a received character</source>
+        <translation>Paritätsfehler in einem empfangenen Zeichen</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::SimulatorServer</name>
+    <message>
+        <source>&quot;%1&quot; is not an IP address to listen on (give e.g. 127.0.0.1, localhost or *)</source>
+        <translation>„%1“ ist keine IP-Adresse zum Lauschen (z. B. 127.0.0.1, localhost oder * angeben)</translation>
+    </message>
+    <message>
+        <source>cannot listen on %1:%2: %3</source>
+        <translation>Lauschen auf %1:%2 nicht möglich: %3</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::StartupOptions</name>
+    <message>
+        <source>Usage: drivedesk [--connect TARGET] [options]
+
+The DriveDesk parameter editor. Without --connect it opens the connection dialog.
+
+  --connect TARGET     tcp:HOST:PORT, serial:DEVICE or sim (the simulated drive)
+  --protocol NAME      hsp5 (default), din66019ii or din66019
+  --address N          drive address on a DIN66019(II) bus, 0..239 (default 1)
+  --baud N             baud rate (default 38400)
+  --language en|de     language of the window and of the drive&apos;s texts
+</source>
+        <translation>Aufruf: drivedesk [--connect ZIEL] [Optionen]
+
+Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
+
+  --connect ZIEL       tcp:HOST:PORT, serial:GERÄT oder sim (der simulierte Umrichter)
+  --protocol NAME      hsp5 (Vorgabe), din66019ii oder din66019
+  --address N          Umrichteradresse an einem DIN66019(II)-Bus, 0..239 (Vorgabe 1)
+  --baud N             Baudrate (Vorgabe 38400)
+  --language en|de     Sprache des Fensters und der Texte des Umrichters
+</translation>
+    </message>
+    <message>
+        <source>unexpected argument &quot;%1&quot;</source>
+        <translation>unerwartetes Argument „%1“</translation>
+    </message>
+    <message>
+        <source>--protocol, --address and --baud belong to --connect: give tcp:HOST:PORT, serial:DEVICE or sim</source>
+        <translation>--protocol, --address und --baud gehören zu --connect: tcp:HOST:PORT, serial:GERÄT oder sim angeben</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::TcpLink</name>
+    <message>
+        <source>no answer from the device server within %1 ms</source>
+        <translation>keine Antwort vom Geräteserver innerhalb von %1 ms</translation>
+    </message>
+    <message>
+        <source>no host or port given</source>
+        <translation>kein Host oder Port angegeben</translation>
+    </message>
+    <message>
+        <source>writing failed (%1)</source>
+        <translation>Schreiben fehlgeschlagen (%1)</translation>
+    </message>
+    <message>
+        <source>the device server closed the connection</source>
+        <translation>der Geräteserver hat die Verbindung geschlossen</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::TelegramMonitor</name>
+    <message>
+        <source>Telegram monitor</source>
+        <translation>Telegramm-Monitor</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Kopieren</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Hold new telegrams back and show them on resume</source>
+        <translation>Neue Telegramme zurückhalten und beim Fortsetzen anzeigen</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Leeren</translation>
+    </message>
+    <message>
+        <source>Forget every telegram listed and held</source>
+        <translation>Alle angezeigten und zurückgehaltenen Telegramme verwerfen</translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation>Speichern …</translation>
+    </message>
+    <message>
+        <source>Save the telegrams the filter shows to a CSV or text file</source>
+        <translation>Die vom Filter gezeigten Telegramme in einer CSV- oder Textdatei speichern</translation>
+    </message>
+    <message>
+        <source>Filter: meaning, hex bytes or characters</source>
+        <translation>Filter: Bedeutung, Hex-Bytes oder Zeichen</translation>
+    </message>
+    <message>
+        <source>Errors only</source>
+        <translation>Nur Fehler</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Fortsetzen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %Ln telegram(s) to %1.</source>
+        <translation>
+            <numerusform>%Ln Telegramm in %1 gespeichert.</numerusform>
+            <numerusform>%Ln Telegramme in %1 gespeichert.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <source>Save telegrams</source>
+        <translation>Telegramme speichern</translation>
+    </message>
+    <message>
+        <source>Text files (*.txt)</source>
+        <translation>Textdateien (*.txt)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %Ln telegram(s) shown</source>
+        <translation>
+            <numerusform>%1 von %Ln Telegramm angezeigt</numerusform>
+            <numerusform>%1 von %Ln Telegrammen angezeigt</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln telegram(s)</source>
+        <translation>
+            <numerusform>%Ln Telegramm</numerusform>
+            <numerusform>%Ln Telegramme</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln older telegram(s) dropped: the monitor keeps the latest %1</source>
+        <translation>
+            <numerusform>%Ln älteres Telegramm verworfen: der Monitor behält die letzten %1</numerusform>
+            <numerusform>%Ln ältere Telegramme verworfen: der Monitor behält die letzten %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>paused: %Ln telegram(s) held, shown on resume</source>
+        <translation>
+            <numerusform>angehalten: %Ln Telegramm zurückgehalten, wird beim Fortsetzen angezeigt</numerusform>
+            <numerusform>angehalten: %Ln Telegramme zurückgehalten, werden beim Fortsetzen angezeigt</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::TrafficModel</name>
+    <message numerus="yes">
+        <source>%n byte(s)</source>
+        <translation>
+            <numerusform>%n Byte</numerusform>
+            <numerusform>%n Bytes</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ValueWriter</name>
+    <message>
+        <source>this drive has no parameter %1</source>
+        <translation>dieser Umrichter hat keinen Parameter %1</translation>
+    </message>
+</context>
+<context>
+    <name>ParameterDocument</name>
+    <message>
+        <source>expected an object</source>
+        <translation>Objekt erwartet</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>fehlt</translation>
+    </message>
+    <message>
+        <source>expected an integer</source>
+        <translation>ganze Zahl erwartet</translation>
+    </message>
+    <message>
+        <source>%1 is outside %2..%3</source>
+        <translation>%1 liegt außerhalb von %2..%3</translation>
+    </message>
+    <message>
+        <source>expected a string</source>
+        <translation>Zeichenkette erwartet</translation>
+    </message>
+    <message>
+        <source>expected true or false</source>
+        <translation>true oder false erwartet</translation>
+    </message>
+    <message>
+        <source>expected an array</source>
+        <translation>Array erwartet</translation>
+    </message>
+    <message>
+        <source>unknown field</source>
+        <translation>unbekanntes Feld</translation>
+    </message>
+    <message>
+        <source>cannot write &apos;%1&apos;: %2</source>
+        <translation>„%1“ kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>cannot save &apos;%1&apos;: %2</source>
+        <translation>„%1“ kann nicht gespeichert werden: %2</translation>
+    </message>
+    <message>
+        <source>cannot read &apos;%1&apos;: %2</source>
+        <translation>„%1“ kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is too large for a parameter file (%2 bytes, at most %3)</source>
+        <translation>„%1“ ist zu groß für eine Parameterdatei (%2 Bytes, höchstens %3)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; names %2, not the address %3</source>
+        <translation>„%1“ nennt %2, nicht die Adresse %3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; does not agree with scaling.flags (unit &apos;%2&apos;)</source>
+        <translation>„%1“ passt nicht zu scaling.flags (Einheit „%2“)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 does not agree with scaling.flags (%n decimals)</source>
+        <translation>
+            <numerusform>%1 passt nicht zu scaling.flags (%n Nachkommastelle)</numerusform>
+            <numerusform>%1 passt nicht zu scaling.flags (%n Nachkommastellen)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 does not agree with properties1 bit 11</source>
+        <translation>%1 passt nicht zu properties1 Bit 11</translation>
+    </message>
+    <message>
+        <source>%1 does not agree with properties2 bit 3</source>
+        <translation>%1 passt nicht zu properties2 Bit 3</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n entries; a set-programmable parameter has one for each of the 8 sets</source>
+        <translation>
+            <numerusform>%n Eintrag; ein satzprogrammierbarer Parameter hat einen für jeden der 8 Sätze</numerusform>
+            <numerusform>%n Einträge; ein satzprogrammierbarer Parameter hat einen für jeden der 8 Sätze</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n entries; expected 1 (or 8, one for each set)</source>
+        <translation>
+            <numerusform>%n Eintrag; erwartet wird 1 (oder 8, einer für jeden Satz)</numerusform>
+            <numerusform>%n Einträge; erwartet wird 1 (oder 8, einer für jeden Satz)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1, but plaintextDefinitions has %n entries</source>
+        <translation>
+            <numerusform>%1, aber plaintextDefinitions hat %n Eintrag</numerusform>
+            <numerusform>%1, aber plaintextDefinitions hat %n Einträge</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 is not in group %2 (%3)</source>
+        <translation>%1 liegt nicht in Gruppe %2 (%3)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not one Latin-1 character</source>
+        <translation>„%1“ ist nicht genau ein Latin-1-Zeichen</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; appears twice</source>
+        <translation>„%1“ kommt doppelt vor</translation>
+    </message>
+    <message>
+        <source>%1 is also the address of group %2</source>
+        <translation>%1 ist auch die Adresse von Gruppe %2</translation>
+    </message>
+    <message>
+        <source>%1 appears twice</source>
+        <translation>%1 kommt doppelt vor</translation>
+    </message>
+    <message>
+        <source>not valid JSON: %1 at line %2, column %3</source>
+        <translation>kein gültiges JSON: %1 in Zeile %2, Spalte %3</translation>
+    </message>
+    <message>
+        <source>not a DriveDesk parameter file: the document is not a JSON object</source>
+        <translation>keine DriveDesk-Parameterdatei: das Dokument ist kein JSON-Objekt</translation>
+    </message>
+    <message>
+        <source>not a DriveDesk parameter file: format is %1, expected &apos;%2&apos;</source>
+        <translation>keine DriveDesk-Parameterdatei: Format ist %1, erwartet wird „%2“</translation>
+    </message>
+    <message>
+        <source>missing or not a string</source>
+        <translation>fehlt oder ist keine Zeichenkette</translation>
+    </message>
+    <message>
+        <source>version: missing or not a number</source>
+        <translation>version: fehlt oder ist keine Zahl</translation>
+    </message>
+    <message>
+        <source>version: %1 is not supported (this DriveDesk reads version %2)</source>
+        <translation>version: %1 wird nicht unterstützt (dieses DriveDesk liest Version %2)</translation>
+    </message>
+</context>
+<context>
+    <name>ParameterFormat</name>
+    <message>
+        <source>%1 is outside the limits %2 .. %3</source>
+        <translation>%1 liegt außerhalb der Grenzwerte %2 .. %3</translation>
+    </message>
+    <message>
+        <source>no value given</source>
+        <translation>kein Wert angegeben</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a whole number</source>
+        <translation>„%1“ ist keine ganze Zahl</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; does not fit in 32 bits</source>
+        <translation>„%1“ passt nicht in 32 Bit</translation>
+    </message>
+    <message>
+        <source>%1 cannot be set exactly: the nearest value this parameter can hold is %2</source>
+        <translation>%1 lässt sich nicht genau einstellen: der nächste Wert, den dieser Parameter annehmen kann, ist %2</translation>
+    </message>
+</context>
+<context>
+    <name>ParameterId</name>
+    <message>
+        <source>no parameter given</source>
+        <translation>kein Parameter angegeben</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: address above FFFFh</source>
+        <translation>„%1“: Adresse über FFFFh</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a parameter id: write it as group.number (ru.03) or as a hexadecimal address (0203h, 0x0203)</source>
+        <translation>„%1“ ist keine Parameterkennung: als Gruppe.Nummer (ru.03) oder als hexadezimale Adresse (0203h, 0x0203) angeben</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: the group id is ambiguous (&apos;%2&apos; or &apos;%3&apos;); write it with its case</source>
+        <translation>„%1“: die Gruppenkennung ist mehrdeutig („%2“ oder „%3“); mit Groß-/Kleinschreibung angeben</translation>
+    </message>
+    <message>
+        <source>no group &apos;%1&apos; on this drive</source>
+        <translation>keine Gruppe „%1“ in diesem Umrichter</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: parameter number above 255</source>
+        <translation>„%1“: Parameternummer über 255</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: parameter number above %2 in group %3</source>
+        <translation>„%1“: Parameternummer über %2 in Gruppe %3</translation>
+    </message>
+</context>
+<context>
+    <name>Plaintexts</name>
+    <message>
+        <source>definition %1</source>
+        <translation>Definition %1</translation>
+    </message>
+    <message>
+        <source>%1 (no plaintext in %2)</source>
+        <translation>%1 (kein Klartext in %2)</translation>
+    </message>
+    <message>
+        <source>%1 (no plaintext)</source>
+        <translation>%1 (kein Klartext)</translation>
+    </message>
+    <message>
+        <source>other bits %1</source>
+        <translation>weitere Bits %1</translation>
+    </message>
+    <message>
+        <source>this parameter has no plaintexts</source>
+        <translation>dieser Parameter hat keine Klartexte</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a plaintext of this parameter; allowed: %2</source>
+        <translation>„%1“ ist kein Klartext dieses Parameters; zulässig: %2</translation>
+    </message>
+    <message>
+        <source>no text given; allowed: %1</source>
+        <translation>kein Text angegeben; zulässig: %1</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has an empty text between &apos;|&apos;</source>
+        <translation>„%1“ hat einen leeren Text zwischen „|“</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; and &apos;%2&apos; are texts of the same definition</source>
+        <translation>„%1“ und „%2“ sind Texte derselben Definition</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is a text of several definitions: give one text for each definition, in order (%2)</source>
+        <translation>„%1“ ist ein Text mehrerer Definitionen: je Definition einen Text angeben, in dieser Reihenfolge (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>TrafficFile</name>
+    <message>
+        <source>Cannot save the telegrams to %1: %2</source>
+        <translation>Die Telegramme können nicht in %1 gespeichert werden: %2</translation>
+    </message>
+    <message>
+        <source>no file name given</source>
+        <translation>kein Dateiname angegeben</translation>
+    </message>
+</context>
+<context>
+    <name>TrafficFormat</name>
+    <message>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>Direction</source>
+        <translation>Richtung</translation>
+    </message>
+    <message>
+        <source>Bytes</source>
+        <translation>Bytes</translation>
+    </message>
+    <message>
+        <source>Characters</source>
+        <translation>Zeichen</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Bedeutung</translation>
+    </message>
+    <message>
+        <source>→ drive</source>
+        <translation>→ Umrichter</translation>
+    </message>
+    <message>
+        <source>← drive</source>
+        <translation>← Umrichter</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>Fehler</translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,2046 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="en" sourcelanguage="en">
+<context>
+    <name>ConnectionOptions</name>
+    <message>
+        <source>--%1 %2: expected a number from %3 to %4</source>
+        <translation>--%1 %2: expected a number from %3 to %4</translation>
+    </message>
+    <message>
+        <source>unknown language &quot;%1&quot;: use en or de</source>
+        <translation>unknown language &quot;%1&quot;: use en or de</translation>
+    </message>
+    <message>
+        <source>--connect is missing: give tcp:HOST:PORT, serial:DEVICE or sim</source>
+        <translation>--connect is missing: give tcp:HOST:PORT, serial:DEVICE or sim</translation>
+    </message>
+    <message>
+        <source>unknown protocol &quot;%1&quot;: use hsp5, din66019ii or din66019</source>
+        <translation>unknown protocol &quot;%1&quot;: use hsp5, din66019ii or din66019</translation>
+    </message>
+</context>
+<context>
+    <name>ConnectionSettingsText</name>
+    <message>
+        <source>&quot;%1&quot; is not HOST:PORT (an IPv6 address is written [ADDRESS]:PORT)</source>
+        <translation>&quot;%1&quot; is not HOST:PORT (an IPv6 address is written [ADDRESS]:PORT)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; has no port: write tcp:HOST:PORT</source>
+        <translation>&quot;%1&quot; has no port: write tcp:HOST:PORT</translation>
+    </message>
+    <message>
+        <source>the host is missing in &quot;%1&quot;: write tcp:HOST:PORT</source>
+        <translation>the host is missing in &quot;%1&quot;: write tcp:HOST:PORT</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a TCP port (1..65535)</source>
+        <translation>&quot;%1&quot; is not a TCP port (1..65535)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: the simulated drive takes no further address (write sim)</source>
+        <translation>&quot;%1&quot;: the simulated drive takes no further address (write sim)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; names no serial device: write serial:/dev/ttyUSB0 or serial:COM3</source>
+        <translation>&quot;%1&quot; names no serial device: write serial:/dev/ttyUSB0 or serial:COM3</translation>
+    </message>
+    <message>
+        <source>unknown connection &quot;%1&quot;: expected tcp:HOST:PORT, serial:DEVICE or sim</source>
+        <translation>unknown connection &quot;%1&quot;: expected tcp:HOST:PORT, serial:DEVICE or sim</translation>
+    </message>
+    <message>
+        <source> drive %1</source>
+        <translation> drive %1</translation>
+    </message>
+    <message>
+        <source>simulated %1 drive</source>
+        <translation>simulated %1 drive</translation>
+    </message>
+    <message>
+        <source>%1 on %2 (%3 %4)</source>
+        <translation>%1 on %2 (%3 %4)</translation>
+    </message>
+    <message>
+        <source>%1 via %2</source>
+        <translation>%1 via %2</translation>
+    </message>
+</context>
+<context>
+    <name>DisplayScaling</name>
+    <message>
+        <source>calculation mode %1</source>
+        <translation>calculation mode %1</translation>
+    </message>
+    <message>
+        <source>divisor 0</source>
+        <translation>divisor 0</translation>
+    </message>
+    <message>
+        <source>%1 (no scaling: %2)</source>
+        <translation>%1 (no scaling: %2)</translation>
+    </message>
+    <message>
+        <source>%1 (no scaling: value + offset is 0)</source>
+        <translation>%1 (no scaling: value + offset is 0)</translation>
+    </message>
+    <message>
+        <source>no value given</source>
+        <translation>no value given</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; cannot be converted: the scaling of this parameter is invalid (%2)</source>
+        <translation>&apos;%1&apos; cannot be converted: the scaling of this parameter is invalid (%2)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a number</source>
+        <translation>&apos;%1&apos; is not a number</translation>
+    </message>
+    <message>
+        <source>unit &apos;%1&apos; does not match: this value has no unit</source>
+        <translation>unit &apos;%1&apos; does not match: this value has no unit</translation>
+    </message>
+    <message>
+        <source>unit &apos;%1&apos; does not match &apos;%2&apos;</source>
+        <translation>unit &apos;%1&apos; does not match &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a hexadecimal number</source>
+        <translation>&apos;%1&apos; is not a hexadecimal number</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; does not fit in 32 bits</source>
+        <translation>&apos;%1&apos; does not fit in 32 bits</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has too many digits</source>
+        <translation>&apos;%1&apos; has too many digits</translation>
+    </message>
+    <message>
+        <source>every raw value shows 0 in this scaling (multiplier 0): the raw value cannot be chosen</source>
+        <translation>every raw value shows 0 in this scaling (multiplier 0): the raw value cannot be chosen</translation>
+    </message>
+    <message>
+        <source>no raw value gives %1 in this scaling</source>
+        <translation>no raw value gives %1 in this scaling</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is out of range</source>
+        <translation>&apos;%1&apos; is out of range</translation>
+    </message>
+    <message>
+        <source>no raw value gives 0 in this scaling</source>
+        <translation>no raw value gives 0 in this scaling</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is out of range: it needs raw value %2, beyond 32 bits</source>
+        <translation>&apos;%1&apos; is out of range: it needs raw value %2, beyond 32 bits</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::AccessController</name>
+    <message>
+        <source>The password level could not be read: %1</source>
+        <translation>The password level could not be read: %1</translation>
+    </message>
+    <message>
+        <source>Password not accepted: %1</source>
+        <translation>Password not accepted: %1</translation>
+    </message>
+    <message>
+        <source>Password accepted</source>
+        <translation>Password accepted</translation>
+    </message>
+    <message>
+        <source>The password parameter reads %1, which names no password level: the level stays %2</source>
+        <translation>The password parameter reads %1, which names no password level: the level stays %2</translation>
+    </message>
+    <message>
+        <source>Password level: %1</source>
+        <translation>Password level: %1</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::BitFieldEditor</name>
+    <message>
+        <source>Definition %1</source>
+        <translation>Definition %1</translation>
+    </message>
+    <message>
+        <source>%1 (no plaintext)</source>
+        <translation>%1 (no plaintext)</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ClientWorker</name>
+    <message>
+        <source>arrived before the open request was sent, ignored: %1</source>
+        <translation>arrived before the open request was sent, ignored: %1</translation>
+    </message>
+    <message>
+        <source>a request where answers are expected, ignored: %1</source>
+        <translation>a request where answers are expected, ignored: %1</translation>
+    </message>
+    <message>
+        <source>the answer with invoke id %1 belongs to no open request, ignored</source>
+        <translation>the answer with invoke id %1 belongs to no open request, ignored</translation>
+    </message>
+    <message>
+        <source>the answer does not match its request (%1), not accepted</source>
+        <translation>the answer does not match its request (%1), not accepted</translation>
+    </message>
+    <message>
+        <source>line error: %1</source>
+        <translation>line error: %1</translation>
+    </message>
+    <message>
+        <source>inverter request: %1</source>
+        <translation>inverter request: %1</translation>
+    </message>
+    <message>
+        <source>cannot answer the inverter&apos;s request: %1</source>
+        <translation>cannot answer the inverter&apos;s request: %1</translation>
+    </message>
+    <message>
+        <source>the client was closed</source>
+        <translation>the client was closed</translation>
+    </message>
+    <message>
+        <source>disconnected</source>
+        <translation>disconnected</translation>
+    </message>
+    <message>
+        <source>the link was lost</source>
+        <translation>the link was lost</translation>
+    </message>
+    <message>
+        <source>only requests can be sent, this is an answer</source>
+        <translation>only requests can be sent, this is an answer</translation>
+    </message>
+    <message>
+        <source>%1 has no %2 of %3</source>
+        <translation>%1 has no %2 of %3</translation>
+    </message>
+    <message>
+        <source>write</source>
+        <translation>write</translation>
+    </message>
+    <message>
+        <source>read</source>
+        <translation>read</translation>
+    </message>
+    <message>
+        <source>drive address %1 is outside 0..239 (240..255: groups and broadcast)</source>
+        <translation>drive address %1 is outside 0..239 (240..255: groups and broadcast)</translation>
+    </message>
+    <message>
+        <source>address %1 is a group or broadcast address: no drive answers there, so it takes writes only</source>
+        <translation>address %1 is a group or broadcast address: no drive answers there, so it takes writes only</translation>
+    </message>
+    <message>
+        <source>the codec cannot encode it</source>
+        <translation>the codec cannot encode it</translation>
+    </message>
+    <message>
+        <source>to drive %1: %2</source>
+        <translation>to drive %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ConnectionDialog</name>
+    <message>
+        <source>Connect to a drive</source>
+        <translation>Connect to a drive</translation>
+    </message>
+    <message>
+        <source>&amp;Recent connections</source>
+        <translation>&amp;Recent connections</translation>
+    </message>
+    <message>
+        <source>&amp;Serial port</source>
+        <translation>&amp;Serial port</translation>
+    </message>
+    <message>
+        <source>&amp;TCP</source>
+        <translation>&amp;TCP</translation>
+    </message>
+    <message>
+        <source>Si&amp;mulated drive</source>
+        <translation>Si&amp;mulated drive</translation>
+    </message>
+    <message>
+        <source>HSP5</source>
+        <translation>HSP5</translation>
+    </message>
+    <message>
+        <source>DIN66019II</source>
+        <translation>DIN66019II</translation>
+    </message>
+    <message>
+        <source>DIN66019</source>
+        <translation>DIN66019</translation>
+    </message>
+    <message>
+        <source>The drive&apos;s address on a DIN66019(II) bus, 0..239</source>
+        <translation>The drive&apos;s address on a DIN66019(II) bus, 0..239</translation>
+    </message>
+    <message>
+        <source>&amp;Find drives...</source>
+        <translation>&amp;Find drives...</translation>
+    </message>
+    <message>
+        <source>Ask every address 0..239 on the bus which drives answer</source>
+        <translation>Ask every address 0..239 on the bus which drives answer</translation>
+    </message>
+    <message>
+        <source>Drive &amp;address:</source>
+        <translation>Drive &amp;address:</translation>
+    </message>
+    <message>
+        <source>&amp;Protocol:</source>
+        <translation>&amp;Protocol:</translation>
+    </message>
+    <message>
+        <source>&amp;Connect</source>
+        <translation>&amp;Connect</translation>
+    </message>
+    <message>
+        <source>The serial port, or type a device such as /dev/ttyUSB0 or COM3</source>
+        <translation>The serial port, or type a device such as /dev/ttyUSB0 or COM3</translation>
+    </message>
+    <message>
+        <source>R&amp;efresh</source>
+        <translation>R&amp;efresh</translation>
+    </message>
+    <message>
+        <source>Look for serial ports again</source>
+        <translation>Look for serial ports again</translation>
+    </message>
+    <message>
+        <source>P&amp;ort:</source>
+        <translation>P&amp;ort:</translation>
+    </message>
+    <message>
+        <source>&amp;Baud rate:</source>
+        <translation>&amp;Baud rate:</translation>
+    </message>
+    <message>
+        <source>host name or IP address of the serial device server</source>
+        <translation>host name or IP address of the serial device server</translation>
+    </message>
+    <message>
+        <source>&amp;Host:</source>
+        <translation>&amp;Host:</translation>
+    </message>
+    <message>
+        <source>Po&amp;rt:</source>
+        <translation>Po&amp;rt:</translation>
+    </message>
+    <message>
+        <source>A simulated KEB COMBIVERT F5 running inside DriveDesk: every parameter, password levels, eight sets and a motor to watch. Nothing needs to be plugged in.</source>
+        <translation>A simulated KEB COMBIVERT F5 running inside DriveDesk: every parameter, password levels, eight sets and a motor to watch. Nothing needs to be plugged in.</translation>
+    </message>
+    <message>
+        <source>no serial port found</source>
+        <translation>no serial port found</translation>
+    </message>
+    <message>
+        <source>(none yet)</source>
+        <translation>(none yet)</translation>
+    </message>
+    <message>
+        <source>No serial port was found. Plug in the adapter and press Refresh, or type the device (e.g. /dev/ttyUSB0 or COM3).</source>
+        <translation>No serial port was found. Plug in the adapter and press Refresh, or type the device (e.g. /dev/ttyUSB0 or COM3).</translation>
+    </message>
+    <message>
+        <source>Choose the serial port the drive is connected to.</source>
+        <translation>Choose the serial port the drive is connected to.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a baud rate: enter a number such as 38400.</source>
+        <translation>&quot;%1&quot; is not a baud rate: enter a number such as 38400.</translation>
+    </message>
+    <message>
+        <source>Enter the host name or IP address of the serial device server.</source>
+        <translation>Enter the host name or IP address of the serial device server.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a host name or IP address.</source>
+        <translation>&quot;%1&quot; is not a host name or IP address.</translation>
+    </message>
+    <message>
+        <source>Finding drives needs a DIN66019II or DIN66019 bus: HSP5 is point to point. Choose the protocol first.</source>
+        <translation>Finding drives needs a DIN66019II or DIN66019 bus: HSP5 is point to point. Choose the protocol first.</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::DriveInfoDialog</name>
+    <message>
+        <source>Identification</source>
+        <translation>Identification</translation>
+    </message>
+    <message>
+        <source>not read: %1</source>
+        <translation>not read: %1</translation>
+    </message>
+    <message>
+        <source>no value</source>
+        <translation>no value</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>Connection</translation>
+    </message>
+    <message>
+        <source>Protocol</source>
+        <translation>Protocol</translation>
+    </message>
+    <message>
+        <source>Drive address</source>
+        <translation>Drive address</translation>
+    </message>
+    <message>
+        <source>Parameter groups</source>
+        <translation>Parameter groups</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>Parameters</translation>
+    </message>
+    <message>
+        <source>Scan incomplete</source>
+        <translation>Scan incomplete</translation>
+    </message>
+    <message>
+        <source>Drive information</source>
+        <translation>Drive information</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Copy</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::DriveScanner</name>
+    <message>
+        <source>identification</source>
+        <translation>identification</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>cancelled</translation>
+    </message>
+    <message>
+        <source>group page %1h</source>
+        <translation>group page %1h</translation>
+    </message>
+    <message>
+        <source>group page %1h: %2</source>
+        <translation>group page %1h: %2</translation>
+    </message>
+    <message>
+        <source>group %1: name</source>
+        <translation>group %1: name</translation>
+    </message>
+    <message>
+        <source>name</source>
+        <translation>name</translation>
+    </message>
+    <message>
+        <source>limits</source>
+        <translation>limits</translation>
+    </message>
+    <message>
+        <source>default value</source>
+        <translation>default value</translation>
+    </message>
+    <message>
+        <source>properties</source>
+        <translation>properties</translation>
+    </message>
+    <message>
+        <source>values: not read, the properties are unknown</source>
+        <translation>values: not read, the properties are unknown</translation>
+    </message>
+    <message>
+        <source>display scaling</source>
+        <translation>display scaling</translation>
+    </message>
+    <message>
+        <source>plaintext indices</source>
+        <translation>plaintext indices</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>value</translation>
+    </message>
+    <message>
+        <source>value of set %1</source>
+        <translation>value of set %1</translation>
+    </message>
+    <message>
+        <source>plaintexts: the drive names %1 definitions, only %2 can be read</source>
+        <translation>plaintexts: the drive names %1 definitions, only %2 can be read</translation>
+    </message>
+    <message>
+        <source>plaintext definition %1</source>
+        <translation>plaintext definition %1</translation>
+    </message>
+    <message>
+        <source>plaintext %1.%2</source>
+        <translation>plaintext %1.%2</translation>
+    </message>
+    <message>
+        <source>group %1: parameter %2</source>
+        <translation>group %1: parameter %2</translation>
+    </message>
+    <message>
+        <source>the answer carries no %1</source>
+        <translation>the answer carries no %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 (and %n more)</source>
+        <translation>
+            <numerusform>%1 (and %n more)</numerusform>
+            <numerusform>%1 (and %n more)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::DriveSearch</name>
+    <message>
+        <source>the addresses %1..%2 hold no drive address (drives are 0..239)</source>
+        <translation>the addresses %1..%2 hold no drive address (drives are 0..239)</translation>
+    </message>
+    <message>
+        <source>drive %1: %2</source>
+        <translation>drive %1: %2</translation>
+    </message>
+    <message>
+        <source>drive %1 answered</source>
+        <translation>drive %1 answered</translation>
+    </message>
+    <message>
+        <source>no drive at %1</source>
+        <translation>no drive at %1</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::DriveSession</name>
+    <message>
+        <source>the scan was cancelled</source>
+        <translation>the scan was cancelled</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::EditController</name>
+    <message>
+        <source>Not written: this drive has no parameter %1</source>
+        <translation>Not written: this drive has no parameter %1</translation>
+    </message>
+    <message>
+        <source>%1 not written: no set chosen</source>
+        <translation>%1 not written: no set chosen</translation>
+    </message>
+    <message>
+        <source>Not reset: this drive has no parameter %1</source>
+        <translation>Not reset: this drive has no parameter %1</translation>
+    </message>
+    <message>
+        <source>%1 not reset: no set chosen</source>
+        <translation>%1 not reset: no set chosen</translation>
+    </message>
+    <message>
+        <source>%1 not reset%2: %3</source>
+        <translation>%1 not reset%2: %3</translation>
+    </message>
+    <message>
+        <source>%1 = %2 not written%3: %4</source>
+        <translation>%1 = %2 not written%3: %4</translation>
+    </message>
+    <message>
+        <source>Reset %1 to its default%2</source>
+        <translation>Reset %1 to its default%2</translation>
+    </message>
+    <message>
+        <source>Write %1 = %2%3</source>
+        <translation>Write %1 = %2%3</translation>
+    </message>
+    <message>
+        <source>%1 reset to its default%2</source>
+        <translation>%1 reset to its default%2</translation>
+    </message>
+    <message>
+        <source>%1 = %2 written%3</source>
+        <translation>%1 = %2 written%3</translation>
+    </message>
+    <message>
+        <source>; not%1: %2</source>
+        <translation>; not%1: %2</translation>
+    </message>
+    <message>
+        <source>; reading it back failed: %1</source>
+        <translation>; reading it back failed: %1</translation>
+    </message>
+    <message>
+        <source>%1%2: the value before the change is not known, so it stays as it is</source>
+        <translation>%1%2: the value before the change is not known, so it stays as it is</translation>
+    </message>
+    <message>
+        <source>Undone: %1</source>
+        <translation>Undone: %1</translation>
+    </message>
+    <message>
+        <source>Redone: %1</source>
+        <translation>Redone: %1</translation>
+    </message>
+    <message>
+        <source>Undo failed: %1: %2</source>
+        <translation>Undo failed: %1: %2</translation>
+    </message>
+    <message>
+        <source>Redo failed: %1: %2</source>
+        <translation>Redo failed: %1: %2</translation>
+    </message>
+    <message>
+        <source> in all sets</source>
+        <translation> in all sets</translation>
+    </message>
+    <message>
+        <source> in set %1</source>
+        <translation> in set %1</translation>
+    </message>
+    <message>
+        <source> in sets %1</source>
+        <translation> in sets %1</translation>
+    </message>
+    <message>
+        <source>the drive holds %1%2</source>
+        <translation>the drive holds %1%2</translation>
+    </message>
+    <message>
+        <source>Still copying set %1 to set %2</source>
+        <translation>Still copying set %1 to set %2</translation>
+    </message>
+    <message>
+        <source>Still reading the values</source>
+        <translation>Still reading the values</translation>
+    </message>
+    <message>
+        <source>Cannot copy set %1 to set %2: the sets are 0 to %3</source>
+        <translation>Cannot copy set %1 to set %2: the sets are 0 to %3</translation>
+    </message>
+    <message>
+        <source>Cannot copy set %1 onto itself</source>
+        <translation>Cannot copy set %1 onto itself</translation>
+    </message>
+    <message>
+        <source>Copy set %1 to set %2</source>
+        <translation>Copy set %1 to set %2</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Set %2 holds the values of set %1 already</source>
+        <translation>Set %2 holds the values of set %1 already</translation>
+    </message>
+    <message numerus="yes">
+        <source>Set %1 copied to set %2: %n value(s) written</source>
+        <translation>
+            <numerusform>Set %1 copied to set %2: %n value written</numerusform>
+            <numerusform>Set %1 copied to set %2: %n values written</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n refused (%1)</source>
+        <translation>
+            <numerusform>%n refused (%1)</numerusform>
+            <numerusform>%n refused (%1)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>stopped: %1</source>
+        <translation>stopped: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>cancelled, %n value(s) not copied</source>
+        <translation>
+            <numerusform>cancelled, %n value not copied</numerusform>
+            <numerusform>cancelled, %n values not copied</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) left as they are: read-only or above the password level</source>
+        <translation>
+            <numerusform>%n parameter left as it is: read-only or above the password level</numerusform>
+            <numerusform>%n parameters left as they are: read-only or above the password level</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) left out: the value in set %1 was never read</source>
+        <translation>
+            <numerusform>%n parameter left out: the value in set %1 was never read</numerusform>
+            <numerusform>%n parameters left out: the value in set %1 was never read</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) read</source>
+        <translation>
+            <numerusform>%n value read</numerusform>
+            <numerusform>%n values read</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n could not be read (first: %1%2: %3)</source>
+        <translation>
+            <numerusform>%n could not be read (%1%2: %3)</numerusform>
+            <numerusform>%n could not be read (first: %1%2: %3)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>cancelled, %n value(s) not read</source>
+        <translation>
+            <numerusform>cancelled, %n value not read</numerusform>
+            <numerusform>cancelled, %n values not read</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::FilterBar</name>
+    <message>
+        <source>Search every group by id, name or value</source>
+        <translation>Search every group by id, name or value</translation>
+    </message>
+    <message>
+        <source>&amp;Find...</source>
+        <translation>&amp;Find...</translation>
+    </message>
+    <message>
+        <source>Search parameters by id, name or value</source>
+        <translation>Search parameters by id, name or value</translation>
+    </message>
+    <message>
+        <source>Search every group by id (ru.3), name or value as you type (%1)</source>
+        <translation>Search every group by id (ru.3), name or value as you type (%1)</translation>
+    </message>
+    <message>
+        <source>&amp;Differs from default</source>
+        <translation>&amp;Differs from default</translation>
+    </message>
+    <message>
+        <source>&amp;Differs from Default</source>
+        <translation>&amp;Differs from Default</translation>
+    </message>
+    <message>
+        <source>Only parameters whose value differs from the default</source>
+        <translation>Only parameters whose value differs from the default</translation>
+    </message>
+    <message>
+        <source>F&amp;avourites</source>
+        <translation>F&amp;avourites</translation>
+    </message>
+    <message>
+        <source>F&amp;avourites Only</source>
+        <translation>F&amp;avourites Only</translation>
+    </message>
+    <message>
+        <source>Only the parameters marked with a star</source>
+        <translation>Only the parameters marked with a star</translation>
+    </message>
+    <message>
+        <source>&amp;Hide above password level</source>
+        <translation>&amp;Hide above password level</translation>
+    </message>
+    <message>
+        <source>&amp;Hide Parameters above Password Level</source>
+        <translation>&amp;Hide Parameters above Password Level</translation>
+    </message>
+    <message>
+        <source>Hide parameters the password level in force does not open; otherwise they are greyed out</source>
+        <translation>Hide parameters the password level in force does not open; otherwise they are greyed out</translation>
+    </message>
+    <message>
+        <source>Ra&amp;w values</source>
+        <translation>Ra&amp;w values</translation>
+    </message>
+    <message>
+        <source>Show &amp;Raw Values</source>
+        <translation>Show &amp;Raw Values</translation>
+    </message>
+    <message>
+        <source>Show the raw integers the drive holds instead of scaled values and plaintexts</source>
+        <translation>Show the raw integers the drive holds instead of scaled values and plaintexts</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::FindDrivesDialog</name>
+    <message>
+        <source>the %1 bus on %2 at %3 baud</source>
+        <translation>the %1 bus on %2 at %3 baud</translation>
+    </message>
+    <message>
+        <source>the %1 bus behind %2</source>
+        <translation>the %1 bus behind %2</translation>
+    </message>
+    <message>
+        <source>the simulated %1 bus</source>
+        <translation>the simulated %1 bus</translation>
+    </message>
+    <message>
+        <source>Find drives</source>
+        <translation>Find drives</translation>
+    </message>
+    <message>
+        <source>&amp;Stop</source>
+        <translation>&amp;Stop</translation>
+    </message>
+    <message>
+        <source>&amp;Connect</source>
+        <translation>&amp;Connect</translation>
+    </message>
+    <message>
+        <source>Search &amp;again</source>
+        <translation>Search &amp;again</translation>
+    </message>
+    <message>
+        <source>Drives that answered:</source>
+        <translation>Drives that answered:</translation>
+    </message>
+    <message>
+        <source>Asking every address %2..%3 on %1 whether a drive answers.</source>
+        <translation>Asking every address %2..%3 on %1 whether a drive answers.</translation>
+    </message>
+    <message>
+        <source>not connected to the bus</source>
+        <translation>not connected to the bus</translation>
+    </message>
+    <message>
+        <source>Opening the connection...</source>
+        <translation>Opening the connection...</translation>
+    </message>
+    <message>
+        <source>Searching...</source>
+        <translation>Searching...</translation>
+    </message>
+    <message>
+        <source>Stopped.</source>
+        <translation>Stopped.</translation>
+    </message>
+    <message>
+        <source>Stopped after %1 of %2 addresses.</source>
+        <translation>Stopped after %1 of %2 addresses.</translation>
+    </message>
+    <message>
+        <source>The search stopped: %1</source>
+        <translation>The search stopped: %1</translation>
+    </message>
+    <message>
+        <source>No drive answered. Check the wiring, the baud rate and the protocol.</source>
+        <translation>No drive answered. Check the wiring, the baud rate and the protocol.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n drive(s) answered.</source>
+        <translation>
+            <numerusform>%n drive answered.</numerusform>
+            <numerusform>%n drives answered.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Drive at address %1</source>
+        <translation>Drive at address %1</translation>
+    </message>
+    <message>
+        <source>Could not search: %1</source>
+        <translation>Could not search: %1</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::GroupListModel</name>
+    <message>
+        <source>All parameters</source>
+        <translation>All parameters</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>Group</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>Parameters</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::HexValueEdit</name>
+    <message>
+        <source>Hexadecimal, %1 .. %2</source>
+        <translation>Hexadecimal, %1 .. %2</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::MainWindow</name>
+    <message>
+        <source>DriveDesk</source>
+        <translation>DriveDesk</translation>
+    </message>
+    <message>
+        <source>Not connected. Choose Connect... (%1) to reach a drive or the simulated one.</source>
+        <translation>Not connected. Choose Connect... (%1) to reach a drive or the simulated one.</translation>
+    </message>
+    <message>
+        <source>Connected. Reading the drive...</source>
+        <translation>Connected. Reading the drive...</translation>
+    </message>
+    <message>
+        <source>Reconnected to %1; reading the values again.</source>
+        <translation>Reconnected to %1; reading the values again.</translation>
+    </message>
+    <message>
+        <source>Reading the drive...</source>
+        <translation>Reading the drive...</translation>
+    </message>
+    <message>
+        <source>Connecting...</source>
+        <translation>Connecting...</translation>
+    </message>
+    <message>
+        <source>Connecting to %1...</source>
+        <translation>Connecting to %1...</translation>
+    </message>
+    <message>
+        <source>Not connected</source>
+        <translation>Not connected</translation>
+    </message>
+    <message>
+        <source>Connected: %1</source>
+        <translation>Connected: %1</translation>
+    </message>
+    <message>
+        <source>Connection lost</source>
+        <translation>Connection lost</translation>
+    </message>
+    <message>
+        <source>Reading the drive: %1</source>
+        <translation>Reading the drive: %1</translation>
+    </message>
+    <message>
+        <source>%1 - DriveDesk</source>
+        <translation>%1 - DriveDesk</translation>
+    </message>
+    <message>
+        <source>The drive reported no parameters.</source>
+        <translation>The drive reported no parameters.</translation>
+    </message>
+    <message>
+        <source>Nothing was read from the drive: %1.</source>
+        <translation>Nothing was read from the drive: %1.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Read %n parameter(s)</source>
+        <translation>
+            <numerusform>Read %n parameter</numerusform>
+            <numerusform>Read %n parameters</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source> in %n group(s).</source>
+        <translation>
+            <numerusform> in %n group.</numerusform>
+            <numerusform> in %n groups.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Nothing was read: %1. Press Refresh (%2) to read the drive.</source>
+        <translation>Nothing was read: %1. Press Refresh (%2) to read the drive.</translation>
+    </message>
+    <message>
+        <source>The drive was read only in part: %1</source>
+        <translation>The drive was read only in part: %1</translation>
+    </message>
+    <message>
+        <source>The connection to the drive was lost: %1. What was read stays shown; editing is off until the drive is reconnected.</source>
+        <translation>The connection to the drive was lost: %1. What was read stays shown; editing is off until the drive is reconnected.</translation>
+    </message>
+    <message>
+        <source>Connection lost: %1</source>
+        <translation>Connection lost: %1</translation>
+    </message>
+    <message>
+        <source>Could not connect: %1</source>
+        <translation>Could not connect: %1</translation>
+    </message>
+    <message>
+        <source>Could not connect to %1: %2</source>
+        <translation>Could not connect to %1: %2</translation>
+    </message>
+    <message>
+        <source>Password level: %1</source>
+        <translation>Password level: %1</translation>
+    </message>
+    <message>
+        <source>?</source>
+        <translation>?</translation>
+    </message>
+    <message>
+        <source>Active set: %1</source>
+        <translation>Active set: %1</translation>
+    </message>
+    <message>
+        <source>Set pointer (Fr.09): %1</source>
+        <translation>Set pointer (Fr.09): %1</translation>
+    </message>
+    <message>
+        <source>Disconnected from %1. What was read stays shown.</source>
+        <translation>Disconnected from %1. What was read stays shown.</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>&amp;Connect...</source>
+        <translation>&amp;Connect...</translation>
+    </message>
+    <message>
+        <source>Connect to a drive or the simulated one</source>
+        <translation>Connect to a drive or the simulated one</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Disconnect</translation>
+    </message>
+    <message>
+        <source>&amp;Find Drives...</source>
+        <translation>&amp;Find Drives...</translation>
+    </message>
+    <message>
+        <source>Look for drives at the addresses 0..239 of a DIN66019II bus</source>
+        <translation>Look for drives at the addresses 0..239 of a DIN66019II bus</translation>
+    </message>
+    <message>
+        <source>&amp;Refresh</source>
+        <translation>&amp;Refresh</translation>
+    </message>
+    <message>
+        <source>Read every value from the drive again</source>
+        <translation>Read every value from the drive again</translation>
+    </message>
+    <message>
+        <source>&amp;Poll Live Values</source>
+        <translation>&amp;Poll Live Values</translation>
+    </message>
+    <message>
+        <source>Read the run display (ru) again and again</source>
+        <translation>Read the run display (ru) again and again</translation>
+    </message>
+    <message>
+        <source>Every %1</source>
+        <translation>Every %1</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Undo</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Redo</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Undo</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Redo</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Undo %1</translation>
+    </message>
+    <message>
+        <source>Undo %1</source>
+        <translation>Undo %1</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Redo %1</translation>
+    </message>
+    <message>
+        <source>Redo %1</source>
+        <translation>Redo %1</translation>
+    </message>
+    <message>
+        <source>Reset to &amp;Default</source>
+        <translation>Reset to &amp;Default</translation>
+    </message>
+    <message>
+        <source>Set the selected values to the drive&apos;s default</source>
+        <translation>Set the selected values to the drive&apos;s default</translation>
+    </message>
+    <message>
+        <source>&amp;Write to Sets...</source>
+        <translation>&amp;Write to Sets...</translation>
+    </message>
+    <message>
+        <source>Write a value to several parameter sets at once</source>
+        <translation>Write a value to several parameter sets at once</translation>
+    </message>
+    <message>
+        <source>&amp;Copy Set...</source>
+        <translation>&amp;Copy Set...</translation>
+    </message>
+    <message>
+        <source>Copy every set-programmable value from one set to another</source>
+        <translation>Copy every set-programmable value from one set to another</translation>
+    </message>
+    <message>
+        <source>&amp;Password...</source>
+        <translation>&amp;Password...</translation>
+    </message>
+    <message>
+        <source>Enter a password to open a higher password level</source>
+        <translation>Enter a password to open a higher password level</translation>
+    </message>
+    <message>
+        <source>Drive &amp;Information...</source>
+        <translation>Drive &amp;Information...</translation>
+    </message>
+    <message>
+        <source>&amp;Telegram Monitor</source>
+        <translation>&amp;Telegram Monitor</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Quit</translation>
+    </message>
+    <message>
+        <source>&amp;About DriveDesk</source>
+        <translation>&amp;About DriveDesk</translation>
+    </message>
+    <message>
+        <source>&amp;Drive</source>
+        <translation>&amp;Drive</translation>
+    </message>
+    <message>
+        <source>Polling &amp;Interval</source>
+        <translation>Polling &amp;Interval</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Edit</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;View</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Language</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Help</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>About &amp;Qt</translation>
+    </message>
+    <message>
+        <source>Main Toolbar</source>
+        <translation>Main Toolbar</translation>
+    </message>
+    <message>
+        <source>How often the live values are read</source>
+        <translation>How often the live values are read</translation>
+    </message>
+    <message>
+        <source>The password level in force on the drive (ud.01)</source>
+        <translation>The password level in force on the drive (ud.01)</translation>
+    </message>
+    <message>
+        <source>Fr.02: the set the drive works with. Fr.09: the set that indirect addressing reaches.</source>
+        <translation>Fr.02: the set the drive works with. Fr.09: the set that indirect addressing reaches.</translation>
+    </message>
+    <message numerus="yes">
+        <source> and %n more</source>
+        <translation>
+            <numerusform> and %n more</numerusform>
+            <numerusform> and %n more</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Not reset, read-only or above the password level in force: %1</source>
+        <translation>Not reset, read-only or above the password level in force: %1</translation>
+    </message>
+    <message>
+        <source>%1 is not set-programmable: it holds one value for every set.</source>
+        <translation>%1 is not set-programmable: it holds one value for every set.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be changed: it is read-only or above the password level in force.</source>
+        <translation>%1 cannot be changed: it is read-only or above the password level in force.</translation>
+    </message>
+    <message>
+        <source>%1 has no value read in set %2 to write.</source>
+        <translation>%1 has no value read in set %2 to write.</translation>
+    </message>
+    <message>
+        <source>Write to Sets</source>
+        <translation>Write to Sets</translation>
+    </message>
+    <message>
+        <source>Write %1 to %2 in:</source>
+        <translation>Write %1 to %2 in:</translation>
+    </message>
+    <message>
+        <source>Copy Set</source>
+        <translation>Copy Set</translation>
+    </message>
+    <message>
+        <source>Copy every set-programmable value you may change from one set to another:</source>
+        <translation>Copy every set-programmable value you may change from one set to another:</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Language</translation>
+    </message>
+    <message>
+        <source>DriveDesk uses the new language from its next start on: the window&apos;s texts and the drive&apos;s own texts.</source>
+        <translation>DriveDesk uses the new language from its next start on: the window&apos;s texts and the drive&apos;s own texts.</translation>
+    </message>
+    <message>
+        <source>About DriveDesk</source>
+        <translation>About DriveDesk</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;DriveDesk&lt;/b&gt; %1&lt;/p&gt;&lt;p&gt;Reads and edits the parameters of KEB frequency inverters over HSP5, DIN66019II and DIN66019, and ships a simulated COMBIVERT F5.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;DriveDesk&lt;/b&gt; %1&lt;/p&gt;&lt;p&gt;Reads and edits the parameters of KEB frequency inverters over HSP5, DIN66019II and DIN66019, and ships a simulated COMBIVERT F5.&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::NoticeBar</name>
+    <message>
+        <source>&amp;Cancel</source>
+        <translation>&amp;Cancel</translation>
+    </message>
+    <message>
+        <source>&amp;Reconnect</source>
+        <translation>&amp;Reconnect</translation>
+    </message>
+    <message>
+        <source>C&amp;onnect...</source>
+        <translation>C&amp;onnect...</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ParameterBrowser</name>
+    <message>
+        <source>Search results for “%1”</source>
+        <translation>Search results for “%1”</translation>
+    </message>
+    <message>
+        <source>All parameters</source>
+        <translation>All parameters</translation>
+    </message>
+    <message>
+        <source>Not connected. Connect to a drive to see its parameters.</source>
+        <translation>Not connected. Connect to a drive to see its parameters.</translation>
+    </message>
+    <message>
+        <source>No parameter here matches the search and the filters.</source>
+        <translation>No parameter here matches the search and the filters.</translation>
+    </message>
+    <message>
+        <source>This group holds no parameters.</source>
+        <translation>This group holds no parameters.</translation>
+    </message>
+    <message>
+        <source>: none shown</source>
+        <translation>: none shown</translation>
+    </message>
+    <message numerus="yes">
+        <source>: %n parameter(s)</source>
+        <translation>
+            <numerusform>: %n parameter</numerusform>
+            <numerusform>: %n parameters</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source> (filtered)</source>
+        <translation> (filtered)</translation>
+    </message>
+    <message>
+        <source>Favourite</source>
+        <translation>Favourite</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ParameterDelegate</name>
+    <message>
+        <source>this parameter cannot be changed now</source>
+        <translation>this parameter cannot be changed now</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ParameterModel</name>
+    <message>
+        <source>this drive has no parameter %1</source>
+        <translation>this drive has no parameter %1</translation>
+    </message>
+    <message>
+        <source>%1 is read-only</source>
+        <translation>%1 is read-only</translation>
+    </message>
+    <message>
+        <source>%1 needs password level %2</source>
+        <translation>%1 needs password level %2</translation>
+    </message>
+    <message>
+        <source>%1: no set chosen</source>
+        <translation>%1: no set chosen</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>the drive holds %1, not %2</source>
+        <translation>the drive holds %1, not %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1, %n parameter(s)</source>
+        <translation>
+            <numerusform>%1, %n parameter</numerusform>
+            <numerusform>%1, %n parameters</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>?</source>
+        <translation>?</translation>
+    </message>
+    <message>
+        <source>Writing %1 ...</source>
+        <translation>Writing %1 ...</translation>
+    </message>
+    <message>
+        <source>Written: %1</source>
+        <translation>Written: %1</translation>
+    </message>
+    <message>
+        <source>Writing %1 failed: %2</source>
+        <translation>Writing %1 failed: %2</translation>
+    </message>
+    <message>
+        <source>Not read</source>
+        <translation>Not read</translation>
+    </message>
+    <message>
+        <source>Not read: %1</source>
+        <translation>Not read: %1</translation>
+    </message>
+    <message>
+        <source>raw %1 = %2h</source>
+        <translation>raw %1 = %2h</translation>
+    </message>
+    <message>
+        <source>read-only (read: %1)</source>
+        <translation>read-only (read: %1)</translation>
+    </message>
+    <message>
+        <source>read: %1, write: %2</source>
+        <translation>read: %1, write: %2</translation>
+    </message>
+    <message>
+        <source>Set 0, or the one value of a parameter that is not set-programmable</source>
+        <translation>Set 0, or the one value of a parameter that is not set-programmable</translation>
+    </message>
+    <message>
+        <source>Value / set 0</source>
+        <translation>Value / set 0</translation>
+    </message>
+    <message>
+        <source>Set %1</source>
+        <translation>Set %1</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Minimum</source>
+        <translation>Minimum</translation>
+    </message>
+    <message>
+        <source>Maximum</source>
+        <translation>Maximum</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Default</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unit</translation>
+    </message>
+    <message>
+        <source>Access</source>
+        <translation>Access</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::PasswordDialog</name>
+    <message>
+        <source>Enter Password</source>
+        <translation>Enter Password</translation>
+    </message>
+    <message>
+        <source>0 to %1</source>
+        <translation>0 to %1</translation>
+    </message>
+    <message>
+        <source>Level in force:</source>
+        <translation>Level in force:</translation>
+    </message>
+    <message>
+        <source>&amp;Password:</source>
+        <translation>&amp;Password:</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>not read yet</source>
+        <translation>not read yet</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::PlaintextComboBox</name>
+    <message>
+        <source>no text chosen</source>
+        <translation>no text chosen</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::PollingController</name>
+    <message>
+        <source>Polling stopped: the connection to the drive was lost</source>
+        <translation>Polling stopped: the connection to the drive was lost</translation>
+    </message>
+    <message>
+        <source>Polling stopped: disconnected from the drive</source>
+        <translation>Polling stopped: disconnected from the drive</translation>
+    </message>
+    <message>
+        <source>Nothing to poll: this drive has no readable values in group %1</source>
+        <translation>Nothing to poll: this drive has no readable values in group %1</translation>
+    </message>
+    <message>
+        <source>Polling: %1</source>
+        <translation>Polling: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Polling: %n value(s) could not be read (first: %1: %2)</source>
+        <translation>
+            <numerusform>Polling: %n value could not be read (%1: %2)</numerusform>
+            <numerusform>Polling: %n values could not be read (first: %1: %2)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::PseudoTerminal</name>
+    <message>
+        <source>no path given for the pseudo-terminal link</source>
+        <translation>no path given for the pseudo-terminal link</translation>
+    </message>
+    <message>
+        <source>%1 already exists; choose another path or remove it</source>
+        <translation>%1 already exists; choose another path or remove it</translation>
+    </message>
+    <message>
+        <source>cannot create the link %1: %2</source>
+        <translation>cannot create the link %1: %2</translation>
+    </message>
+    <message>
+        <source>the pseudo-terminal was closed</source>
+        <translation>the pseudo-terminal was closed</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::RecentConnections</name>
+    <message>
+        <source>address %1</source>
+        <translation>address %1</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ScaledSpinBox</name>
+    <message>
+        <source>%1 .. %2</source>
+        <translation>%1 .. %2</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::SerialLink</name>
+    <message>
+        <source>no such serial device</source>
+        <translation>no such serial device</translation>
+    </message>
+    <message>
+        <source>permission denied (the port may be in use by another program, or the user may lack access to it)</source>
+        <translation>permission denied (the port may be in use by another program, or the user may lack access to it)</translation>
+    </message>
+    <message>
+        <source>the port is already open</source>
+        <translation>the port is already open</translation>
+    </message>
+    <message>
+        <source>the device is no longer available (adapter unplugged?)</source>
+        <translation>the device is no longer available (adapter unplugged?)</translation>
+    </message>
+    <message>
+        <source>reading from the port failed</source>
+        <translation>reading from the port failed</translation>
+    </message>
+    <message>
+        <source>writing to the port failed</source>
+        <translation>writing to the port failed</translation>
+    </message>
+    <message>
+        <source>the port does not support these settings</source>
+        <translation>the port does not support these settings</translation>
+    </message>
+    <message>
+        <source>the port is not open</source>
+        <translation>the port is not open</translation>
+    </message>
+    <message>
+        <source>timeout</source>
+        <translation>timeout</translation>
+    </message>
+    <message>
+        <source>unknown serial port error</source>
+        <translation>unknown serial port error</translation>
+    </message>
+    <message>
+        <source>no serial device given</source>
+        <translation>no serial device given</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::SetsDialog</name>
+    <message>
+        <source>Write to Sets</source>
+        <translation>Write to Sets</translation>
+    </message>
+    <message>
+        <source>Write the value to these sets:</source>
+        <translation>Write the value to these sets:</translation>
+    </message>
+    <message>
+        <source>&amp;All</source>
+        <translation>&amp;All</translation>
+    </message>
+    <message>
+        <source>&amp;None</source>
+        <translation>&amp;None</translation>
+    </message>
+    <message>
+        <source>Copy Set</source>
+        <translation>Copy Set</translation>
+    </message>
+    <message>
+        <source>Copy every set-programmable value of one set into another:</source>
+        <translation>Copy every set-programmable value of one set into another:</translation>
+    </message>
+    <message>
+        <source>&amp;From:</source>
+        <translation>&amp;From:</translation>
+    </message>
+    <message>
+        <source>&amp;To:</source>
+        <translation>&amp;To:</translation>
+    </message>
+    <message>
+        <source>Set %1 (active)</source>
+        <translation>Set %1 (active)</translation>
+    </message>
+    <message>
+        <source>Set %1</source>
+        <translation>Set %1</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::SimulatedLink</name>
+    <message>
+        <source>parity error on a received character</source>
+        <translation>parity error on a received character</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::SimulatorServer</name>
+    <message>
+        <source>&quot;%1&quot; is not an IP address to listen on (give e.g. 127.0.0.1, localhost or *)</source>
+        <translation>&quot;%1&quot; is not an IP address to listen on (give e.g. 127.0.0.1, localhost or *)</translation>
+    </message>
+    <message>
+        <source>cannot listen on %1:%2: %3</source>
+        <translation>cannot listen on %1:%2: %3</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::StartupOptions</name>
+    <message>
+        <source>Usage: drivedesk [--connect TARGET] [options]
+
+The DriveDesk parameter editor. Without --connect it opens the connection dialog.
+
+  --connect TARGET     tcp:HOST:PORT, serial:DEVICE or sim (the simulated drive)
+  --protocol NAME      hsp5 (default), din66019ii or din66019
+  --address N          drive address on a DIN66019(II) bus, 0..239 (default 1)
+  --baud N             baud rate (default 38400)
+  --language en|de     language of the window and of the drive&apos;s texts
+</source>
+        <translation>Usage: drivedesk [--connect TARGET] [options]
+
+The DriveDesk parameter editor. Without --connect it opens the connection dialog.
+
+  --connect TARGET     tcp:HOST:PORT, serial:DEVICE or sim (the simulated drive)
+  --protocol NAME      hsp5 (default), din66019ii or din66019
+  --address N          drive address on a DIN66019(II) bus, 0..239 (default 1)
+  --baud N             baud rate (default 38400)
+  --language en|de     language of the window and of the drive&apos;s texts
+</translation>
+    </message>
+    <message>
+        <source>unexpected argument &quot;%1&quot;</source>
+        <translation>unexpected argument &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>--protocol, --address and --baud belong to --connect: give tcp:HOST:PORT, serial:DEVICE or sim</source>
+        <translation>--protocol, --address and --baud belong to --connect: give tcp:HOST:PORT, serial:DEVICE or sim</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::TcpLink</name>
+    <message>
+        <source>no answer from the device server within %1 ms</source>
+        <translation>no answer from the device server within %1 ms</translation>
+    </message>
+    <message>
+        <source>no host or port given</source>
+        <translation>no host or port given</translation>
+    </message>
+    <message>
+        <source>writing failed (%1)</source>
+        <translation>writing failed (%1)</translation>
+    </message>
+    <message>
+        <source>the device server closed the connection</source>
+        <translation>the device server closed the connection</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::TelegramMonitor</name>
+    <message>
+        <source>Telegram monitor</source>
+        <translation>Telegram monitor</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Copy</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Hold new telegrams back and show them on resume</source>
+        <translation>Hold new telegrams back and show them on resume</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Clear</translation>
+    </message>
+    <message>
+        <source>Forget every telegram listed and held</source>
+        <translation>Forget every telegram listed and held</translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation>Save…</translation>
+    </message>
+    <message>
+        <source>Save the telegrams the filter shows to a CSV or text file</source>
+        <translation>Save the telegrams the filter shows to a CSV or text file</translation>
+    </message>
+    <message>
+        <source>Filter: meaning, hex bytes or characters</source>
+        <translation>Filter: meaning, hex bytes or characters</translation>
+    </message>
+    <message>
+        <source>Errors only</source>
+        <translation>Errors only</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Resume</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %Ln telegram(s) to %1.</source>
+        <translation>
+            <numerusform>Saved %Ln telegram to %1.</numerusform>
+            <numerusform>Saved %Ln telegrams to %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV files (*.csv)</translation>
+    </message>
+    <message>
+        <source>Save telegrams</source>
+        <translation>Save telegrams</translation>
+    </message>
+    <message>
+        <source>Text files (*.txt)</source>
+        <translation>Text files (*.txt)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %Ln telegram(s) shown</source>
+        <translation>
+            <numerusform>%1 of %Ln telegram shown</numerusform>
+            <numerusform>%1 of %Ln telegrams shown</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln telegram(s)</source>
+        <translation>
+            <numerusform>%Ln telegram</numerusform>
+            <numerusform>%Ln telegrams</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln older telegram(s) dropped: the monitor keeps the latest %1</source>
+        <translation>
+            <numerusform>%Ln older telegram dropped: the monitor keeps the latest %1</numerusform>
+            <numerusform>%Ln older telegrams dropped: the monitor keeps the latest %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>paused: %Ln telegram(s) held, shown on resume</source>
+        <translation>
+            <numerusform>paused: %Ln telegram held, shown on resume</numerusform>
+            <numerusform>paused: %Ln telegrams held, shown on resume</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::TrafficModel</name>
+    <message numerus="yes">
+        <source>%n byte(s)</source>
+        <translation>
+            <numerusform>%n byte</numerusform>
+            <numerusform>%n bytes</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ValueWriter</name>
+    <message>
+        <source>this drive has no parameter %1</source>
+        <translation>this drive has no parameter %1</translation>
+    </message>
+</context>
+<context>
+    <name>ParameterDocument</name>
+    <message>
+        <source>expected an object</source>
+        <translation>expected an object</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>missing</translation>
+    </message>
+    <message>
+        <source>expected an integer</source>
+        <translation>expected an integer</translation>
+    </message>
+    <message>
+        <source>%1 is outside %2..%3</source>
+        <translation>%1 is outside %2..%3</translation>
+    </message>
+    <message>
+        <source>expected a string</source>
+        <translation>expected a string</translation>
+    </message>
+    <message>
+        <source>expected true or false</source>
+        <translation>expected true or false</translation>
+    </message>
+    <message>
+        <source>expected an array</source>
+        <translation>expected an array</translation>
+    </message>
+    <message>
+        <source>unknown field</source>
+        <translation>unknown field</translation>
+    </message>
+    <message>
+        <source>cannot write &apos;%1&apos;: %2</source>
+        <translation>cannot write &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <source>cannot save &apos;%1&apos;: %2</source>
+        <translation>cannot save &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <source>cannot read &apos;%1&apos;: %2</source>
+        <translation>cannot read &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is too large for a parameter file (%2 bytes, at most %3)</source>
+        <translation>&apos;%1&apos; is too large for a parameter file (%2 bytes, at most %3)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; names %2, not the address %3</source>
+        <translation>&apos;%1&apos; names %2, not the address %3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; does not agree with scaling.flags (unit &apos;%2&apos;)</source>
+        <translation>&apos;%1&apos; does not agree with scaling.flags (unit &apos;%2&apos;)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 does not agree with scaling.flags (%n decimals)</source>
+        <translation>
+            <numerusform>%1 does not agree with scaling.flags (%n decimal)</numerusform>
+            <numerusform>%1 does not agree with scaling.flags (%n decimals)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 does not agree with properties1 bit 11</source>
+        <translation>%1 does not agree with properties1 bit 11</translation>
+    </message>
+    <message>
+        <source>%1 does not agree with properties2 bit 3</source>
+        <translation>%1 does not agree with properties2 bit 3</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n entries; a set-programmable parameter has one for each of the 8 sets</source>
+        <translation>
+            <numerusform>%n entry; a set-programmable parameter has one for each of the 8 sets</numerusform>
+            <numerusform>%n entries; a set-programmable parameter has one for each of the 8 sets</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n entries; expected 1 (or 8, one for each set)</source>
+        <translation>
+            <numerusform>%n entry; expected 1 (or 8, one for each set)</numerusform>
+            <numerusform>%n entries; expected 1 (or 8, one for each set)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1, but plaintextDefinitions has %n entries</source>
+        <translation>
+            <numerusform>%1, but plaintextDefinitions has %n entry</numerusform>
+            <numerusform>%1, but plaintextDefinitions has %n entries</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 is not in group %2 (%3)</source>
+        <translation>%1 is not in group %2 (%3)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not one Latin-1 character</source>
+        <translation>&apos;%1&apos; is not one Latin-1 character</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; appears twice</source>
+        <translation>&apos;%1&apos; appears twice</translation>
+    </message>
+    <message>
+        <source>%1 is also the address of group %2</source>
+        <translation>%1 is also the address of group %2</translation>
+    </message>
+    <message>
+        <source>%1 appears twice</source>
+        <translation>%1 appears twice</translation>
+    </message>
+    <message>
+        <source>not valid JSON: %1 at line %2, column %3</source>
+        <translation>not valid JSON: %1 at line %2, column %3</translation>
+    </message>
+    <message>
+        <source>not a DriveDesk parameter file: the document is not a JSON object</source>
+        <translation>not a DriveDesk parameter file: the document is not a JSON object</translation>
+    </message>
+    <message>
+        <source>not a DriveDesk parameter file: format is %1, expected &apos;%2&apos;</source>
+        <translation>not a DriveDesk parameter file: format is %1, expected &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>missing or not a string</source>
+        <translation>missing or not a string</translation>
+    </message>
+    <message>
+        <source>version: missing or not a number</source>
+        <translation>version: missing or not a number</translation>
+    </message>
+    <message>
+        <source>version: %1 is not supported (this DriveDesk reads version %2)</source>
+        <translation>version: %1 is not supported (this DriveDesk reads version %2)</translation>
+    </message>
+</context>
+<context>
+    <name>ParameterFormat</name>
+    <message>
+        <source>%1 is outside the limits %2 .. %3</source>
+        <translation>%1 is outside the limits %2 .. %3</translation>
+    </message>
+    <message>
+        <source>no value given</source>
+        <translation>no value given</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a whole number</source>
+        <translation>&apos;%1&apos; is not a whole number</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; does not fit in 32 bits</source>
+        <translation>&apos;%1&apos; does not fit in 32 bits</translation>
+    </message>
+    <message>
+        <source>%1 cannot be set exactly: the nearest value this parameter can hold is %2</source>
+        <translation>%1 cannot be set exactly: the nearest value this parameter can hold is %2</translation>
+    </message>
+</context>
+<context>
+    <name>ParameterId</name>
+    <message>
+        <source>no parameter given</source>
+        <translation>no parameter given</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: address above FFFFh</source>
+        <translation>&apos;%1&apos;: address above FFFFh</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a parameter id: write it as group.number (ru.03) or as a hexadecimal address (0203h, 0x0203)</source>
+        <translation>&apos;%1&apos; is not a parameter id: write it as group.number (ru.03) or as a hexadecimal address (0203h, 0x0203)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: the group id is ambiguous (&apos;%2&apos; or &apos;%3&apos;); write it with its case</source>
+        <translation>&apos;%1&apos;: the group id is ambiguous (&apos;%2&apos; or &apos;%3&apos;); write it with its case</translation>
+    </message>
+    <message>
+        <source>no group &apos;%1&apos; on this drive</source>
+        <translation>no group &apos;%1&apos; on this drive</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: parameter number above 255</source>
+        <translation>&apos;%1&apos;: parameter number above 255</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: parameter number above %2 in group %3</source>
+        <translation>&apos;%1&apos;: parameter number above %2 in group %3</translation>
+    </message>
+</context>
+<context>
+    <name>Plaintexts</name>
+    <message>
+        <source>definition %1</source>
+        <translation>definition %1</translation>
+    </message>
+    <message>
+        <source>%1 (no plaintext in %2)</source>
+        <translation>%1 (no plaintext in %2)</translation>
+    </message>
+    <message>
+        <source>%1 (no plaintext)</source>
+        <translation>%1 (no plaintext)</translation>
+    </message>
+    <message>
+        <source>other bits %1</source>
+        <translation>other bits %1</translation>
+    </message>
+    <message>
+        <source>this parameter has no plaintexts</source>
+        <translation>this parameter has no plaintexts</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a plaintext of this parameter; allowed: %2</source>
+        <translation>&apos;%1&apos; is not a plaintext of this parameter; allowed: %2</translation>
+    </message>
+    <message>
+        <source>no text given; allowed: %1</source>
+        <translation>no text given; allowed: %1</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has an empty text between &apos;|&apos;</source>
+        <translation>&apos;%1&apos; has an empty text between &apos;|&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; and &apos;%2&apos; are texts of the same definition</source>
+        <translation>&apos;%1&apos; and &apos;%2&apos; are texts of the same definition</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is a text of several definitions: give one text for each definition, in order (%2)</source>
+        <translation>&apos;%1&apos; is a text of several definitions: give one text for each definition, in order (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>TrafficFile</name>
+    <message>
+        <source>Cannot save the telegrams to %1: %2</source>
+        <translation>Cannot save the telegrams to %1: %2</translation>
+    </message>
+    <message>
+        <source>no file name given</source>
+        <translation>no file name given</translation>
+    </message>
+</context>
+<context>
+    <name>TrafficFormat</name>
+    <message>
+        <source>Time</source>
+        <translation>Time</translation>
+    </message>
+    <message>
+        <source>Direction</source>
+        <translation>Direction</translation>
+    </message>
+    <message>
+        <source>Bytes</source>
+        <translation>Bytes</translation>
+    </message>
+    <message>
+        <source>Characters</source>
+        <translation>Characters</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Meaning</translation>
+    </message>
+    <message>
+        <source>→ drive</source>
+        <translation>→ drive</translation>
+    </message>
+    <message>
+        <source>← drive</source>
+        <translation>← drive</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>error</translation>
+    </message>
+</context>
+</TS>
