@@ -3,6 +3,7 @@
 
 #include "DriveSession.h"
 #include "ParameterBrowser.h"
+#include "edit/EditController.h"
 
 #include "monitor/TelegramMonitor.h"
 
@@ -268,8 +269,10 @@ void MainWindow::updateActions()
     m_copySetAction->setEnabled(ready);
     m_passwordAction->setEnabled(ready);
     m_driveInfoAction->setEnabled(session && m_session->hasDescription());
-    m_undoAction->setEnabled(ready && m_undoStack->canUndo());
-    m_redoAction->setEnabled(ready && m_undoStack->canRedo());
+    // An undo while a write is still on its way could leave the stack and the drive apart.
+    const bool idle = ready && !m_session->editController()->isBusy();
+    m_undoAction->setEnabled(idle && m_undoStack->canUndo());
+    m_redoAction->setEnabled(idle && m_undoStack->canRedo());
     m_browser->setEditingEnabled(ready);
 }
 
