@@ -56,11 +56,7 @@ QString valuesText(const ParameterDescription &parameter)
 
 QString valueText(const ParameterDescription &parameter, qint32 raw, bool withUnit)
 {
-    const DisplayScaling scaling(parameter.scaling);
-    const Plaintexts plaintexts(parameter.plaintexts, scaling);
-    if (!plaintexts.isEmpty() && plaintexts.hasText(raw))
-        return plaintexts.text(raw);
-    return scaling.format(raw, withUnit);
+    return Plaintexts(parameter.plaintexts, DisplayScaling(parameter.scaling)).shown(raw, withUnit);
 }
 
 QString scan(const DriveDescription &drive, bool withValues, Language language)

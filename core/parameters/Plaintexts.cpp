@@ -1,5 +1,7 @@
 #include "Plaintexts.h"
 
+#include <algorithm>
+
 namespace DriveDesk {
 
 namespace {
@@ -31,6 +33,20 @@ bool Plaintexts::isEmpty() const
             return false;
     }
     return true;
+}
+
+bool Plaintexts::isBitField() const
+{
+    return std::count_if(m_definitions.begin(), m_definitions.end(),
+                         [](const PlaintextDefinition &d) { return !d.entries.isEmpty(); })
+           > 1;
+}
+
+QString Plaintexts::shown(qint32 raw, bool withUnit) const
+{
+    if (!isEmpty() && (isBitField() || hasText(raw)))
+        return text(raw);
+    return m_scaling.format(raw, withUnit);
 }
 
 quint32 Plaintexts::effectiveMask(const PlaintextDefinition &definition)

@@ -45,6 +45,12 @@ public:
     bool hasText(qint32 raw) const;
     // The plaintext; where a text is missing, the scaled number and "(no plaintext)".
     QString text(qint32 raw) const;
+    // Several definitions with texts: the value holds bit fields.
+    bool isBitField() const;
+    // The value as the drive shows it, for every view of it (table, editor, command line): a
+    // bit field names each field; an enumeration its text, or the scaled number where it has
+    // none for this value; a parameter without texts the scaled number.
+    QString shown(qint32 raw, bool withUnit = true) const;
 
     // The raw value for a text (case-insensitive, exact). With several definitions "A | B":
     // each part picks an entry of a different definition; definitions not named are 0; bits

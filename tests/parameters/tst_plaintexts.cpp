@@ -135,6 +135,20 @@ private slots:
         QCOMPARE(texts.text(0), QStringLiteral("off"));
     }
 
+    void shownIsWhatEveryViewDisplays()
+    {
+        const DisplayScaling hz(DisplayScalingData { 0, 100, 1, 0, quint16(18 | (2 << 8)) });
+        const Plaintexts enumeration({ definition(0, "", { { 0, "off" } }) }, hz);
+        QVERIFY(!enumeration.isBitField());
+        QCOMPARE(enumeration.shown(0), QStringLiteral("off"));
+        QCOMPARE(enumeration.shown(1250), QStringLiteral("12.50 Hz"));
+        QCOMPARE(enumeration.shown(1250, false), QStringLiteral("12.50"));
+        const Plaintexts bitField = seedExample();
+        QVERIFY(bitField.isBitField());
+        QCOMPARE(bitField.shown(0x7), QStringLiteral("released | 0006h (no plaintext in 'Direction')"));
+        QCOMPARE(Plaintexts({}, hz).shown(1250), QStringLiteral("12.50 Hz"));
+    }
+
     void maskZeroCoversEveryBit()
     {
         const Plaintexts texts({ definition(0, "", { { 7, "seven" } }) });

@@ -45,12 +45,6 @@ ParameterFormat::ParameterFormat(const ParameterDescription &parameter)
     , m_minimum(parameter.minimum)
     , m_maximum(parameter.maximum)
 {
-    int withTexts = 0;
-    for (const PlaintextDefinition &definition : parameter.plaintexts) {
-        if (!definition.entries.isEmpty())
-            ++withTexts;
-    }
-    m_bitField = withTexts > 1;
 }
 
 ParameterFormat ParameterFormat::rawFormat() const
@@ -69,13 +63,7 @@ bool ParameterFormat::isHexadecimal() const
 
 QString ParameterFormat::text(qint32 raw, bool withUnit) const
 {
-    if (m_raw || m_plaintexts.isEmpty())
-        return number(raw, withUnit);
-    // A bit-field names each field, and bits no text explains; an enumeration without a text
-    // for the value shows the number, as the drive's display does.
-    if (m_bitField || m_plaintexts.hasText(raw))
-        return m_plaintexts.text(raw);
-    return number(raw, withUnit);
+    return m_raw ? number(raw, withUnit) : m_plaintexts.shown(raw, withUnit);
 }
 
 QString ParameterFormat::number(qint32 raw, bool withUnit) const

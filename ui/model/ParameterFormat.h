@@ -28,7 +28,7 @@ public:
     qint32 maximum() const { return m_maximum; }
     bool isRaw() const { return m_raw; }
     // Several plaintext definitions with texts: one field per definition.
-    bool isBitField() const { return m_bitField; }
+    bool isBitField() const { return m_plaintexts.isBitField(); }
     bool isHexadecimal() const;
 
     // What the drive shows: the plaintext where one fits, otherwise the scaled number. A
@@ -57,7 +57,6 @@ private:
     qint32 m_minimum = 0;
     qint32 m_maximum = 0;
     bool m_raw = false;
-    bool m_bitField = false;
 };
 
 } // namespace DriveDesk
