@@ -74,8 +74,15 @@ public:
     virtual int bitsPerCharacter() const = 0;
 };
 
+// How a codec is set up beyond its protocol.
+struct CodecOptions {
+    // HSP5: frame DriveDesk's layouts of services 13, 14, 19-21 and 51-53 too. Off, the codec
+    // knows exactly seed 000's services, as every drive does (docs/protocol-hsp5.md).
+    bool hsp5Extensions = false;
+};
+
 // In drivedesk_codecs.
-std::unique_ptr<ProtocolCodec> makeCodec(Protocol protocol);
+std::unique_ptr<ProtocolCodec> makeCodec(Protocol protocol, CodecOptions options = {});
 
 QString protocolName(Protocol protocol);                 // "hsp5", "din66019ii", "din66019"
 std::optional<Protocol> protocolFromName(const QString &name);

@@ -26,7 +26,7 @@ struct Run
 
 inline Run decode(Role role, const QList<QByteArray> &chunks)
 {
-    const auto decoder = Hsp5Codec().makeDecoder(role);
+    const auto decoder = Hsp5Codec(Hsp5Services::WithExtensions).makeDecoder(role);
     Run run;
     for (const QByteArray &chunk : chunks) {
         decoder->feed(chunk);
@@ -79,7 +79,7 @@ inline QByteArray bytesOf(const QList<Decoded> &items)
     QByteArray out;
     for (const Decoded &item : items) {
         if (const auto *t = std::get_if<Telegram>(&item))
-            out += Hsp5Codec().encode(*t);
+            out += Hsp5Codec(Hsp5Services::WithExtensions).encode(*t);
         else
             out += std::get<DecodeError>(item).bytes;
     }

@@ -151,14 +151,14 @@ private slots:
 
     void codecBasics()
     {
-        const Hsp5Codec codec;
+        const Hsp5Codec codec(Hsp5Services::WithExtensions);
         QCOMPARE(codec.protocol(), Protocol::Hsp5);
         QCOMPARE(codec.bitsPerCharacter(), 11);
     }
 
     void workedExampleOfProtocolNotes()
     {
-        const Hsp5Codec codec;
+        const Hsp5Codec codec(Hsp5Services::WithExtensions);
         Telegram request = Telegram::request(Service::ParameterValue, Access::Read,
                                              ParameterValue{0x2000, 0x20, 0});
         request.operatorInvoke = 1;
@@ -190,7 +190,7 @@ private slots:
         QFETCH(QByteArray, bytes);
         QFETCH(Telegram, telegram);
         QString error;
-        QCOMPARE(Hsp5Codec().encode(telegram, &error).toHex(' '), bytes.toHex(' '));
+        QCOMPARE(Hsp5Codec(Hsp5Services::WithExtensions).encode(telegram, &error).toHex(' '), bytes.toHex(' '));
         QVERIFY(error.isEmpty());
         const Run run = decode(receiver(telegram), bytes);
         QVERIFY2(run.items == QList<Decoded>{telegram}, qPrintable(show(run.items)));
@@ -243,7 +243,13 @@ private slots:
         QFETCH(Service, service);
         QFETCH(QList<int>, lengths);
         QFETCH(bool, variable);
-        const Hsp5Codec codec;
+        const bool extension = QByteArray(QTest::currentDataTag()).endsWith("extension");
+        const Hsp5Services services
+            = extension ? Hsp5Services::WithExtensions : Hsp5Services::Seed;
+        const Hsp5Codec codec(services);
+        // A drive that knows only seed 000 cannot frame an extension: the default codec never
+        // sends one.
+        QCOMPARE(Hsp5Codec().supports(service, Access::Read), !extension);
         const int longest = service == Service::Fieldbus ? 64 : 24;
         int column = 0;
         for (Access a : {Access::Read, Access::Write}) {
@@ -251,7 +257,7 @@ private slots:
                 const int expected = lengths[column++];
                 QCOMPARE(codec.supports(service, a), expected != 0);
                 if (expected == 0) {
-                    QVERIFY(!hsp5Layout(service, a, d));
+                    QVERIFY(!hsp5Layout(service, a, d, services));
                     continue;
                 }
                 const bool carriesText = variable
@@ -260,14 +266,15 @@ private slots:
                 QCOMPARE(codec.encode(sample(service, a, d, 1, false)).size(), expected);
                 QCOMPARE(codec.encode(sample(service, a, d, 2, false)).size(),
                          expected + (carriesText ? longest : 0));
-                QCOMPARE(hsp5Layout(service, a, d)->isVariable(), carriesText);
+                QCOMPARE(hsp5Layout(service, a, d, services)->isVariable(), carriesText);
+                QCOMPARE(hsp5Layout(service, a, d).has_value(), !extension);
             }
         }
     }
 
     void roundTripEveryService()
     {
-        const Hsp5Codec codec;
+        const Hsp5Codec codec(Hsp5Services::WithExtensions);
         for (Service s : kServices) {
             for (Access a : {Access::Read, Access::Write}) {
                 if (!codec.supports(s, a))
@@ -329,13 +336,13 @@ private slots:
         QFETCH(Telegram, telegram);
         QFETCH(QString, named);
         QString error;
-        QVERIFY(Hsp5Codec().encode(telegram, &error).isEmpty());
+        QVERIFY(Hsp5Codec(Hsp5Services::WithExtensions).encode(telegram, &error).isEmpty());
         QVERIFY2(error.contains(named), qPrintable(error));
     }
 
     void supportsOnlyHsp5Services()
     {
-        const Hsp5Codec codec;
+        const Hsp5Codec codec(Hsp5Services::WithExtensions);
         for (Service s : {Service::Legacy, Service::StatusInterrogation, Service::Unspecified}) {
             QVERIFY(!codec.supports(s, Access::Read));
             QVERIFY(!codec.supports(s, Access::Write));
@@ -344,10 +351,35 @@ private slots:
             QVERIFY(codec.supports(s, Access::Read));
         QVERIFY(!codec.supports(Service::ScopeRecord, Access::Write));
         for (int number = 0; number < 64; ++number) {
-            const bool defined = (number <= 14) || (number >= 16 && number <= 21) || number == 32
-                                 || number == 33 || (number >= 48 && number <= 53);
-            QCOMPARE(hsp5Service(number).has_value(), defined);
+            const bool seed = (number <= 12) || (number >= 16 && number <= 18) || number == 32
+                              || number == 33 || (number >= 48 && number <= 50);
+            const bool extension = number == 13 || number == 14 || (number >= 19 && number <= 21)
+                                   || (number >= 51 && number <= 53);
+            QCOMPARE(hsp5Service(number).has_value(), seed);
+            QCOMPARE(hsp5Service(number, Hsp5Services::WithExtensions).has_value(),
+                     seed || extension);
         }
+    }
+
+    void theSeedCodecRefusesExtensionsWithAHint()
+    {
+        const Hsp5Codec codec;
+        QCOMPARE(codec.services(), Hsp5Services::Seed);
+        QString error;
+        const Telegram identify
+            = Hsp5SeedVectors::op(Service::Fieldbus, Access::Read, Direction::Request,
+                                  FieldbusData{1, 0, 0, {}});
+        QVERIFY(codec.encode(identify, &error).isEmpty());
+        QVERIFY2(error.contains(QStringLiteral("HSP5 extensions")), qPrintable(error));
+        QVERIFY(!Hsp5Codec(Hsp5Services::WithExtensions).encode(identify).isEmpty());
+        // A drive that knows only the seed's services cannot know where service 13 ends.
+        const auto decoder = codec.makeDecoder(Role::Drive);
+        decoder->feed(Hsp5Codec(Hsp5Services::WithExtensions).encode(identify));
+        const auto item = decoder->next();
+        QVERIFY(item);
+        const auto *decodeError = std::get_if<DecodeError>(&*item);
+        QVERIFY(decodeError);
+        QCOMPARE(decodeError->kind, DecodeError::Kind::UnknownService);
     }
 
 };

@@ -63,7 +63,7 @@ private slots:
         QCOMPARE(run.left, 2);
         QCOMPARE(bytesOf(run.items), stream.first(stream.size() - 2));
 
-        const auto decoder = Hsp5Codec().makeDecoder(Role::Operator);
+        const auto decoder = Hsp5Codec(Hsp5Services::WithExtensions).makeDecoder(Role::Operator);
         decoder->feed(stream);
         while (decoder->next()) { }
         decoder->feed(a);
@@ -215,7 +215,7 @@ private slots:
 
     void resetDropsPartialInput()
     {
-        const auto decoder = Hsp5Codec().makeDecoder(Role::Operator);
+        const auto decoder = Hsp5Codec(Hsp5Services::WithExtensions).makeDecoder(Role::Operator);
         decoder->feed(hex("10 80 00 00"));
         QVERIFY(!decoder->next());
         QCOMPARE(decoder->buffered(), 4);
@@ -231,7 +231,7 @@ private slots:
         const QDir dir(QStringLiteral(DRIVEDESK_TEST_DATA "/fuzz/hsp5"));
         const QStringList files = dir.entryList(QDir::Files);
         QVERIFY2(files.size() > 10, qPrintable(dir.path()));
-        const Hsp5Codec codec;
+        const Hsp5Codec codec(Hsp5Services::WithExtensions);
         for (const QString &name : files) {
             QFile file(dir.filePath(name));
             QVERIFY(file.open(QIODevice::ReadOnly));

@@ -16,7 +16,7 @@ quint8 hsp5Bcc(QByteArrayView bytes)
 
 bool Hsp5Codec::supports(Service service, Access access) const
 {
-    return hsp5Layout(service, access, Direction::Request).has_value();
+    return hsp5Layout(service, access, Direction::Request, m_services).has_value();
 }
 
 QByteArray Hsp5Codec::encode(const Telegram &t, QString *error) const
@@ -26,15 +26,18 @@ QByteArray Hsp5Codec::encode(const Telegram &t, QString *error) const
             *error = why;
         return QByteArray();
     };
-    const auto layout = hsp5Layout(t.service, t.access, t.direction);
+    const auto layout = hsp5Layout(t.service, t.access, t.direction, m_services);
     if (!layout) {
         const QString access = t.isWrite() ? QStringLiteral("write") : QStringLiteral("read");
         const QString direction = t.isResponse() ? QStringLiteral("response")
                                                  : QStringLiteral("request");
-        return fail(QStringLiteral("HSP5 has no %1 %2 for service %3 (%4)")
+        const QString hint = m_services == Hsp5Services::Seed && isHsp5Extension(t.service)
+                                 ? QStringLiteral(" (only with DriveDesk's HSP5 extensions)")
+                                 : QString();
+        return fail(QStringLiteral("HSP5 has no %1 %2 for service %3 (%4)%5")
                         .arg(access, direction)
                         .arg(int(t.service))
-                        .arg(serviceName(t.service)));
+                        .arg(serviceName(t.service), hint));
     }
     if (t.operatorInvoke > 15 || t.inverterInvoke > 15) {
         return fail(QStringLiteral("invoke ids INV-ID-OP %1 / INV-ID-FU %2: each must be 0..15")
@@ -74,7 +77,7 @@ QByteArray Hsp5Codec::encode(const Telegram &t, QString *error) const
 
 std::unique_ptr<FrameDecoder> Hsp5Codec::makeDecoder(Role role) const
 {
-    return std::make_unique<Hsp5Decoder>(role);
+    return std::make_unique<Hsp5Decoder>(role, m_services);
 }
 
 } // namespace DriveDesk

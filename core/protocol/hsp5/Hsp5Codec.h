@@ -1,5 +1,6 @@
 #pragma once
 
+#include "Hsp5Layout.h"
 #include "protocol/Codec.h"
 
 namespace DriveDesk {
@@ -12,11 +13,19 @@ quint8 hsp5Bcc(QByteArrayView bytes);
 class Hsp5Codec final : public ProtocolCodec
 {
 public:
+    explicit Hsp5Codec(Hsp5Services services = Hsp5Services::Seed)
+        : m_services(services)
+    {}
+
+    Hsp5Services services() const { return m_services; }
     Protocol protocol() const override { return Protocol::Hsp5; }
     bool supports(Service service, Access access) const override;
     QByteArray encode(const Telegram &telegram, QString *error = nullptr) const override;
     std::unique_ptr<FrameDecoder> makeDecoder(Role role) const override;
     int bitsPerCharacter() const override { return 11; } // 8E1
+
+private:
+    Hsp5Services m_services;
 };
 
 } // namespace DriveDesk

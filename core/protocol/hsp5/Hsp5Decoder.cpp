@@ -117,7 +117,7 @@ Hsp5Decoder::Check Hsp5Decoder::check(qsizetype at, bool explain) const
                                               : QStringLiteral("drive"));
         });
     }
-    const auto service = hsp5Service(number);
+    const auto service = hsp5Service(number, m_services);
     if (!service) {
         return bad(2, Kind::UnknownService, [&] {
             return QStringLiteral("service %1 (byte 1 = %2) is not defined in HSP5")
@@ -127,7 +127,7 @@ Hsp5Decoder::Check Hsp5Decoder::check(qsizetype at, bool explain) const
     }
     const Access access = write ? Access::Write : Access::Read;
     const Direction direction = response ? Direction::Response : Direction::Request;
-    const auto layout = hsp5Layout(*service, access, direction);
+    const auto layout = hsp5Layout(*service, access, direction, m_services);
     if (!layout) {
         return bad(2, Kind::UnknownService, [&] {
             return QStringLiteral("HSP5 has no %1 (byte 1 = %2)")

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "Hsp5Layout.h"
 #include "protocol/Codec.h"
 
 namespace DriveDesk {
@@ -17,7 +18,10 @@ namespace DriveDesk {
 class Hsp5Decoder final : public FrameDecoder
 {
 public:
-    explicit Hsp5Decoder(Role role) : m_role(role) {}
+    explicit Hsp5Decoder(Role role, Hsp5Services services = Hsp5Services::Seed)
+        : m_role(role)
+        , m_services(services)
+    {}
 
     void feed(QByteArrayView bytes) override;
     std::optional<Decoded> next() override;
@@ -35,6 +39,7 @@ private:
     DecodeError takeSkipped();
 
     Role m_role;
+    Hsp5Services m_services;
     QByteArray m_buffer;     // undecided input from m_start on
     qsizetype m_start = 0;
     QByteArray m_skipped;    // bytes known to start no telegram, not reported yet

@@ -78,19 +78,22 @@ const Row *rowFor(Service service)
 
 } // namespace
 
-std::optional<Service> hsp5Service(int number)
+std::optional<Service> hsp5Service(int number, Hsp5Services services)
 {
     for (const Row &row : kRows) {
-        if (int(row.service) == number)
+        if (int(row.service) != number)
+            continue;
+        if (services == Hsp5Services::WithExtensions || !isHsp5Extension(row.service))
             return row.service;
     }
     return std::nullopt;
 }
 
-std::optional<Hsp5Layout> hsp5Layout(Service service, Access access, Direction direction)
+std::optional<Hsp5Layout> hsp5Layout(Service service, Access access, Direction direction,
+                                     Hsp5Services services)
 {
     const Row *row = rowFor(service);
-    if (!row)
+    if (!row || (services == Hsp5Services::Seed && isHsp5Extension(service)))
         return std::nullopt;
     const bool write = access == Access::Write;
     const Hsp5Layout &layout = direction == Direction::Request
