@@ -4,6 +4,7 @@
 
 #include <QList>
 #include <QString>
+#include <QStringList>
 
 #include <array>
 #include <optional>
@@ -73,9 +74,14 @@ struct DriveDescription {
     int driveAddress = -1;
     int language = 0;
     QString identification; // service 13 function 1, where the drive has it
+    // The metadata (groups, names, limits, texts) came from the metadata cache, not the drive;
+    // the values were read from the drive all the same. Not part of a parameter file.
+    bool metadataFromCache = false;
     QList<GroupDescription> groups;
     // Why the scan stopped early (cancelled, link lost), empty when it read everything.
     QString incompleteReason;
+    // What a user should know that did not stop the scan (a damaged cache file was replaced).
+    QStringList warnings;
 
     int parameterCount() const;
     const ParameterDescription *find(quint16 address) const;

@@ -16,6 +16,8 @@ constexpr std::array<quint16, 4> kReadChannel { 0x0010, 0x0012, 0x0014, 0x0016 }
 // Write channels 1..4 (process data out): Sy.24/26/28/30 address, Sy.25/27/29/31 set mask.
 constexpr std::array<quint16, 4> kWriteChannel { 0x0018, 0x001A, 0x001C, 0x001E };
 
+constexpr quint16 kSoftwareVersion = 0x0E06; // In.06, 0.01
+
 constexpr quint16 kSetValueSource = 0x0301; // op.01: 0 op.03, 1 demo cycle
 constexpr quint16 kCommandSpeed = 0x0303; // op.03, rpm
 constexpr quint16 kDemoSpeed = 0x0304; // op.04, rpm

@@ -1,5 +1,6 @@
 #include "GeneratedParameters.h"
 
+#include "F5Addresses.h"
 #include "ParameterSpec.h"
 
 #include <algorithm>
@@ -78,7 +79,8 @@ void addGeneratedParameters(ParameterDatabase &db, int total, quint32 seed)
 {
     const int standard = int(db.parameters().size());
     const int capacity = (kGeneratedLastPage - kGeneratedFirstPage + 1) * kGeneratedPerGroup;
-    int missing = std::min(total - standard, capacity);
+    const int generated = std::min(total - standard, capacity);
+    int missing = generated;
     if (total - standard > capacity)
         db.addNote(QStringLiteral("%1 parameters asked for, %2 generated at most")
                        .arg(total)
@@ -104,6 +106,14 @@ void addGeneratedParameters(ParameterDatabase &db, int total, quint32 seed)
             db.addParameter(buildParameter(generatedSpec(address, id, random, onOff), problems));
         }
     }
+    // A drive with other parameters runs other software: its version (In.06, two decimals)
+    // tells it apart from the standard drive and from padded drives of other sizes, as the
+    // metadata cache expects of real drives.
+    if (const SimParameter *version = db.find(F5::kSoftwareVersion))
+        db.setDefaultValue(F5::kSoftwareVersion,
+                           std::min(version->defaultValue + generated, version->maximum));
+    else
+        problems << QStringLiteral("the software version In.06 is missing");
     for (const QString &problem : std::as_const(problems))
         db.addProblem(problem);
     db.finish();

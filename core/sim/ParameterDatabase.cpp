@@ -21,6 +21,15 @@ void ParameterDatabase::addGroup(const SimGroup &group)
     m_groups.back().index = quint8(m_groups.size() - 1);
 }
 
+bool ParameterDatabase::setDefaultValue(quint16 address, qint32 value)
+{
+    const int index = indexOf(address);
+    if (index < 0)
+        return false;
+    m_parameters[std::size_t(index)].defaultValue = value;
+    return true;
+}
+
 void ParameterDatabase::addParameter(const SimParameter &parameter)
 {
     const auto hex
