@@ -210,6 +210,11 @@ bool parseOptions(const QCommandLineParser &parser, Options *options, QString *e
     simulation.delayMs = int(delayMs);
     simulation.seed = quint32(seed);
     simulation.paced = parser.isSet(QStringLiteral("pace"));
+    simulation.hsp5Extensions = parser.isSet(QStringLiteral("hsp5-extensions"));
+    if (simulation.hsp5Extensions && options->protocol != Protocol::Hsp5) {
+        *error = tr("--hsp5-extensions is for --protocol hsp5");
+        return false;
+    }
     return true;
 }
 
@@ -247,6 +252,8 @@ int main(int argc, char *argv[])
         option("latency-us", "Time from the end of a request to its reply (default 1000).", "US"),
         option("baud", "Baud rate for --pace (default 38400).", "N"),
         option("pace", "Send and receive at the baud rate."),
+        option("hsp5-extensions", "HSP5: also know DriveDesk's services 13, 14, 19-21 and 51-53 "
+                                  "(default: only those of the HSP5 specification)."),
         option("parameters", "Pad the drive to N parameters (0: the standard F5).", "N"),
         option("corrupt-rate", "Chance per byte of one flipped bit.", "RATE"),
         option("drop-rate", "Chance per byte of losing it.", "RATE"),

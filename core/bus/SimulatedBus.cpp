@@ -28,7 +28,7 @@ bool concerns(int selection, int address)
 SimulatedBus::SimulatedBus(Protocol protocol, const SimulationOptions &options)
     : m_protocol(protocol)
     , m_options(options)
-    , m_codec(makeCodec(protocol))
+    , m_codec(makeCodec(protocol, CodecOptions{options.hsp5Extensions}))
     , m_decoder(m_codec->makeDecoder(Role::Drive))
     , m_faults(options, m_codec->bitsPerCharacter() - 3, &m_counters) // 8E1 / 7E1: 8 / 7 data bits
 {
@@ -91,8 +91,17 @@ void SimulatedBus::receive(QByteArrayView bytes, qint64 nowNs)
     // The chunk occupies the line before any answer to it can start (DIN: a shared line).
     const Timeline &line = inbound();
     const qint64 first = occupy(inbound(), nowNs, bytes.size());
+    const bool afterQuietLine = timeOf(line, first) - m_lastArrivalNs > idleGapNs();
+    if (m_lostStep) {
+        if (!afterQuietLine) {
+            m_lastArrivalNs = timeOf(line, first + bytes.size());
+            m_counters.unframedBytes += bytes.size();
+            return;
+        }
+        m_lostStep = false; // in step again: this byte starts a telegram
+    }
     // A drive forgets a partial telegram after a pause on the line, as after a lost character.
-    if (m_decoder->buffered() > 0 && timeOf(line, first) - m_lastArrivalNs > idleGapNs()) {
+    if (m_decoder->buffered() > 0 && afterQuietLine) {
         m_decoder->reset();
         ++m_counters.partialDrops;
     }
@@ -121,6 +130,11 @@ void SimulatedBus::receive(QByteArrayView bytes, qint64 nowNs)
         }
         while (std::optional<Decoded> item = m_decoder->next())
             handle(*item, arrivalNs);
+        if (m_lostStep) {
+            m_counters.unframedBytes += bytes.size() - i - 1;
+            m_lastArrivalNs = timeOf(line, first + bytes.size());
+            return;
+        }
     }
 }
 
@@ -158,6 +172,7 @@ void SimulatedBus::resetLine()
     m_selectionSent = false;
     m_selection = -1;
     m_pendingUnsolicited = 0;
+    m_lostStep = false;
 }
 
 void SimulatedBus::handle(const Decoded &item, qint64 endNs)
@@ -166,6 +181,13 @@ void SimulatedBus::handle(const Decoded &item, qint64 endNs)
     if (m_protocol != Protocol::Hsp5)
         followSelection(error ? error->driveAddress : std::get<Telegram>(item).driveAddress,
                         !error || error->kind != DecodeError::Kind::UnexpectedByte);
+    if (error && m_protocol == Protocol::Hsp5 && error->kind == DecodeError::Kind::UnknownService) {
+        ++m_counters.decodeErrors;
+        ++m_counters.framingLosses;
+        m_lostStep = true;
+        m_decoder->reset();
+        return;
+    }
     if (error) {
         ++m_counters.decodeErrors;
         handleError(*error, brokenBytes(*error), endNs);

@@ -25,6 +25,8 @@ struct BusCounters {
     int unanswered = 0;        // requests no drive answers: no selection, broadcast, unknown drive
     int decodeErrors = 0;      // broken or garbled input, answered or not
     int partialDrops = 0;      // incomplete telegrams dropped after an idle gap on the line
+    int framingLosses = 0;     // HSP5: requests of a service the drive cannot frame
+    qint64 unframedBytes = 0;  // HSP5: bytes ignored after a framing loss until a quiet line
     int unexpected = 0;        // telegrams from the operator the drives cannot place
     int encodeFailures = 0;    // answers the codec could not express (reported as warnings)
     // Injected faults.
@@ -50,7 +52,7 @@ struct BusTransmission {
 // according to SimulationOptions (latency, pacing at the baud rate, injected faults).
 // Pure bookkeeping: the caller supplies the time; BusClock runs it in real time.
 // HSP5 is point to point (the first drive answers) and full duplex (each direction has its own
-// timeline). DIN66019(II) is multi-drop on one shared line: the EOT selection picks the drive.
+// timeline); a request the drive cannot frame costs it its step until the line is quiet. DIN66019(II) is multi-drop on one shared line: the EOT selection picks the drive.
 class SimulatedBus
 {
 public:
@@ -142,6 +144,10 @@ private:
     qint64 m_historyStart = 0; // stream position of m_history[0]
     qint64 m_fed = 0;          // bytes fed to the decoder so far
     bool m_selectionSent = false; // DIN: an EOT reached the decoder since the last selection
+    // HSP5: a request of a service the drive does not know arrived. Its length follows from the
+    // service alone, so the drive cannot tell where it ends: it ignores the line until it is
+    // quiet, as a real drive must, and whatever was pipelined behind is lost.
+    bool m_lostStep = false;
     int m_selection = -1;
     quint8 m_inverterInvoke = 0;      // HSP5: INV-ID-FU of the last unsolicited request
     quint16 m_pendingUnsolicited = 0; // HSP5: bit n set = INV-ID-FU n awaits its answer

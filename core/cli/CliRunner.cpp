@@ -1,7 +1,9 @@
 #include "CliRunner.h"
 
+
 #include "cli/ParameterTable.h"
 #include "parameters/DisplayScaling.h"
+#include "parameters/DriveIdentity.h"
 #include "parameters/ParameterDocument.h"
 #include "parameters/ParameterId.h"
 #include "parameters/ParameterProperties.h"
@@ -104,8 +106,9 @@ void CliRunner::runLegacy()
     });
 }
 
-void CliRunner::scan(const ScanOptions &options, std::function<void(const DriveDescription &)> next)
+void CliRunner::scan(ScanOptions options, std::function<void(const DriveDescription &)> next)
 {
+    options.metadata = m_request.useCache ? MetadataSource::Cache : MetadataSource::RefreshCache;
     auto *watcher = new QFutureWatcher<DriveDescription>(this);
     const bool showProgress = !m_request.quiet && isatty(STDERR_FILENO);
     if (showProgress) {
@@ -124,6 +127,8 @@ void CliRunner::scan(const ScanOptions &options, std::function<void(const DriveD
                     m_err << QStringLiteral("\r\x1b[K") << Qt::flush;
                 const DriveDescription description = watcher->future().result();
                 watcher->deleteLater();
+                for (const QString &warning : description.warnings)
+                    m_err << warning << '\n';
                 next(description);
             });
     watcher->setFuture(m_client->scan(options));
@@ -138,9 +143,20 @@ void CliRunner::runInfo()
     scan(groupsOnly, [this](const DriveDescription &drive) {
         if (!drive.incompleteReason.isEmpty())
             return fail(1, QStringLiteral("could not read the groups: ") + drive.incompleteReason);
-        // The identification parameters live in the Sy group (page 00h).
+        // Then the groups that hold the identification parameters, with their values.
         ScanOptions system;
-        system.groupPages = {0};
+        for (const GroupDescription &group : drive.groups) {
+            for (const IdentificationParameter &id : DriveIdentity::parameters()) {
+                if (group.id == QLatin1String(id.group)) {
+                    system.groupPages.append(quint8(group.address >> 8));
+                    break;
+                }
+            }
+        }
+        if (system.groupPages.isEmpty()) {
+            m_out << ParameterTable::info(drive, {}, language());
+            return done();
+        }
         scan(system, [this, drive](const DriveDescription &systemGroup) {
             m_out << ParameterTable::info(drive, systemGroup, language());
             if (!systemGroup.incompleteReason.isEmpty())

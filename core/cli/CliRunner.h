@@ -37,7 +37,8 @@ private:
     void lookUpParameter(std::function<void(const GroupDescription &, const ParameterDescription &)> next);
     void readBack(const ParameterDescription &parameter, quint8 setMask);
     // Scans with progress on stderr and hands the result to done.
-    void scan(const ScanOptions &options, std::function<void(const DriveDescription &)> done);
+    // Metadata of a cached kind of drive comes from the cache unless --no-cache.
+    void scan(ScanOptions options, std::function<void(const DriveDescription &)> done);
 
     void fail(int exitCode, const QString &message);
     void done();

@@ -22,7 +22,10 @@ QString usage()
         "  --address N          drive address on a DIN66019(II) bus, 0..239 (default 1)\n"
         "  --baud N             baud rate (default 38400)\n"
         "  --language en|de     language of the drive's texts and of messages (default en)\n"
+        "  --hsp5-extensions    the drive has DriveDesk's HSP5 services 13, 14, 19-21 and\n"
+        "                       51-53 (off: only the services of the HSP5 specification)\n"
         "  --timeout MS         answer timeout per request (default: from the baud rate)\n"
+        "  --no-cache           read the drive's metadata, not the cached metadata of its kind\n"
         "  --quiet              no progress on standard error\n"
         "\n"
         "Commands:\n"
@@ -77,7 +80,8 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     const QCommandLineOption sets(QStringLiteral("sets"), {}, QStringLiteral("list"));
     const QCommandLineOption raw(QStringLiteral("raw"), QStringLiteral("raw"));
     connection.addTo(parser);
-    parser.addOptions({help, timeout, quiet, format, values, set, sets, raw});
+    const QCommandLineOption noCache(QStringLiteral("no-cache"));
+    parser.addOptions({help, timeout, quiet, format, values, set, sets, raw, noCache});
     *helpText = usage();
 
     // A negative value ("write uF.07 -5") is not an option: shield such words from the parser.
@@ -127,6 +131,7 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     request.values = parser.isSet(values);
     request.raw = parser.isSet(raw);
     request.quiet = parser.isSet(quiet);
+    request.useCache = !parser.isSet(noCache);
 
     QStringList positional = parser.positionalArguments();
     for (QString &word : positional) {

@@ -26,6 +26,7 @@ struct CliRequest {
     bool raw = false;
     int timeoutMs = 0;
     bool quiet = false;       // no progress on stderr
+    bool useCache = true;     // metadata of a known kind of drive from the metadata cache
 };
 
 // The usage text and the parse. Returns nothing and sets *error (naming the bad argument)

@@ -1,6 +1,8 @@
 #include "ParameterTable.h"
 
+
 #include "parameters/DisplayScaling.h"
+#include "parameters/DriveIdentity.h"
 #include "parameters/ParameterId.h"
 #include "parameters/Plaintexts.h"
 
@@ -99,22 +101,12 @@ QString info(const DriveDescription &drive, const DriveDescription &system, Lang
     text += QStringLiteral("%1: %2 (%3)\n")
                 .arg(german ? QStringLiteral("Verbindung") : QStringLiteral("connection"),
                      drive.connection, drive.protocol);
-    if (!system.identification.isEmpty()) {
-        text += QStringLiteral("%1: %2\n").arg(german ? QStringLiteral("Kennung") : QStringLiteral("identification"),
-                                               system.identification);
-    }
-    if (!system.groups.isEmpty()) {
-        const GroupDescription &sy = system.groups.constFirst();
-        QList<QStringList> rows;
-        for (const ParameterDescription &p : sy.parameters) {
-            if (!p.values[0])
-                continue;
-            rows << QStringList{QStringLiteral("  ") + parameterId(sy.id, p.number()), p.name,
-                                valueText(p, *p.values[0])};
-        }
-        text += QStringLiteral("%1  %2\n").arg(sy.id, sy.name);
-        text += align(rows);
-    }
+    // What the drive is, from its identification parameters (and service 13 where the
+    // protocol carries it): the same lines as the window's drive information.
+    QList<QStringList> identity;
+    for (const DriveIdentity::Line &line : DriveIdentity::lines(system))
+        identity << QStringList{line.label + QLatin1Char(':'), line.value};
+    text += align(identity);
     text += QLatin1Char('\n');
     QList<QStringList> rows;
     rows << QStringList{german ? QStringLiteral("Gruppe") : QStringLiteral("group"),

@@ -106,6 +106,8 @@ void ClientWorker::onAnswer(const Telegram &answer)
         retryOrGiveUp(*request);
         return;
     }
+    ++m_answersMatched;
+    m_recovering = false; // in step: the drive answers what it was asked
     if (request->completed()) {
         takeInFlight(request->ticket); // cancelled: its answer is ignored
         return;
@@ -198,11 +200,28 @@ void ClientWorker::onDeadline()
             continue;
         }
         ++request.timeouts;
-        if (isDin())
+        if (isDin()) {
             m_selectedDrive = -1; // the drive may have dropped it, or another took the line
-        else if (m_decoder->buffered() > 0 && m_sinceLastByte.elapsed() >= kIdleGapMs)
+            retryOrGiveUp(request);
+            continue;
+        }
+        if (m_decoder->buffered() > 0 && m_sinceLastByte.elapsed() >= kIdleGapMs)
             m_decoder->reset();
-        retryOrGiveUp(request);
+        // Nothing answered since this request went out: whatever was in flight behind it is
+        // lost too, and the drive may be out of step.
+        if (request.answersBefore == m_answersMatched)
+            startRecovery();
+        if (!m_recovering) {
+            retryOrGiveUp(request);
+            continue;
+        }
+        Request owned = takeInFlight(ticket);
+        if (owned->completed())
+            continue;
+        if (owned->attempts < owned->maxAttempts)
+            requeue(std::move(owned));
+        else
+            complete(*owned, Reply::Status::Timeout);
     }
     pump();
 }

@@ -18,6 +18,10 @@ constexpr int kMarginMs = 50;
 constexpr int kTcpMarginMs = 200;
 constexpr int kProbeMarginMs = 20;
 constexpr int kTcpProbeMarginMs = 100;
+// A drive's own idle detection and the operating system's timers.
+constexpr int kQuietMarginMs = 5;
+// A device server may gather bytes and send them on later.
+constexpr int kTcpQuietMarginMs = 20;
 
 qint32 lineBaudRate(const ConnectionSettings &settings)
 {
@@ -58,6 +62,13 @@ int answerTimeoutMs(const ConnectionSettings &settings, const ClientOptions &opt
                                                             : kLongestDinTelegram;
     const int margin = settings.kind == ConnectionSettings::Kind::Tcp ? kTcpMarginMs : kMarginMs;
     return lineTimeMs(settings, 2 * longest) + simulatedLatencyMs(settings) + margin;
+}
+
+int quietLineMs(const ConnectionSettings &settings)
+{
+    const int margin = settings.kind == ConnectionSettings::Kind::Tcp ? kTcpQuietMarginMs
+                                                                      : kQuietMarginMs;
+    return lineTimeMs(settings, kLongestHsp5Telegram) + margin;
 }
 
 int probeTimeoutMs(const ConnectionSettings &settings, const ClientOptions &options,

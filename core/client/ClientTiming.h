@@ -14,6 +14,10 @@ int answerTimeoutMs(const ConnectionSettings &settings, const ClientOptions &opt
 int probeTimeoutMs(const ConnectionSettings &settings, const ClientOptions &options,
                    int exchangeCharacters);
 
+// HSP5: how long the line must stay quiet before a drive that lost its step takes the next
+// byte as the start of a telegram again: longer than the longest telegram, plus a margin.
+int quietLineMs(const ConnectionSettings &settings);
+
 // Bits on the line per character in the protocol's character format: 11 (8E1) or 10 (7E1).
 int bitsPerCharacter(const ConnectionSettings &settings);
 

@@ -26,7 +26,8 @@ ClientWorker::ClientWorker(ConnectionSettings settings, ClientOptions options, Q
     , m_settings(std::move(settings))
     , m_options(options)
     , m_answerTimeoutMs(DriveDesk::answerTimeoutMs(m_settings, m_options))
-    , m_codec(makeCodec(m_settings.protocol))
+    , m_quietLineMs(quietLineMs(m_settings))
+    , m_codec(makeCodec(m_settings.protocol, CodecOptions{m_settings.hsp5Extensions}))
     , m_decoder(m_codec->makeDecoder(Role::Operator))
 {}
 
@@ -48,7 +49,11 @@ void ClientWorker::init()
     m_deadlineTimer->setSingleShot(true);
     m_deadlineTimer->setTimerType(Qt::PreciseTimer);
     connect(m_deadlineTimer, &QTimer::timeout, this, &ClientWorker::onDeadline);
+    m_quietTimer = new QTimer(this);
+    m_quietTimer->setSingleShot(true);
+    connect(m_quietTimer, &QTimer::timeout, this, &ClientWorker::pump);
     m_sinceLastByte.start();
+    m_sinceLastSend.start();
 }
 
 QString ClientWorker::connectionDescription() const
@@ -71,6 +76,7 @@ void ClientWorker::connectToDrive()
     dropLink();
     m_decoder->reset();
     m_selectedDrive = -1;
+    m_recovering = false;
     m_link = makeLink(m_settings);
     // Queued: a link may report from inside send(), and the worker must not re-enter itself.
     // What a dropped link still had on its way is not this link's business.
@@ -223,7 +229,7 @@ bool ClientWorker::prepare(PendingRequest &pending, Reply *rejection) const
 
 int ClientWorker::capacity() const
 {
-    if (isDin())
+    if (isDin() || m_recovering)
         return 1;
     return std::clamp(m_options.maxInFlight, 1, kMaxInFlight);
 }
@@ -239,6 +245,11 @@ void ClientWorker::pump()
         m_pumpAgain = false;
         while (m_state == DriveClient::State::Connected && !m_queue.empty()
                && int(m_inFlight.size()) < capacity()) {
+            if (m_recovering && !lineIsQuiet()) {
+                const qint64 waited = std::min(m_sinceLastByte.elapsed(), m_sinceLastSend.elapsed());
+                m_quietTimer->start(int(std::max<qint64>(m_quietLineMs - waited, 1)));
+                break;
+            }
             Request next = std::move(m_queue.front());
             m_queue.pop_front();
             PendingRequest &request = *next;
@@ -301,6 +312,8 @@ void ClientWorker::transmit(PendingRequest &request)
     }
     request.stage = PendingRequest::Stage::AwaitingAnswer;
     request.deadline = QDeadlineTimer(request.timeoutMs, Qt::PreciseTimer);
+    request.answersBefore = m_answersMatched;
+    m_sinceLastSend.restart();
     QString meaning = describe(request.wire);
     if (request.wire.driveAddress >= 0)
         meaning = tr("to drive %1: %2").arg(request.wire.driveAddress).arg(meaning);
@@ -331,6 +344,31 @@ void ClientWorker::armDeadlineTimer()
         m_deadlineTimer->stop();
     else
         m_deadlineTimer->start(int(std::max<qint64>(earliest, 0)));
+}
+
+bool ClientWorker::lineIsQuiet() const
+{
+    return m_sinceLastByte.elapsed() >= m_quietLineMs && m_sinceLastSend.elapsed() >= m_quietLineMs;
+}
+
+void ClientWorker::startRecovery()
+{
+    if (m_recovering)
+        return;
+    m_recovering = true;
+    record(TrafficRecord::Kind::Error, {},
+           tr("no request in flight was answered: one request at a time, each after %n ms of "
+              "quiet line, until the drive answers again",
+              nullptr, m_quietLineMs));
+}
+
+void ClientWorker::requeue(Request request)
+{
+    request->stage = PendingRequest::Stage::Queued;
+    const quint64 ticket = request->ticket;
+    const auto later = std::find_if(m_queue.begin(), m_queue.end(),
+                                    [ticket](const Request &r) { return r->ticket > ticket; });
+    m_queue.insert(later, std::move(request));
 }
 
 void ClientWorker::record(TrafficRecord::Kind kind, const QByteArray &bytes, const QString &meaning)

@@ -37,6 +37,10 @@ public:
 
     void submit(const Telegram &request, std::function<void(const Reply &)> done) override;
     void cancelPending() override { cancelAll(); }
+    bool supports(Service service, Access access) const override
+    {
+        return m_codec->supports(service, access);
+    }
 
     // The facade's requests: the result goes to the promise; cancelling its future drops the
     // request from the queue, or has its answer ignored when it is already on the wire.
@@ -97,6 +101,13 @@ private:
                   const QString &detail = {});
     QString transportDetail(const PendingRequest &request, Reply::Status status) const;
     void armDeadlineTimer();
+    // HSP5: no request in flight was answered. The drive may have lost its step (a service it
+    // cannot frame, line noise, a gateway's hiccup): one request at a time, each after a quiet
+    // line, until an answer matches again.
+    void startRecovery();
+    bool lineIsQuiet() const;
+    // Puts a request back into the queue in the order it was submitted.
+    void requeue(Request request);
     void record(TrafficRecord::Kind kind, const QByteArray &bytes, const QString &meaning);
     bool isDin() const { return m_settings.protocol != Protocol::Hsp5; }
 
@@ -110,7 +121,12 @@ private:
     std::deque<Request> m_queue;
     std::vector<Request> m_inFlight; // on the wire or between attempts
     QTimer *m_deadlineTimer = nullptr;
+    QTimer *m_quietTimer = nullptr; // recovery: wakes the queue once the line is quiet
     QElapsedTimer m_sinceLastByte;
+    QElapsedTimer m_sinceLastSend;
+    const int m_quietLineMs = 0;
+    quint64 m_answersMatched = 0;
+    bool m_recovering = false;
     quint8 m_lastInvokeId = 0;
     int m_selectedDrive = -1; // DIN66019(II): the drive the last EOT selected, -1 unknown
     quint64 m_linkGeneration = 0; // which link's queued reports still count
@@ -134,6 +150,10 @@ public:
 
     void submit(const Telegram &request, std::function<void(const Reply &)> done) override;
     void cancelPending() override { m_worker.cancelOwner(m_owner); }
+    bool supports(Service service, Access access) const override
+    {
+        return m_worker.supports(service, access);
+    }
 
 private:
     ClientWorker &m_worker;

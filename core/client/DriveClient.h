@@ -22,12 +22,21 @@ struct ClientOptions {
     int maxInFlight = 4; // HSP5 only (the drive's limit); DIN66019(II) is always 1
 };
 
+// Where a scan takes a drive's metadata from (core/parameters/MetadataCache).
+enum class MetadataSource : quint8 {
+    Drive,        // read it all from the drive; the cache is neither read nor written
+    Cache,        // a drive of a cached kind: only values and its identification are read
+    RefreshCache, // read it all from the drive and store it for the next connection
+};
+
 struct ScanOptions {
     bool values = true;       // read the value of every set
     bool plaintexts = true;   // services 7, 9, 12
     QList<quint8> groupPages; // empty: try every group address 00xxh..FFxxh
     bool parameters = true;   // false: groups only (services 10, 11)
     QList<quint16> onlyParameters; // non-empty: just these parameters of the groups found
+    MetadataSource metadata = MetadataSource::Drive;
+    QString cacheDirectory; // empty: MetadataCache::defaultDirectory()
 };
 
 // A note on the wire for the telegram monitor.

@@ -1,9 +1,12 @@
 #include "DriveScanner.h"
 
+#include "parameters/MetadataCache.h"
+
 #include <QPointer>
 
 #include <algorithm>
 #include <set>
+#include <type_traits>
 
 namespace DriveDesk {
 
@@ -31,19 +34,30 @@ DriveScanner::DriveScanner(RequestSink &sink, ScanOptions options, Language lang
     , m_language(language)
 {}
 
+DriveScanner::~DriveScanner() = default;
+
 void DriveScanner::start()
 {
     if (m_started || m_finished)
         return;
     m_started = true;
 
-    enqueue(Service::Fieldbus, FieldbusData{kIdentifyFunction, 0, 0, {}}, tr("identification"),
-            [this](const Reply &reply) {
-                // A drive without the function refuses it (ack 7): no identification then.
-                if (const auto *data = reply.data<FieldbusData>())
-                    m_state.identification = driveText(data->data);
-            });
+    // Seed 000 has no service 13: over HSP5 a drive could not even frame it. Where the
+    // protocol carries it, a drive without the function refuses it (ack 7): no text then.
+    if (m_sink.supports(Service::Fieldbus, Access::Read)) {
+        enqueue(Service::Fieldbus, FieldbusData{kIdentifyFunction, 0, 0, {}},
+                tr("identification"), [this](const Reply &reply) {
+                    if (const auto *data = reply.data<FieldbusData>())
+                        m_state.identification = driveText(data->data);
+                });
+    }
+    if (!probeCache())
+        scanGroups();
+    submitQueued();
+}
 
+void DriveScanner::scanGroups()
+{
     QList<quint8> pages = m_options.groupPages;
     if (pages.isEmpty()) {
         for (int page = 0; page <= 0xFF; ++page)
@@ -53,8 +67,6 @@ void DriveScanner::start()
     pages.erase(std::unique(pages.begin(), pages.end()), pages.end());
     for (quint8 page : std::as_const(pages))
         probeGroup(page);
-
-    submitQueued();
 }
 
 void DriveScanner::cancel()
@@ -65,7 +77,7 @@ void DriveScanner::cancel()
     m_finished = true;
     m_queue.clear();
     m_sink.cancelPending();
-    emit finished(m_state.describe(m_language, tr("cancelled")));
+    emit finished(result(tr("cancelled")));
 }
 
 void DriveScanner::enqueue(Service service, ServiceData data, QString what, Handler handle)
@@ -83,12 +95,20 @@ void DriveScanner::readParameter(quint8 page, quint8 number, Service service, Se
     enqueue(service, std::move(data), parameterWhat(page, number, label),
             [this, page, number, label, apply = std::move(apply)](const Reply &reply) {
                 ScanParameter &parameter = m_state.parameter(page, number);
-                if (const T *answer = reply.data<T>())
+                if (const T *answer = reply.data<T>()) {
                     apply(parameter, *answer);
-                else
-                    parameter.errors.append(failure(label, reply));
+                    return;
+                }
+                parameter.errors.append(failure(label, reply));
+                if (!std::is_same_v<T, ParameterValue>)
+                    ++parameter.metadataErrors;
             });
 }
+
+// ScanValues.cpp reads values through it.
+template void DriveScanner::readParameter<ParameterValue>(
+    quint8, quint8, Service, ServiceData, const QString &,
+    std::function<void(ScanParameter &, const ParameterValue &)>);
 
 void DriveScanner::submitQueued()
 {
@@ -139,7 +159,25 @@ void DriveScanner::finish(const QString &reason)
 {
     m_finished = true;
     m_queue.clear();
-    emit finished(m_state.describe(m_language, reason));
+    // Stored with every value read: the identity is in the values of its parameters.
+    if (reason.isEmpty() && mayStore())
+        store(m_state.describe(m_language, {}));
+    emit finished(result(reason));
+}
+
+DriveDescription DriveScanner::result(const QString &reason)
+{
+    DriveDescription drive = m_state.describe(m_language, reason);
+    drive.metadataFromCache = m_cachedKind.has_value();
+    drive.warnings = m_warnings;
+    if (!m_options.values) {
+        // The identification values were read for the identity only.
+        for (GroupDescription &group : drive.groups) {
+            for (ParameterDescription &parameter : group.parameters)
+                parameter.values.fill(std::nullopt);
+        }
+    }
+    return drive;
 }
 
 int DriveScanner::total() const
@@ -232,10 +270,12 @@ void DriveScanner::onParameterName(quint8 page, quint8 number, const Reply &repl
         // the rest of what the drive says about it.
         ScanParameter &parameter = group.parameters[number];
         parameter.description.address = quint16(group.description.address | number);
-        if (const auto *name = reply.data<NameData>())
+        if (const auto *name = reply.data<NameData>()) {
             parameter.description.name = driveText(name->text);
-        else
+        } else {
             parameter.errors.append(failure(tr("name"), reply));
+            ++parameter.metadataErrors;
+        }
         readMetadata(page, number);
     }
     askNames(page);
@@ -260,6 +300,7 @@ void DriveScanner::readMetadata(quint8 page, quint8 number)
                 const auto *d = reply.data<PropertiesData>();
                 if (!d) {
                     p.errors.append(failure(tr("properties"), reply));
+                    ++p.metadataErrors;
                     // Without bit 11 it is unknown whether the value is one or one per set.
                     if (m_options.values)
                         p.errors.append(tr("values: not read, the properties are unknown"));
@@ -267,7 +308,7 @@ void DriveScanner::readMetadata(quint8 page, quint8 number)
                 }
                 p.description.properties1 = d->properties1;
                 p.description.properties2 = d->properties2;
-                if (m_options.values)
+                if (wantsValue(page, number))
                     readValues(page, number, p.description.isSetProgrammable());
             });
     readParameter<DisplayScalingData>(page, number, Service::DisplayScaling,
@@ -288,33 +329,14 @@ void DriveScanner::readMetadata(quint8 page, quint8 number)
         });
 }
 
-void DriveScanner::readValues(quint8 page, quint8 number, bool setProgrammable)
-{
-    const quint16 address = m_state.parameter(page, number).description.address;
-    if (!setProgrammable) {
-        readParameter<ParameterValue>(page, number, Service::ParameterValueStandard,
-                                      ParameterValue{address, 0, 0}, tr("value"),
-                                      [](ScanParameter &p, const ParameterValue &d) {
-                                          p.description.values[0] = d.value;
-                                      });
-        return;
-    }
-    for (int set = 0; set < kParameterSets; ++set) {
-        readParameter<ParameterValue>(page, number, Service::ParameterValue,
-                                      ParameterValue{address, quint8(1u << set), 0},
-                                      tr("value of set %1").arg(set),
-                                      [set](ScanParameter &p, const ParameterValue &d) {
-                                          p.description.values[set] = d.value;
-                                      });
-    }
-}
-
 void DriveScanner::readPlaintexts(quint8 page, quint8 number,
                                   const PlaintextIndicesData &indices)
 {
     ScanParameter &parameter = m_state.parameter(page, number);
     // Definition indices travel in one byte.
     const int count = std::min<int>(indices.combivisCount, 0x100);
+    if (count < indices.combivisCount)
+        ++parameter.metadataErrors;
     if (count < indices.combivisCount)
         parameter.errors.append(
             tr("plaintexts: the drive names %1 definitions, only %2 can be read")

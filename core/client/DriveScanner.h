@@ -3,23 +3,33 @@
 #include "client/DriveClient.h"
 #include "client/RequestSink.h"
 #include "client/ScanState.h"
+#include "parameters/DriveIdentity.h"
 
 #include <QObject>
 
 #include <deque>
 #include <functional>
+#include <memory>
+#include <optional>
 
 namespace DriveDesk {
+
+class MetadataCache;
 
 // Discovers groups, parameters, metadata and values of a drive through a RequestSink.
 // A state machine driven by the sink's `done` callbacks; it lives in the sink's thread.
 // finished() is emitted exactly once; a receiver that wants the scanner gone uses deleteLater().
+//
+// It sends only what the drive can frame: service 13 (identification text) only where the sink
+// supports it. A drive of a kind the metadata cache knows (ScanOptions::metadata) costs only
+// its identification and its values; a cold scan of a full drive refreshes the cache.
 class DriveScanner : public QObject
 {
     Q_OBJECT
 public:
     DriveScanner(RequestSink &sink, ScanOptions options, Language language,
                  QObject *parent = nullptr);
+    ~DriveScanner() override;
 
     void start();
     // Stops issuing requests, cancels the sink's pending ones and finishes at once with what
@@ -40,6 +50,13 @@ private:
         Handler handle;
     };
 
+    // The kind parameters of one cached kind, as the drive answers them.
+    struct Probe {
+        QList<quint16> addresses;
+        DriveKind read;
+        bool failed = false;
+    };
+
     void enqueue(Service service, ServiceData data, QString what, Handler handle);
     // A read about one existing parameter: a failure goes to its errors, prefixed by `label`.
     template<typename T>
@@ -48,26 +65,45 @@ private:
     void submitQueued();
     void onReplied(const Reply &reply, const QString &what, const Handler &handle);
     void finish(const QString &reason);
+    DriveDescription result(const QString &reason);
     int total() const;
 
+    // Cold: everything from the drive (DriveScanner.cpp).
+    void scanGroups();
     void probeGroup(quint8 page);
     void onGroupProperties(quint8 page, const Reply &reply);
     void askNames(quint8 page);
     void askName(quint8 page, quint8 number);
     void onParameterName(quint8 page, quint8 number, const Reply &reply);
     void readMetadata(quint8 page, quint8 number);
-    void readValues(quint8 page, quint8 number, bool setProgrammable);
     void readPlaintexts(quint8 page, quint8 number, const PlaintextIndicesData &indices);
     void readPlaintextEntries(quint8 page, quint8 number, quint16 index, quint8 definition,
                               int count);
+    // Values (ScanValues.cpp): one read for a value that is not set-programmable; for one
+    // that is, all sets in one read, split in halves where the drive says they differ.
+    void readValues(quint8 page, quint8 number, bool setProgrammable);
+    void readSetValues(quint8 page, quint8 number, quint8 setMask);
+    bool wantsValue(quint8 page, quint8 number) const;
     QString parameterWhat(quint8 page, quint8 number, const QString &detail = {}) const;
     QString failure(const QString &label, const Reply &reply) const;
+
+    // The metadata cache (ScanCache.cpp).
+    bool probeCache();
+    void onProbed();
+    void adoptCached(const DriveDescription &cached);
+    bool mayStore() const;
+    void store(const DriveDescription &drive);
 
     RequestSink &m_sink;
     const ScanOptions m_options;
     const Language m_language;
+    std::unique_ptr<MetadataCache> m_cache; // null when the scan neither reads nor writes it
     ScanState m_state;
     std::deque<QueuedRequest> m_queue; // not yet handed to the sink
+    std::vector<Probe> m_probes;
+    int m_probesPending = 0;
+    std::optional<DriveKind> m_cachedKind; // the kind whose cached metadata is used
+    QStringList m_warnings;
     int m_submitted = 0;                // handed to the sink, `done` not yet run
     int m_enqueued = 0;
     int m_done = 0;

@@ -40,6 +40,7 @@ struct PendingRequest {
     Completion done;    // empty once it ran
     Stage stage = Stage::Queued;
     QDeadlineTimer deadline;
+    quint64 answersBefore = 0; // answers the client had matched when this attempt went out
 
     int attempts = 0;
     int timeouts = 0;

@@ -18,6 +18,9 @@ public:
     virtual void submit(const Telegram &request, std::function<void(const Reply &)> done) = 0;
     // Cancels every request this sink still holds; their `done` run with Cancelled.
     virtual void cancelPending() = 0;
+    // Whether the protocol, as this connection is set up, can carry the request at all. A job
+    // asks before it sends anything beyond what every drive knows (HSP5: seed 000's services).
+    virtual bool supports(Service service, Access access) const = 0;
 };
 
 } // namespace DriveDesk

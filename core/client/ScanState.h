@@ -21,6 +21,7 @@ struct ScanDefinition {
 struct ScanParameter {
     ParameterDescription description;
     QStringList errors;                      // one line per failed read
+    int metadataErrors = 0;                  // of those, reads of metadata (not of values)
     std::vector<ScanDefinition> definitions; // by definition index
 };
 

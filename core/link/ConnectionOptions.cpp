@@ -4,12 +4,13 @@ namespace DriveDesk {
 
 void ConnectionOptions::addTo(QCommandLineParser &parser) const
 {
-    parser.addOptions({m_connect, m_protocol, m_address, m_baud, m_language});
+    parser.addOptions({m_connect, m_protocol, m_address, m_baud, m_language, m_hsp5Extensions});
 }
 
 bool ConnectionOptions::hasTargetDetails(const QCommandLineParser &parser) const
 {
-    return parser.isSet(m_protocol) || parser.isSet(m_address) || parser.isSet(m_baud);
+    return parser.isSet(m_protocol) || parser.isSet(m_address) || parser.isSet(m_baud)
+           || parser.isSet(m_hsp5Extensions);
 }
 
 bool ConnectionOptions::integer(const QCommandLineParser &parser, const QCommandLineOption &option,
@@ -71,6 +72,15 @@ bool ConnectionOptions::settings(const QCommandLineParser &parser, ConnectionSet
         || !integer(parser, m_baud, 50, 4000000, &baudRate, error))
         return false;
     result.baudRate = baudRate;
+    if (parser.isSet(m_hsp5Extensions)) {
+        if (result.protocol != Protocol::Hsp5) {
+            *error = tr("--hsp5-extensions needs --protocol hsp5");
+            return false;
+        }
+        // The simulated drive then has them too: it is the drive known to have them.
+        result.hsp5Extensions = true;
+        result.simulation.hsp5Extensions = true;
+    }
     // The simulated drive answers where the options say a drive is.
     result.simulation.driveAddresses = {result.driveAddress};
     result.simulation.baudRate = baudRate;

@@ -19,7 +19,8 @@ public:
     void addTo(QCommandLineParser &parser) const;
 
     bool hasTarget(const QCommandLineParser &parser) const { return parser.isSet(m_connect); }
-    // --protocol, --address or --baud: they only mean something with --connect.
+    // --protocol, --address, --baud or --hsp5-extensions: they only mean something with
+    // --connect.
     bool hasTargetDetails(const QCommandLineParser &parser) const;
 
     // --language en|de; nothing when absent. False, with *error, for anything else.
@@ -40,6 +41,7 @@ private:
     QCommandLineOption m_address{QStringLiteral("address"), {}, QStringLiteral("n")};
     QCommandLineOption m_baud{QStringLiteral("baud"), {}, QStringLiteral("n")};
     QCommandLineOption m_language{QStringLiteral("language"), {}, QStringLiteral("lang")};
+    QCommandLineOption m_hsp5Extensions{QStringLiteral("hsp5-extensions")};
 };
 
 } // namespace DriveDesk

@@ -18,6 +18,9 @@ struct SimulationOptions {
     bool paced = false;           // send and receive at the configured baud rate
     qint32 baudRate = 38400;      // for pacing
     int parameterCount = 0;       // 0: the standard simulated F5; more pads it with generated ones
+    // HSP5: the drive also knows DriveDesk's services 13, 14, 19-21 and 51-53. Off, it knows
+    // exactly seed 000's services and loses step on any other, as a real drive does.
+    bool hsp5Extensions = false;
     // Fault injection. Per byte: corrupt one bit, drop the byte. Per telegram: hold the reply
     // back by delayMs, answer busy (ack 6), send an unsolicited inverter request (HSP5).
     double corruptByteRate = 0;
@@ -45,6 +48,9 @@ struct ConnectionSettings {
     std::optional<QSerialPort::Parity> parity;
     std::optional<QSerialPort::StopBits> stopBits;
     Language language = Language::English;
+    // HSP5: the drive is known to have DriveDesk's services 13, 14, 19-21 and 51-53, so they
+    // may be sent. Off (the default), only seed 000's services go on the line.
+    bool hsp5Extensions = false;
     SimulationOptions simulation; // Kind::Simulated only
 
     QSerialPort::DataBits effectiveDataBits() const;

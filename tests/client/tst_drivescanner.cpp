@@ -62,6 +62,7 @@ public:
     std::map<quint8, FakeGroup> groups;                 // by page
     std::map<quint16, QList<FakeDefinition>> plaintexts; // by COMBIVIS plaintext index
     QByteArray identification;                          // empty: service 13 refused (ack 7)
+    bool framesService13 = true; // false: a link that cannot carry service 13 (HSP5, seed 000)
     int linkLostAfter = -1; // from this many answers on, every request ends with LinkLost
     bool synchronous = false;
 
@@ -86,6 +87,11 @@ public:
             m_held.pop_front();
             next.done(answerNext(next.request));
         });
+    }
+
+    bool supports(Service service, Access) const override
+    {
+        return service != Service::Fieldbus || framesService13;
     }
 
     void cancelPending() override
@@ -251,12 +257,19 @@ private:
         }
         case Service::ParameterValue: {
             auto *d = t.as<ParameterValue>();
-            const int set = std::countr_zero(unsigned(d->set));
-            if (std::popcount(unsigned(d->set)) != 1)
+            // Over several sets the drive answers their value when they all hold the same,
+            // and ack 3 when they differ (seed 000, 2.1).
+            std::optional<qint32> value;
+            for (int set = 0; set < kParameterSets; ++set) {
+                if (!(d->set & (1u << set)))
+                    continue;
+                if (set == p->refusedSet || (value && *value != p->values.at(set)))
+                    return Ack::DataInvalid;
+                value = p->values.at(set);
+            }
+            if (!value)
                 return Ack::SetInvalid;
-            if (set == p->refusedSet)
-                return Ack::DataInvalid;
-            d->value = p->values.at(set);
+            d->value = *value;
             return Ack::Ok;
         }
         case Service::ParameterValueStandard:

@@ -2,7 +2,7 @@
 
 #include "RecentConnections.h"
 
-#include "model/ParameterFormat.h"
+#include "parameters/DriveIdentity.h"
 #include "protocol/Codec.h"
 
 #include <QApplication>
@@ -14,49 +14,12 @@
 
 namespace DriveDesk {
 
-namespace {
-
-// The identification parameters of an F5 in the order they are shown: group id and number.
-struct IdentificationParameter
-{
-    const char *group;
-    quint8 number;
-};
-constexpr IdentificationParameter kIdentification[] = {
-    { "Sy", 2 }, // inverter identifier
-    { "Sy", 3 }, // power unit code
-    { "In", 0 }, // inverter type
-    { "In", 1 }, // rated current
-    { "In", 4 }, // voltage class
-    { "In", 6 }, // software version
-    { "In", 7 }, // software date
-    { "In", 10 }, // serial number
-};
-
-} // namespace
-
 QList<DriveInfoDialog::Line> DriveInfoDialog::lines(const DriveDescription &drive,
                                                     const ConnectionSettings &settings)
 {
     QList<Line> lines;
-    if (!drive.identification.isEmpty())
-        lines.append({ tr("Identification"), drive.identification });
-    for (const IdentificationParameter &id : kIdentification) {
-        const GroupDescription *group = drive.findGroup(QString::fromLatin1(id.group));
-        if (!group)
-            continue;
-        const ParameterDescription *parameter = drive.find(quint16(group->address + id.number));
-        if (!parameter)
-            continue;
-        const QString label
-            = QStringLiteral("%1 (%2)").arg(parameter->name, parameterId(group->id, id.number));
-        const std::optional<qint32> value = parameter->values[0];
-        lines.append(
-            { label,
-              value ? ParameterFormat(*parameter).text(*value)
-                    : tr("not read: %1")
-                          .arg(parameter->error.isEmpty() ? tr("no value") : parameter->error) });
-    }
+    for (const DriveIdentity::Line &line : DriveIdentity::lines(drive))
+        lines.append({ line.label, line.value });
     lines.append({ tr("Connection"), RecentConnections::describe(settings) });
     lines.append({ tr("Protocol"), protocolName(settings.protocol).toUpper() });
     if (settings.protocol != Protocol::Hsp5)

@@ -76,12 +76,15 @@ void DriveSession::cancelScan()
         m_scan.cancel();
 }
 
-void DriveSession::rescan()
+void DriveSession::rescan(MetadataSource metadata)
 {
     if (m_scan.isRunning() || m_client->state() != DriveClient::State::Connected)
         return;
     m_polling->setEnabled(false);
-    m_scan.setFuture(m_client->scan());
+    ScanOptions options;
+    options.metadata = metadata;
+    options.cacheDirectory = m_cacheDirectory;
+    m_scan.setFuture(m_client->scan(options));
     emit scanStarted();
 }
 

@@ -1,5 +1,7 @@
 #include "MainWindow.h"
 
+#include "parameters/DriveIdentity.h"
+
 #include "DriveSession.h"
 #include "NoticeBar.h"
 #include "ParameterBrowser.h"
@@ -12,6 +14,7 @@
 #include "edit/PollingController.h"
 #include "model/ParameterModel.h"
 #include "monitor/TelegramMonitor.h"
+#include "parameters/DriveIdentity.h"
 #include "parameters/ParameterId.h"
 
 #include <QAction>
@@ -41,7 +44,7 @@ const QString kFavouritesGroup = QStringLiteral("favourites");
 // them, otherwise where it was reached.
 QString favouritesKey(const DriveDescription &drive, const ConnectionSettings &settings)
 {
-    QString identity = drive.identification;
+    QString identity = DriveIdentity::summary(drive);
     if (const GroupDescription *info = drive.findGroup(QStringLiteral("In"))) {
         if (const ParameterDescription *serial = drive.find(quint16(info->address + 10))) {
             if (serial->values[0])
@@ -250,9 +253,9 @@ void MainWindow::onDescribed(const DriveDescription &drive)
             favourites.insert(quint16(address));
     }
     m_model->setFavourites(favourites);
-    const QString name = drive.identification.isEmpty()
-        ? RecentConnections::describe(m_session->settings())
-        : drive.identification;
+    const QString identity = DriveIdentity::summary(drive);
+    const QString name
+        = identity.isEmpty() ? RecentConnections::describe(m_session->settings()) : identity;
     setWindowTitle(tr("%1 - DriveDesk").arg(name));
 }
 
