@@ -4,6 +4,7 @@
 #include "cli/ParameterTable.h"
 #include "parameters/DisplayScaling.h"
 #include "parameters/DriveIdentity.h"
+#include "parameters/MetadataCache.h"
 #include "parameters/ParameterDocument.h"
 #include "parameters/ParameterId.h"
 #include "parameters/ParameterProperties.h"
@@ -122,13 +123,19 @@ void CliRunner::scan(ScanOptions options, std::function<void(const DriveDescript
                 });
     }
     connect(watcher, &QFutureWatcher<DriveDescription>::finished, this,
-            [this, watcher, showProgress, next = std::move(next)] {
+            [this, watcher, showProgress, options, next = std::move(next)] {
                 if (showProgress)
                     m_err << QStringLiteral("\r\x1b[K") << Qt::flush;
                 const DriveDescription description = watcher->future().result();
                 watcher->deleteLater();
                 for (const QString &warning : description.warnings)
                     m_err << warning << '\n';
+                if (description.metadataFromCache && !m_request.quiet)
+                    m_err << QStringLiteral("metadata from the cache of this kind of drive (%1); "
+                                            "--no-cache reads it from the drive\n")
+                                 .arg(options.cacheDirectory.isEmpty()
+                                          ? MetadataCache::defaultDirectory()
+                                          : options.cacheDirectory);
                 next(description);
             });
     watcher->setFuture(m_client->scan(options));

@@ -1,11 +1,13 @@
 #include "parameters/DriveDescription.h"
 #include "parameters/ParameterDocument.h"
 
+#include <QDir>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
 #include <QRegularExpression>
+#include <QTemporaryDir>
 #include <QTest>
 
 using namespace DriveDesk;
@@ -21,9 +23,14 @@ struct Run {
 const QString kCli = QStringLiteral(DRIVEDESK_BINARY_DIR "/app/cli/drivedesk-cli");
 const QString kSim = QStringLiteral(DRIVEDESK_BINARY_DIR "/app/sim/drivedesk-sim");
 
-Run cli(const QStringList &arguments)
+Run cli(const QStringList &arguments, const QString &cacheHome = {})
 {
     QProcess process;
+    if (!cacheHome.isEmpty()) {
+        QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+        environment.insert(QStringLiteral("XDG_CACHE_HOME"), cacheHome);
+        process.setProcessEnvironment(environment);
+    }
     process.start(kCli, arguments);
     Run run;
     if (!process.waitForFinished(120000)) {
@@ -93,6 +100,43 @@ private slots:
                  qPrintable(run.out.left(400)));
         QVERIFY(run.out.contains(QStringLiteral("op.28")));
         QVERIFY(run.out.contains(QRegularExpression(QStringLiteral("\\d+ groups, \\d+ parameters"))));
+    }
+
+    void theSecondScanTakesTheMetadataFromTheCache()
+    {
+        QTemporaryDir home;
+        const QStringList scan{QStringLiteral("--connect"), QStringLiteral("sim"),
+                               QStringLiteral("scan"), QStringLiteral("--format"),
+                               QStringLiteral("json")};
+        const QString fromCache = QStringLiteral("metadata from the cache");
+        const Run cold = cli(scan, home.path());
+        QVERIFY2(cold.exitCode == 0, qPrintable(explain(cold)));
+        QVERIFY(!cold.err.contains(fromCache));
+        const QDir cache(home.filePath(QStringLiteral("DriveDesk/metadata")));
+        QCOMPARE(cache.entryList(QDir::Files).size(), 1);
+
+        const Run warm = cli(scan, home.path());
+        QVERIFY2(warm.exitCode == 0, qPrintable(explain(warm)));
+        QVERIFY2(warm.err.contains(fromCache), qPrintable(explain(warm)));
+        QCOMPARE(warm.out, cold.out);
+
+        const Run forced = cli(scan + QStringList{QStringLiteral("--no-cache")}, home.path());
+        QVERIFY2(forced.exitCode == 0, qPrintable(explain(forced)));
+        QVERIFY(!forced.err.contains(fromCache));
+        QCOMPARE(forced.out, cold.out);
+
+        // A cache file that is not one is reported, not trusted, and replaced.
+        const QString file = cache.filePath(cache.entryList(QDir::Files).constFirst());
+        QFile broken(file);
+        QVERIFY(broken.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        broken.write("{\"format\": \"something else\"}");
+        broken.close();
+        const Run repaired = cli(scan, home.path());
+        QVERIFY2(repaired.exitCode == 0, qPrintable(explain(repaired)));
+        QVERIFY2(repaired.err.contains(file) && repaired.err.contains(QStringLiteral("ignored")),
+                 qPrintable(explain(repaired)));
+        QCOMPARE(repaired.out, cold.out);
+        QVERIFY(cli(scan, home.path()).err.contains(fromCache));
     }
 
     void infoNamesGroupsAndCounts()
