@@ -19,6 +19,10 @@
         <source>unknown protocol &quot;%1&quot;: use hsp5, din66019ii or din66019</source>
         <translation>unbekanntes Protokoll „%1“: hsp5, din66019ii oder din66019 angeben</translation>
     </message>
+    <message>
+        <source>--hsp5-extensions needs --protocol hsp5</source>
+        <translation>--hsp5-extensions verlangt --protocol hsp5</translation>
+    </message>
 </context>
 <context>
     <name>ConnectionSettingsText</name>
@@ -246,6 +250,13 @@
         <source>to drive %1: %2</source>
         <translation>an Umrichter %1: %2</translation>
     </message>
+    <message numerus="yes">
+        <source>no request in flight was answered: one request at a time, each after %n ms of quiet line, until the drive answers again</source>
+        <translation>
+            <numerusform>keine der laufenden Anfragen wurde beantwortet: eine Anfrage nach der anderen, jede nach %n ms Ruhe auf der Leitung, bis der Umrichter wieder antwortet</numerusform>
+            <numerusform>keine der laufenden Anfragen wurde beantwortet: eine Anfrage nach der anderen, jede nach %n ms Ruhe auf der Leitung, bis der Umrichter wieder antwortet</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ConnectionDialog</name>
@@ -373,21 +384,17 @@
         <source>Finding drives needs a DIN66019II or DIN66019 bus: HSP5 is point to point. Choose the protocol first.</source>
         <translation>Die Umrichtersuche braucht einen DIN66019II- oder DIN66019-Bus: HSP5 ist eine Punkt-zu-Punkt-Verbindung. Zuerst das Protokoll wählen.</translation>
     </message>
+    <message>
+        <source>The drive has DriveDesk&apos;s HSP5 e&amp;xtensions</source>
+        <translation>Der Umrichter kennt die HSP5-&amp;Erweiterungen von DriveDesk</translation>
+    </message>
+    <message>
+        <source>Services 13, 14, 19-21 and 51-53, which the HSP5 specification does not define. Only for a drive known to have them: a drive without them cannot tell where such a request ends and loses the requests that follow it.</source>
+        <translation>Die Dienste 13, 14, 19-21 und 51-53, die die HSP5-Spezifikation nicht festlegt. Nur für einen Umrichter, der sie sicher kennt: ein Umrichter ohne sie erkennt nicht, wo eine solche Anfrage endet, und verliert die folgenden Anfragen.</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::DriveInfoDialog</name>
-    <message>
-        <source>Identification</source>
-        <translation>Identifikation</translation>
-    </message>
-    <message>
-        <source>not read: %1</source>
-        <translation>nicht gelesen: %1</translation>
-    </message>
-    <message>
-        <source>no value</source>
-        <translation>kein Wert</translation>
-    </message>
     <message>
         <source>Connection</source>
         <translation>Verbindung</translation>
@@ -419,6 +426,18 @@
     <message>
         <source>&amp;Copy</source>
         <translation>&amp;Kopieren</translation>
+    </message>
+    <message>
+        <source>Metadata</source>
+        <translation>Metadaten</translation>
+    </message>
+    <message>
+        <source>from the metadata cache of this kind of drive</source>
+        <translation>aus dem Metadaten-Cache dieser Umrichterart</translation>
+    </message>
+    <message>
+        <source>read from the drive</source>
+        <translation>vom Umrichter gelesen</translation>
     </message>
 </context>
 <context>
@@ -505,6 +524,14 @@
             <numerusform>%1 (und %n weiteres)</numerusform>
             <numerusform>%1 (und %n weitere)</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>identification %1h</source>
+        <translation>Kennung %1h</translation>
+    </message>
+    <message>
+        <source>values of sets %1</source>
+        <translation>Werte der Sätze %1</translation>
     </message>
 </context>
 <context>
@@ -1222,6 +1249,22 @@
         <source>&lt;p&gt;&lt;b&gt;DriveDesk&lt;/b&gt; %1&lt;/p&gt;&lt;p&gt;Reads and edits the parameters of KEB frequency inverters over HSP5, DIN66019II and DIN66019, and ships a simulated COMBIVERT F5.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;DriveDesk&lt;/b&gt; %1&lt;/p&gt;&lt;p&gt;Liest und bearbeitet die Parameter von KEB-Frequenzumrichtern über HSP5, DIN66019II und DIN66019 und bringt einen simulierten COMBIVERT F5 mit.&lt;/p&gt;</translation>
     </message>
+    <message>
+        <source>Read &amp;Metadata Again</source>
+        <translation>&amp;Metadaten neu lesen</translation>
+    </message>
+    <message>
+        <source>Read the groups, names, limits and texts from the drive instead of the metadata cache</source>
+        <translation>Gruppen, Namen, Grenzen und Texte vom Umrichter lesen statt aus dem Metadaten-Cache</translation>
+    </message>
+    <message>
+        <source>Metadata from cache</source>
+        <translation>Metadaten aus dem Cache</translation>
+    </message>
+    <message>
+        <source>The groups, names, limits and texts come from the metadata cache of this kind of drive; the values were read from the drive. Drive &gt; Read Metadata Again reads everything.</source>
+        <translation>Gruppen, Namen, Grenzen und Texte stammen aus dem Metadaten-Cache dieser Umrichterart; die Werte wurden vom Umrichter gelesen. Umrichter &gt; Metadaten neu lesen liest alles.</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::NoticeBar</name>
@@ -1759,6 +1802,84 @@ Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
     <message>
         <source>this drive has no parameter %1</source>
         <translation>dieser Umrichter hat keinen Parameter %1</translation>
+    </message>
+</context>
+<context>
+    <name>DriveIdentity</name>
+    <message>
+        <source>Identification</source>
+        <translation>Kennung</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>not read: %1</source>
+        <translation>nicht gelesen: %1</translation>
+    </message>
+    <message>
+        <source>no value</source>
+        <translation>kein Wert</translation>
+    </message>
+    <message>
+        <source>Type %1</source>
+        <translation>Typ %1</translation>
+    </message>
+    <message>
+        <source>Type %1, software %2</source>
+        <translation>Typ %1, Software %2</translation>
+    </message>
+    <message>
+        <source>Type %1, software %2, serial number %3</source>
+        <translation>Typ %1, Software %2, Seriennummer %3</translation>
+    </message>
+</context>
+<context>
+    <name>MetadataCache</name>
+    <message>
+        <source>too large (%1 bytes)</source>
+        <translation>zu groß (%1 Bytes)</translation>
+    </message>
+    <message>
+        <source>not JSON (%1 at byte %2)</source>
+        <translation>kein JSON (%1 bei Byte %2)</translation>
+    </message>
+    <message>
+        <source>not a DriveDesk metadata cache file</source>
+        <translation>keine Metadaten-Cache-Datei von DriveDesk</translation>
+    </message>
+    <message>
+        <source>cache version %1, this DriveDesk reads version %2</source>
+        <translation>Cache-Version %1, dieses DriveDesk liest Version %2</translation>
+    </message>
+    <message>
+        <source>it holds another kind of drive</source>
+        <translation>sie enthält eine andere Umrichterart</translation>
+    </message>
+    <message>
+        <source>it has no languages</source>
+        <translation>sie enthält keine Sprachen</translation>
+    </message>
+    <message>
+        <source>language %1 holds the texts of language %2</source>
+        <translation>Sprache %1 enthält die Texte der Sprache %2</translation>
+    </message>
+    <message>
+        <source>metadata cache file &apos;%1&apos; ignored and removed: %2</source>
+        <translation>Metadaten-Cache-Datei „%1“ übergangen und entfernt: %2</translation>
+    </message>
+    <message>
+        <source>cannot create the metadata cache folder &apos;%1&apos;</source>
+        <translation>der Metadaten-Cache-Ordner „%1“ kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>cannot write the metadata cache file &apos;%1&apos;: %2</source>
+        <translation>die Metadaten-Cache-Datei „%1“ kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>cannot remove &apos;%1&apos;</source>
+        <translation>„%1“ kann nicht entfernt werden</translation>
     </message>
 </context>
 <context>

@@ -19,6 +19,10 @@
         <source>unknown protocol &quot;%1&quot;: use hsp5, din66019ii or din66019</source>
         <translation>unknown protocol &quot;%1&quot;: use hsp5, din66019ii or din66019</translation>
     </message>
+    <message>
+        <source>--hsp5-extensions needs --protocol hsp5</source>
+        <translation>--hsp5-extensions needs --protocol hsp5</translation>
+    </message>
 </context>
 <context>
     <name>ConnectionSettingsText</name>
@@ -246,6 +250,13 @@
         <source>to drive %1: %2</source>
         <translation>to drive %1: %2</translation>
     </message>
+    <message numerus="yes">
+        <source>no request in flight was answered: one request at a time, each after %n ms of quiet line, until the drive answers again</source>
+        <translation>
+            <numerusform>no request in flight was answered: one request at a time, each after %n ms of quiet line, until the drive answers again</numerusform>
+            <numerusform>no request in flight was answered: one request at a time, each after %n ms of quiet line, until the drive answers again</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ConnectionDialog</name>
@@ -373,21 +384,17 @@
         <source>Finding drives needs a DIN66019II or DIN66019 bus: HSP5 is point to point. Choose the protocol first.</source>
         <translation>Finding drives needs a DIN66019II or DIN66019 bus: HSP5 is point to point. Choose the protocol first.</translation>
     </message>
+    <message>
+        <source>The drive has DriveDesk&apos;s HSP5 e&amp;xtensions</source>
+        <translation>The drive has DriveDesk&apos;s HSP5 e&amp;xtensions</translation>
+    </message>
+    <message>
+        <source>Services 13, 14, 19-21 and 51-53, which the HSP5 specification does not define. Only for a drive known to have them: a drive without them cannot tell where such a request ends and loses the requests that follow it.</source>
+        <translation>Services 13, 14, 19-21 and 51-53, which the HSP5 specification does not define. Only for a drive known to have them: a drive without them cannot tell where such a request ends and loses the requests that follow it.</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::DriveInfoDialog</name>
-    <message>
-        <source>Identification</source>
-        <translation>Identification</translation>
-    </message>
-    <message>
-        <source>not read: %1</source>
-        <translation>not read: %1</translation>
-    </message>
-    <message>
-        <source>no value</source>
-        <translation>no value</translation>
-    </message>
     <message>
         <source>Connection</source>
         <translation>Connection</translation>
@@ -419,6 +426,18 @@
     <message>
         <source>&amp;Copy</source>
         <translation>&amp;Copy</translation>
+    </message>
+    <message>
+        <source>Metadata</source>
+        <translation>Metadata</translation>
+    </message>
+    <message>
+        <source>from the metadata cache of this kind of drive</source>
+        <translation>from the metadata cache of this kind of drive</translation>
+    </message>
+    <message>
+        <source>read from the drive</source>
+        <translation>read from the drive</translation>
     </message>
 </context>
 <context>
@@ -505,6 +524,14 @@
             <numerusform>%1 (and %n more)</numerusform>
             <numerusform>%1 (and %n more)</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>identification %1h</source>
+        <translation>identification %1h</translation>
+    </message>
+    <message>
+        <source>values of sets %1</source>
+        <translation>values of sets %1</translation>
     </message>
 </context>
 <context>
@@ -1222,6 +1249,22 @@
         <source>&lt;p&gt;&lt;b&gt;DriveDesk&lt;/b&gt; %1&lt;/p&gt;&lt;p&gt;Reads and edits the parameters of KEB frequency inverters over HSP5, DIN66019II and DIN66019, and ships a simulated COMBIVERT F5.&lt;/p&gt;</source>
         <translation>&lt;p&gt;&lt;b&gt;DriveDesk&lt;/b&gt; %1&lt;/p&gt;&lt;p&gt;Reads and edits the parameters of KEB frequency inverters over HSP5, DIN66019II and DIN66019, and ships a simulated COMBIVERT F5.&lt;/p&gt;</translation>
     </message>
+    <message>
+        <source>Read &amp;Metadata Again</source>
+        <translation>Read &amp;Metadata Again</translation>
+    </message>
+    <message>
+        <source>Read the groups, names, limits and texts from the drive instead of the metadata cache</source>
+        <translation>Read the groups, names, limits and texts from the drive instead of the metadata cache</translation>
+    </message>
+    <message>
+        <source>Metadata from cache</source>
+        <translation>Metadata from cache</translation>
+    </message>
+    <message>
+        <source>The groups, names, limits and texts come from the metadata cache of this kind of drive; the values were read from the drive. Drive &gt; Read Metadata Again reads everything.</source>
+        <translation>The groups, names, limits and texts come from the metadata cache of this kind of drive; the values were read from the drive. Drive &gt; Read Metadata Again reads everything.</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::NoticeBar</name>
@@ -1759,6 +1802,84 @@ The DriveDesk parameter editor. Without --connect it opens the connection dialog
     <message>
         <source>this drive has no parameter %1</source>
         <translation>this drive has no parameter %1</translation>
+    </message>
+</context>
+<context>
+    <name>DriveIdentity</name>
+    <message>
+        <source>Identification</source>
+        <translation>Identification</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>not read: %1</source>
+        <translation>not read: %1</translation>
+    </message>
+    <message>
+        <source>no value</source>
+        <translation>no value</translation>
+    </message>
+    <message>
+        <source>Type %1</source>
+        <translation>Type %1</translation>
+    </message>
+    <message>
+        <source>Type %1, software %2</source>
+        <translation>Type %1, software %2</translation>
+    </message>
+    <message>
+        <source>Type %1, software %2, serial number %3</source>
+        <translation>Type %1, software %2, serial number %3</translation>
+    </message>
+</context>
+<context>
+    <name>MetadataCache</name>
+    <message>
+        <source>too large (%1 bytes)</source>
+        <translation>too large (%1 bytes)</translation>
+    </message>
+    <message>
+        <source>not JSON (%1 at byte %2)</source>
+        <translation>not JSON (%1 at byte %2)</translation>
+    </message>
+    <message>
+        <source>not a DriveDesk metadata cache file</source>
+        <translation>not a DriveDesk metadata cache file</translation>
+    </message>
+    <message>
+        <source>cache version %1, this DriveDesk reads version %2</source>
+        <translation>cache version %1, this DriveDesk reads version %2</translation>
+    </message>
+    <message>
+        <source>it holds another kind of drive</source>
+        <translation>it holds another kind of drive</translation>
+    </message>
+    <message>
+        <source>it has no languages</source>
+        <translation>it has no languages</translation>
+    </message>
+    <message>
+        <source>language %1 holds the texts of language %2</source>
+        <translation>language %1 holds the texts of language %2</translation>
+    </message>
+    <message>
+        <source>metadata cache file &apos;%1&apos; ignored and removed: %2</source>
+        <translation>metadata cache file &apos;%1&apos; ignored and removed: %2</translation>
+    </message>
+    <message>
+        <source>cannot create the metadata cache folder &apos;%1&apos;</source>
+        <translation>cannot create the metadata cache folder &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>cannot write the metadata cache file &apos;%1&apos;: %2</source>
+        <translation>cannot write the metadata cache file &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <source>cannot remove &apos;%1&apos;</source>
+        <translation>cannot remove &apos;%1&apos;</translation>
     </message>
 </context>
 <context>

@@ -42,6 +42,18 @@ private:
         QTest::mouseClick(tree->viewport(), Qt::LeftButton, {}, tree->visualRect(item).center());
     }
 
+    // The groups without their values: live values change from one read to the next.
+    static QList<GroupDescription> metadataOf(DriveDescription drive)
+    {
+        for (GroupDescription &group : drive.groups) {
+            for (ParameterDescription &parameter : group.parameters) {
+                parameter.values = {};
+                parameter.error.clear();
+            }
+        }
+        return drive.groups;
+    }
+
     QString rootText() const { return m_window->browser()->view()->rootIndex().data().toString(); }
 
 private slots:
@@ -248,6 +260,37 @@ private slots:
         QVERIFY(connectAndRead(second, simulated()));
         QVERIFY(second.model()->isFavourite(kFixedSpeed1));
         QCOMPARE(second.model()->favourites().size(), 1);
+    }
+
+    void theNextConnectionTakesTheMetadataFromTheCache()
+    {
+        QVERIFY(connectAndRead(*m_window, simulated()));
+        const auto *fromCache
+            = m_window->statusBar()->findChild<QLabel *>(QStringLiteral("metadataSource"));
+        QVERIFY(fromCache);
+        QVERIFY(!fromCache->isVisible());
+        const DriveDescription cold = m_window->model()->description();
+        QVERIFY(!cold.metadataFromCache);
+
+        MainWindow second;
+        second.show();
+        QVERIFY(connectAndRead(second, simulated()));
+        const DriveDescription warm = second.model()->description();
+        QVERIFY(warm.metadataFromCache);
+        QCOMPARE(metadataOf(warm), metadataOf(cold));
+        const auto *secondLabel
+            = second.statusBar()->findChild<QLabel *>(QStringLiteral("metadataSource"));
+        QVERIFY(secondLabel->isVisible());
+        QCOMPARE(secondLabel->text(), QStringLiteral("Metadata from cache"));
+
+        // Drive > Read Metadata Again: everything from the drive.
+        auto *again = second.findChild<QAction *>(QStringLiteral("readMetadataAction"));
+        QVERIFY(again && again->isEnabled());
+        again->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(!second.model()->description().metadataFromCache, kWaitMs);
+        QTRY_VERIFY_WITH_TIMEOUT(second.isReady(), kWaitMs);
+        QVERIFY(!secondLabel->isVisible());
+        QCOMPARE(metadataOf(second.model()->description()), metadataOf(cold));
     }
 
     void lostLinkKeepsWhatWasReadAndReconnects()

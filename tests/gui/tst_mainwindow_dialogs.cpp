@@ -9,6 +9,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QCheckBox>
 #include <QClipboard>
 #include <QComboBox>
 #include <QLabel>
@@ -124,6 +125,28 @@ private slots:
         list->setCurrentRow(1);
         QCOMPARE(dialog.settings().target(), serial.target());
         QCOMPARE(dialog.settings().driveAddress, 3);
+    }
+
+    void hsp5ExtensionsAreAnOptInRemembered()
+    {
+        ConnectionDialog dialog;
+        auto *extensions = child<QCheckBox>(dialog, "hsp5Extensions");
+        auto *protocol = child<QComboBox>(dialog, "protocol");
+        protocol->setCurrentIndex(protocol->findData(int(Protocol::Hsp5)));
+        QVERIFY(!extensions->isChecked()); // off unless asked for
+        QVERIFY(extensions->isEnabled());
+        QVERIFY(!dialog.settings().hsp5Extensions);
+        extensions->setChecked(true);
+        QVERIFY(dialog.settings().hsp5Extensions);
+        QVERIFY(dialog.settings().simulation.hsp5Extensions);
+        RecentConnections::remember(dialog.settings());
+        QVERIFY(RecentConnections::last().hsp5Extensions);
+        QVERIFY(ConnectionDialog().settings().hsp5Extensions);
+
+        // DIN66019II frames every request: the option is HSP5's alone.
+        protocol->setCurrentIndex(protocol->findData(int(Protocol::Din66019II)));
+        QVERIFY(!extensions->isEnabled());
+        QVERIFY(!dialog.settings().hsp5Extensions);
     }
 
     void commandLineNamesTheDrive_data()

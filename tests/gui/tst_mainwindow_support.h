@@ -8,6 +8,7 @@
 #include "model/ParameterModel.h"
 
 #include <QCoreApplication>
+#include <QDir>
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QTest>
@@ -38,8 +39,15 @@ public:
         QCoreApplication::setApplicationName(QStringLiteral("DriveDesk"));
         QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, m_dir.path());
         QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_dir.path());
+        // The metadata cache as well: each test starts with none.
+        qputenv("XDG_CACHE_HOME", cacheHome().toLocal8Bit());
     }
-    void clear() { QSettings().clear(); }
+    void clear()
+    {
+        QSettings().clear();
+        QDir(cacheHome()).removeRecursively();
+    }
+    QString cacheHome() const { return m_dir.filePath(QStringLiteral("cache")); }
 
 private:
     QTemporaryDir m_dir;

@@ -5,6 +5,7 @@
 
 #include "protocol/Codec.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFormLayout>
@@ -71,8 +72,15 @@ ConnectionDialog::ConnectionDialog(QWidget *parent)
     addressRow->addWidget(m_findDrives);
     auto *addressLabel = new QLabel(tr("Drive &address:"));
     addressLabel->setBuddy(m_address);
+    m_extensions = new QCheckBox(tr("The drive has DriveDesk's HSP5 e&xtensions"));
+    m_extensions->setObjectName(QStringLiteral("hsp5Extensions"));
+    m_extensions->setToolTip(
+        tr("Services 13, 14, 19-21 and 51-53, which the HSP5 specification does not define. "
+           "Only for a drive known to have them: a drive without them cannot tell where such a "
+           "request ends and loses the requests that follow it."));
     auto *common = new QFormLayout;
     common->addRow(tr("&Protocol:"), m_protocol);
+    common->addRow(QString(), m_extensions);
     common->addRow(addressLabel, addressRow);
 
     m_problem = new QLabel;
@@ -224,6 +232,7 @@ void ConnectionDialog::setSettings(const ConnectionSettings &settings)
     m_baudRate->setCurrentText(QString::number(settings.baudRate));
     m_protocol->setCurrentIndex(m_protocol->findData(int(settings.protocol)));
     m_address->setValue(settings.driveAddress);
+    m_extensions->setChecked(settings.hsp5Extensions);
     m_problem->hide();
     updateEnabled();
 }
@@ -256,6 +265,9 @@ ConnectionSettings ConnectionDialog::settings() const
         settings.baudRate = 38400;
     settings.simulation.driveAddresses = { settings.driveAddress };
     settings.simulation.baudRate = settings.baudRate;
+    // The simulated drive is told the same, so that it frames what the client sends.
+    settings.hsp5Extensions = settings.protocol == Protocol::Hsp5 && m_extensions->isChecked();
+    settings.simulation.hsp5Extensions = settings.hsp5Extensions;
     return settings;
 }
 
@@ -334,6 +346,7 @@ void ConnectionDialog::updateEnabled()
     const bool din = isDin(Protocol(m_protocol->currentData().toInt()));
     m_address->setEnabled(din);
     m_findDrives->setEnabled(din);
+    m_extensions->setEnabled(!din);
 }
 
 } // namespace DriveDesk

@@ -4,6 +4,7 @@
 
 #include <QDialog>
 
+class QCheckBox;
 class QComboBox;
 class QDialogButtonBox;
 class QLabel;
@@ -51,6 +52,7 @@ private:
     QLineEdit *m_host = nullptr;
     QSpinBox *m_tcpPort = nullptr;
     QComboBox *m_protocol = nullptr;
+    QCheckBox *m_extensions = nullptr;
     QSpinBox *m_address = nullptr;
     QPushButton *m_findDrives = nullptr;
     QListWidget *m_recent = nullptr;

@@ -26,6 +26,9 @@ QList<DriveInfoDialog::Line> DriveInfoDialog::lines(const DriveDescription &driv
         lines.append({ tr("Drive address"), QString::number(settings.driveAddress) });
     lines.append({ tr("Parameter groups"), QString::number(drive.groups.size()) });
     lines.append({ tr("Parameters"), QString::number(drive.parameterCount()) });
+    lines.append({ tr("Metadata"),
+                   drive.metadataFromCache ? tr("from the metadata cache of this kind of drive")
+                                           : tr("read from the drive") });
     if (!drive.incompleteReason.isEmpty())
         lines.append({ tr("Scan incomplete"), drive.incompleteReason });
     return lines;

@@ -241,6 +241,9 @@ void MainWindow::onScanProgress(int value, int maximum, const QString &text)
 
 void MainWindow::onDescribed(const DriveDescription &drive)
 {
+    m_metadataLabel->setVisible(drive.metadataFromCache);
+    if (!drive.warnings.isEmpty())
+        m_notice->showInformation(drive.warnings.join(QLatin1Char('\n')));
     m_favouritesKey = favouritesKey(drive, m_session->settings());
     QSettings settings;
     const QStringList stored

@@ -100,6 +100,7 @@ private:
     QLabel *m_stateLabel = nullptr;
     QLabel *m_levelLabel = nullptr;
     QLabel *m_setsLabel = nullptr;
+    QLabel *m_metadataLabel = nullptr;
     QProgressBar *m_busy = nullptr;
     QComboBox *m_intervalBox = nullptr;
     int m_pollingIntervalMs = 500;
@@ -108,6 +109,7 @@ private:
     QAction *m_disconnectAction = nullptr;
     QAction *m_findDrivesAction = nullptr;
     QAction *m_refreshAction = nullptr;
+    QAction *m_readMetadataAction = nullptr;
     QAction *m_pollingAction = nullptr;
     QActionGroup *m_intervalGroup = nullptr;
     QAction *m_undoAction = nullptr;

@@ -62,6 +62,16 @@ void MainWindow::createActions()
     m_refreshAction->setToolTip(tr("Read every value from the drive again"));
     connect(m_refreshAction, &QAction::triggered, this, &MainWindow::refresh);
 
+    m_readMetadataAction = new QAction(tr("Read &Metadata Again"), this);
+    m_readMetadataAction->setObjectName(QStringLiteral("readMetadataAction"));
+    m_readMetadataAction->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F5));
+    m_readMetadataAction->setToolTip(tr("Read the groups, names, limits and texts from the "
+                                        "drive instead of the metadata cache"));
+    connect(m_readMetadataAction, &QAction::triggered, this, [this] {
+        if (m_session)
+            m_session->rescan(MetadataSource::RefreshCache);
+    });
+
     m_pollingAction = new QAction(icon("media-playback-start", QStyle::SP_MediaPlay),
                                   tr("&Poll Live Values"), this);
     m_pollingAction->setObjectName(QStringLiteral("pollingAction"));
@@ -169,6 +179,7 @@ void MainWindow::createMenus()
     drive->addAction(m_findDrivesAction);
     drive->addSeparator();
     drive->addAction(m_refreshAction);
+    drive->addAction(m_readMetadataAction);
     drive->addAction(m_pollingAction);
     QMenu *interval = drive->addMenu(tr("Polling &Interval"));
     interval->addActions(m_intervalGroup->actions());
@@ -245,11 +256,18 @@ void MainWindow::createStatusBar()
     m_setsLabel->setToolTip(tr("Fr.02: the set the drive works with. Fr.09: the set that "
                                "indirect addressing reaches."));
     m_setsLabel->hide();
+    m_metadataLabel = new QLabel(tr("Metadata from cache"));
+    m_metadataLabel->setObjectName(QStringLiteral("metadataSource"));
+    m_metadataLabel->setToolTip(tr("The groups, names, limits and texts come from the metadata "
+                                   "cache of this kind of drive; the values were read from the "
+                                   "drive. Drive > Read Metadata Again reads everything."));
+    m_metadataLabel->hide();
     m_busy = new QProgressBar;
     m_busy->setObjectName(QStringLiteral("refreshProgress"));
     m_busy->setMaximumWidth(160);
     m_busy->hide();
     statusBar()->addPermanentWidget(m_busy);
+    statusBar()->addPermanentWidget(m_metadataLabel);
     statusBar()->addPermanentWidget(m_setsLabel);
     statusBar()->addPermanentWidget(m_levelLabel);
     statusBar()->addPermanentWidget(m_stateLabel);
@@ -264,6 +282,7 @@ void MainWindow::updateActions()
     const bool selected = m_browser->hasSelectedParameter();
     m_disconnectAction->setEnabled(connected || connecting);
     m_refreshAction->setEnabled(connected && !m_session->isScanning());
+    m_readMetadataAction->setEnabled(connected && !m_session->isScanning());
     m_resetAction->setEnabled(ready && selected);
     m_writeSetsAction->setEnabled(ready && selected);
     m_copySetAction->setEnabled(ready);

@@ -18,6 +18,7 @@ void write(QSettings &store, const ConnectionSettings &settings)
     store.setValue(QStringLiteral("protocol"), protocolName(settings.protocol));
     store.setValue(QStringLiteral("address"), settings.driveAddress);
     store.setValue(QStringLiteral("baud"), settings.baudRate);
+    store.setValue(QStringLiteral("hsp5Extensions"), settings.hsp5Extensions);
 }
 
 std::optional<ConnectionSettings> read(const QSettings &store)
@@ -39,6 +40,9 @@ std::optional<ConnectionSettings> read(const QSettings &store)
         settings.baudRate = baud;
     settings.simulation.driveAddresses = { settings.driveAddress };
     settings.simulation.baudRate = settings.baudRate;
+    settings.hsp5Extensions = settings.protocol == Protocol::Hsp5
+                              && store.value(QStringLiteral("hsp5Extensions")).toBool();
+    settings.simulation.hsp5Extensions = settings.hsp5Extensions;
     return settings;
 }
 
