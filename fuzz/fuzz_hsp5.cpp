@@ -39,19 +39,15 @@ Run decode(const Hsp5Codec &codec, Role role, const std::vector<QByteArrayView> 
     std::abort();
 }
 
-} // namespace
-
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+// Decoding in one piece, in two and byte by byte gives the same items, each of which encodes
+// back to its bytes, and together they account for every byte.
+void check(const Hsp5Codec &codec, QByteArrayView input, qsizetype cut)
 {
-    static const Hsp5Codec codec;
-    const QByteArrayView input(data, qsizetype(size));
-    const qsizetype cut = size == 0 ? 0 : qsizetype(data[size - 1] % (size + 1));
-
     for (Role role : {Role::Operator, Role::Drive}) {
         const Run whole = decode(codec, role, {input});
         if (decode(codec, role, {input.first(cut), input.sliced(cut)}).items != whole.items)
             fail("a split changed the items");
-        if (size <= 512) {
+        if (input.size() <= 512) {
             std::vector<QByteArrayView> bytes;
             for (qsizetype i = 0; i < input.size(); ++i)
                 bytes.push_back(input.sliced(i, 1));
@@ -80,5 +76,18 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (consumed != input.first(input.size() - whole.left))
             fail("the items do not add up to the input");
     }
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    // The seed's services alone, and with DriveDesk's extensions (a connection option).
+    static const Hsp5Codec seed(Hsp5Services::Seed);
+    static const Hsp5Codec extended(Hsp5Services::WithExtensions);
+    const QByteArrayView input(data, qsizetype(size));
+    const qsizetype cut = size == 0 ? 0 : qsizetype(data[size - 1] % (size + 1));
+    check(seed, input, cut);
+    check(extended, input, cut);
     return 0;
 }
