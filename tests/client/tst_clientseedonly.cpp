@@ -147,7 +147,8 @@ private slots:
         QVERIFY2(drive.incompleteReason.isEmpty(), qPrintable(drive.incompleteReason));
         QCOMPARE(drive.identification, QString());
         QCOMPARE(drive.groups, expected.groups);
-        QVERIFY(std::any_of(errors(s).cbegin(), errors(s).cend(), [](const QString &error) {
+        const QStringList reported = errors(s);
+        QVERIFY(std::any_of(reported.cbegin(), reported.cend(), [](const QString &error) {
             return error.contains(QStringLiteral("quiet line"));
         }));
         // Service 13's attempts and the requests lost with them: a handful of telegrams more.

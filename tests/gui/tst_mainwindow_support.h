@@ -136,7 +136,8 @@ inline std::optional<qint32> driveValue(DriveClient *client, quint16 address, in
     const QFuture<Reply> future = client->readValue(address, quint8(1u << set));
     if (!waitFinished(future) || future.resultCount() == 0)
         return std::nullopt;
-    if (const auto *value = future.result().data<ParameterValue>())
+    const Reply reply = future.result(); // kept: data() points into it
+    if (const auto *value = reply.data<ParameterValue>())
         return value->value;
     return std::nullopt;
 }
