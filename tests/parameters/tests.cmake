@@ -13,3 +13,5 @@ drivedesk_add_test(NAME tst_parameterdocument LABEL unit
     SOURCES parameters/tst_parameterdocument.cpp LIBS drivedesk_parameters)
 drivedesk_add_test(NAME tst_parameterfile LABEL unit
     SOURCES parameters/tst_parameterfile.cpp LIBS drivedesk_parameters)
+drivedesk_add_test(NAME tst_metadatacache LABEL unit
+    SOURCES parameters/tst_metadatacache.cpp LIBS drivedesk_parameters)
