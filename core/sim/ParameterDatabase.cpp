@@ -26,7 +26,9 @@ bool ParameterDatabase::setDefaultValue(quint16 address, qint32 value)
     const int index = indexOf(address);
     if (index < 0)
         return false;
-    m_parameters[std::size_t(index)].defaultValue = value;
+    SimParameter &parameter = m_parameters[std::size_t(index)];
+    parameter.defaultValue = value;
+    parameter.initial.fill(value);
     return true;
 }
 

@@ -94,7 +94,8 @@ public:
     // Building. Problems name what was wrong; nothing is dropped without one.
     void addGroup(const SimGroup &group);
     void addParameter(const SimParameter &parameter);
-    // Changes the value a parameter starts with; false when there is no such parameter.
+    // Changes a parameter's default and the value it starts with in every set; false when
+    // there is no such parameter.
     bool setDefaultValue(quint16 address, qint32 value);
     // Returns the index of an identical enumeration if there is one; `key` names it for
     // enumerationIndex().

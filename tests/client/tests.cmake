@@ -10,7 +10,7 @@ drivedesk_add_test(NAME tst_replycheck LABEL unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_replycheck.cpp LIBS drivedesk_client)
 
 foreach(name clientservices clientdin clientpipeline clientfaults clienttransports clientscan clientunplug
-        clientseedonly)
+        clientseedonly clientcache)
     drivedesk_add_test(NAME tst_${name} LABEL integration TIMEOUT 300
         SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_${name}.cpp ${CMAKE_CURRENT_LIST_DIR}/ClientTestSupport.h
         LIBS drivedesk_client)

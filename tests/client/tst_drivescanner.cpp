@@ -1,5 +1,7 @@
 #include "client/DriveScanner.h"
 
+#include <QDir>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 
@@ -380,6 +382,10 @@ private slots:
     void worksWithASinkThatAnswersAtOnce();
     void cancelKeepsWhatWasRead();
     void linkLostEndsTheScan();
+    void readsSetsTogetherWhereTheyAgree_data();
+    void readsSetsTogetherWhereTheyAgree();
+    void asksService13OnlyWhereTheLinkFramesIt();
+    void aDriveWithoutIdentityIsNeverCached();
 };
 
 void TestDriveScanner::readsEveryGroupAndParameter()
@@ -692,6 +698,88 @@ void TestDriveScanner::linkLostEndsTheScan()
     QTRY_COMPARE(drive.held(), 0);
     QCOMPARE(int(drive.received.size()), receivedAtEnd);
     QCOMPARE(result.finishedCount, 1);
+}
+
+
+void TestDriveScanner::readsSetsTogetherWhereTheyAgree_data()
+{
+    QTest::addColumn<QList<qint32>>("values");
+    QTest::addColumn<int>("refusedSet"); // -1: none
+    QTest::addColumn<int>("reads");      // service 0 requests for the parameter
+    QTest::newRow("all equal") << QList<qint32>{7, 7, 7, 7, 7, 7, 7, 7} << -1 << 1;
+    // FFh, 0Fh, F0h, then 4 pairs, then 8 single sets.
+    QTest::newRow("all different") << QList<qint32>{0, 1, 2, 3, 4, 5, 6, 7} << -1 << 15;
+    // FFh; 0Fh answers; F0h, 30h answers, C0h, 40h, 80h.
+    QTest::newRow("set 7 differs") << QList<qint32>{5, 5, 5, 5, 5, 5, 5, 9} << -1 << 7;
+    QTest::newRow("set 5 refused") << QList<qint32>{5, 5, 5, 5, 5, 5, 5, 5} << 5 << 7;
+}
+
+void TestDriveScanner::readsSetsTogetherWhereTheyAgree()
+{
+    QFETCH(QList<qint32>, values);
+    QFETCH(int, refusedSet);
+    QFETCH(int, reads);
+    FakeDrive drive;
+    makeDrive(drive);
+    FakeParameter &display = drive.groups[0x05].parameters[1]; // ud.01, set-programmable
+    std::copy(values.cbegin(), values.cend(), display.values.begin());
+    display.refusedSet = refusedSet;
+
+    ScanOptions options;
+    options.onlyParameters = {0x0501};
+    const ScanResult result = scan(drive, options);
+    QCOMPARE(result.finishedCount, 1);
+    const ParameterDescription *read = result.description->find(0x0501);
+    QVERIFY(read);
+    for (int set = 0; set < kParameterSets; ++set) {
+        // What a read set by set gives: the drive's value, or nothing where it refused.
+        const std::optional<qint32> expected
+            = set == refusedSet ? std::nullopt : std::optional<qint32>(values.at(set));
+        QCOMPARE(read->values[set], expected);
+    }
+    QCOMPARE(read->error.isEmpty(), refusedSet < 0);
+    if (refusedSet >= 0)
+        QVERIFY2(read->error.contains(QStringLiteral("set %1").arg(refusedSet)),
+                 qPrintable(read->error));
+    const auto valueReads = std::count_if(drive.received.cbegin(), drive.received.cend(),
+                                          [](const Telegram &t) {
+                                              const auto *v = t.as<ParameterValue>();
+                                              return t.service == Service::ParameterValue && v
+                                                     && v->address == 0x0501;
+                                          });
+    QCOMPARE(int(valueReads), reads);
+}
+
+void TestDriveScanner::asksService13OnlyWhereTheLinkFramesIt()
+{
+    FakeDrive drive;
+    makeDrive(drive);
+    drive.framesService13 = false; // HSP5 as seed 000 defines it
+    const ScanResult result = scan(drive);
+    QCOMPARE(result.finishedCount, 1);
+    QVERIFY(result.description->incompleteReason.isEmpty());
+    QCOMPARE(result.description->identification, QString());
+    QVERIFY(std::none_of(drive.received.cbegin(), drive.received.cend(),
+                         [](const Telegram &t) { return t.service == Service::Fieldbus; }));
+    QCOMPARE(result.description->parameterCount(), 7);
+}
+
+void TestDriveScanner::aDriveWithoutIdentityIsNeverCached()
+{
+    // The hand-made drive has no In group: nothing tells it from another kind.
+    QTemporaryDir cache;
+    ScanOptions options;
+    options.metadata = MetadataSource::Cache;
+    options.cacheDirectory = cache.path();
+    for (int connection = 0; connection < 2; ++connection) {
+        FakeDrive drive;
+        makeDrive(drive);
+        const ScanResult result = scan(drive, options);
+        QCOMPARE(result.finishedCount, 1);
+        QVERIFY(!result.description->metadataFromCache);
+        QVERIFY(drive.count(Service::GroupProperties, 0x02) == 1); // read cold, every time
+        QVERIFY(QDir(cache.path()).entryList(QDir::Files).isEmpty());
+    }
 }
 
 QTEST_GUILESS_MAIN(TestDriveScanner)
