@@ -159,6 +159,8 @@ void DriveScanner::finish(const QString &reason)
 {
     m_finished = true;
     m_queue.clear();
+    // A scan that stops keeps the texts read so far.
+    deliverUnfinishedPlaintexts();
     // Stored with every value read: the identity is in the values of its parameters.
     if (reason.isEmpty() && mayStore())
         store(m_state.describe(m_language, {}));
@@ -281,7 +283,7 @@ void DriveScanner::onParameterName(quint8 page, quint8 number, const Reply &repl
     askNames(page);
 }
 
-void DriveScanner::readMetadata(quint8 page, quint8 number)
+void DriveScanner::readLimits(quint8 page, quint8 number)
 {
     const quint16 address = m_state.parameter(page, number).description.address;
     readParameter<ParameterLimits>(page, number, Service::Limits, ParameterLimits{address},
@@ -289,10 +291,33 @@ void DriveScanner::readMetadata(quint8 page, quint8 number)
                                        p.description.minimum = d.lower;
                                        p.description.maximum = d.upper;
                                    });
+}
+
+void DriveScanner::readDefault(quint8 page, quint8 number)
+{
+    const quint16 address = m_state.parameter(page, number).description.address;
     readParameter<DefaultValue>(page, number, Service::DefaultValue, DefaultValue{address},
                                 tr("default value"), [](ScanParameter &p, const DefaultValue &d) {
                                     p.description.defaultValue = d.value;
                                 });
+}
+
+void DriveScanner::readScaling(quint8 page, quint8 number)
+{
+    const quint16 address = m_state.parameter(page, number).description.address;
+    readParameter<DisplayScalingData>(page, number, Service::DisplayScaling,
+                                      DisplayScalingData{address}, tr("display scaling"),
+                                      [address](ScanParameter &p, const DisplayScalingData &d) {
+                                          p.description.scaling = d;
+                                          p.description.scaling.address = address;
+                                      });
+}
+
+void DriveScanner::readMetadata(quint8 page, quint8 number)
+{
+    const quint16 address = m_state.parameter(page, number).description.address;
+    readLimits(page, number);
+    readDefault(page, number);
     enqueue(Service::Properties, PropertiesData{address},
             parameterWhat(page, number, tr("properties")),
             [this, page, number](const Reply &reply) {
@@ -311,12 +336,7 @@ void DriveScanner::readMetadata(quint8 page, quint8 number)
                 if (wantsValue(page, number))
                     readValues(page, number, p.description.isSetProgrammable());
             });
-    readParameter<DisplayScalingData>(page, number, Service::DisplayScaling,
-                                      DisplayScalingData{address}, tr("display scaling"),
-                                      [address](ScanParameter &p, const DisplayScalingData &d) {
-                                          p.description.scaling = d;
-                                          p.description.scaling.address = address;
-                                      });
+    readScaling(page, number);
     if (!m_options.plaintexts)
         return;
     readParameter<PlaintextIndicesData>(
@@ -327,53 +347,6 @@ void DriveScanner::readMetadata(quint8 page, quint8 number)
             p.description.plaintextIndices.address = address;
             readPlaintexts(page, number, d);
         });
-}
-
-void DriveScanner::readPlaintexts(quint8 page, quint8 number,
-                                  const PlaintextIndicesData &indices)
-{
-    ScanParameter &parameter = m_state.parameter(page, number);
-    // Definition indices travel in one byte.
-    const int count = std::min<int>(indices.combivisCount, 0x100);
-    if (count < indices.combivisCount)
-        ++parameter.metadataErrors;
-    if (count < indices.combivisCount)
-        parameter.errors.append(
-            tr("plaintexts: the drive names %1 definitions, only %2 can be read")
-                .arg(indices.combivisCount)
-                .arg(count));
-    parameter.definitions.resize(count);
-    for (int definition = 0; definition < count; ++definition) {
-        const auto index = quint8(definition);
-        const quint16 ptIndex = indices.combivisIndex;
-        readParameter<PlaintextDefinitionData>(
-            page, number, Service::PlaintextDefinition,
-            PlaintextDefinitionData{ptIndex, index, quint8(m_language), 0, 0, {}},
-            tr("plaintext definition %1").arg(definition),
-            [this, page, number, ptIndex, index](ScanParameter &p,
-                                                 const PlaintextDefinitionData &d) {
-                ScanDefinition &scanned = p.definitions.at(index);
-                scanned.definition = PlaintextDefinition{d.mask, driveText(d.text), {}};
-                scanned.entries.resize(d.count);
-                readPlaintextEntries(page, number, ptIndex, index, d.count);
-            });
-    }
-}
-
-void DriveScanner::readPlaintextEntries(quint8 page, quint8 number, quint16 index,
-                                        quint8 definition, int count)
-{
-    for (int subindex = 0; subindex < count; ++subindex) {
-        const auto sub = quint8(subindex);
-        readParameter<CombivisPlaintextData>(
-            page, number, Service::CombivisPlaintext,
-            CombivisPlaintextData{index, definition, sub, quint8(m_language), 0, 0, {}},
-            tr("plaintext %1.%2").arg(definition).arg(subindex),
-            [definition, sub](ScanParameter &p, const CombivisPlaintextData &d) {
-                p.definitions.at(definition).entries.at(sub)
-                    = PlaintextEntry{d.value, d.type, driveText(d.text)};
-            });
-    }
 }
 
 QString DriveScanner::parameterWhat(quint8 page, quint8 number, const QString &detail) const

@@ -76,9 +76,19 @@ private:
     void askName(quint8 page, quint8 number);
     void onParameterName(quint8 page, quint8 number, const Reply &reply);
     void readMetadata(quint8 page, quint8 number);
+    void readLimits(quint8 page, quint8 number);
+    void readDefault(quint8 page, quint8 number);
+    void readScaling(quint8 page, quint8 number);
+    // Plaintexts (ScanPlaintexts.cpp): each index's texts once, handed to every parameter that
+    // names it when the last of them has arrived.
+    using PlaintextKey = std::pair<quint16, int>;
     void readPlaintexts(quint8 page, quint8 number, const PlaintextIndicesData &indices);
-    void readPlaintextEntries(quint8 page, quint8 number, quint16 index, quint8 definition,
-                              int count);
+    void readPlaintextTable(const PlaintextKey &key, const QString &what);
+    void onPlaintextDefinition(const PlaintextKey &key, quint8 definition, const Reply &reply,
+                               const QString &what);
+    void plaintextAnswered(const PlaintextKey &key);
+    void deliverPlaintexts(const ScanPlaintextTable &table, quint8 page, quint8 number);
+    void deliverUnfinishedPlaintexts();
     // Values (ScanValues.cpp): one read for a value that is not set-programmable; for one
     // that is, all sets in one read, split in halves where the drive says they differ.
     void readValues(quint8 page, quint8 number, bool setProgrammable);
@@ -91,6 +101,7 @@ private:
     bool probeCache();
     void onProbed();
     void adoptCached(const DriveDescription &cached);
+    void readVariableMetadata(quint8 page, const ParameterDescription &parameter);
     bool mayStore() const;
     void store(const DriveDescription &drive);
 

@@ -87,6 +87,7 @@ void DriveScanner::adoptCached(const DriveDescription &cached)
             entry.description = parameter;
             if (!m_options.plaintexts)
                 entry.description.plaintexts.clear();
+            readVariableMetadata(page, parameter);
             const std::optional<qint32> known = probed(parameter.address);
             if (known && !parameter.isSetProgrammable())
                 entry.description.values[0] = known;
@@ -94,6 +95,20 @@ void DriveScanner::adoptCached(const DriveDescription &cached)
                 readValues(page, parameter.number(), parameter.isSetProgrammable());
         }
     }
+}
+
+// What the drive's properties say may change after power-on or at any time (seed 002, 2.6.1):
+// limits that are not constant (bits 12-15), a variable default (bit 18) and a variable display
+// scaling (bit 31) are read from the drive, not taken from another connection's.
+void DriveScanner::readVariableMetadata(quint8 page, const ParameterDescription &parameter)
+{
+    const quint32 properties = parameter.properties1;
+    if (properties & 0x0000F000u)
+        readLimits(page, parameter.number());
+    if (properties & (1u << 18))
+        readDefault(page, parameter.number());
+    if (properties & (1u << 31))
+        readScaling(page, parameter.number());
 }
 
 // Only a complete picture of a whole drive is stored: a scan of some groups or parameters, or

@@ -17,6 +17,16 @@ struct ScanDefinition {
     std::vector<std::optional<PlaintextEntry>> entries; // by subindex, as service 9 answers
 };
 
+// The texts of one COMBIVIS plaintext index with its number of definitions. Services 12 and 9
+// address them by index, not by parameter: they are read once, however many parameters share
+// them (every on/off parameter of a drive, say).
+struct ScanPlaintextTable {
+    std::vector<ScanDefinition> definitions;         // by definition index
+    QStringList errors;                              // one line per failed read
+    int pending = 0;                                 // requests not yet answered
+    std::vector<std::pair<quint8, quint8>> users;    // (page, number) of the parameters
+};
+
 // A parameter while its metadata and values are still arriving.
 struct ScanParameter {
     ParameterDescription description;
@@ -40,6 +50,8 @@ struct ScanGroup {
 // Everything a scan has read so far; describe() turns it into what the scan hands out.
 struct ScanState {
     std::map<quint8, ScanGroup> groups; // by group page
+    // By COMBIVIS plaintext index and definition count.
+    std::map<std::pair<quint16, int>, ScanPlaintextTable> plaintextTables;
     QString identification;
     QStringList problems; // reads whose failure leaves it unknown whether something exists
 

@@ -321,6 +321,22 @@ void makeDrive(FakeDrive &drive)
     };
 }
 
+// The identification parameters of an F5 (Sy.02, Sy.03, In.00, In.06, In.07 name its kind):
+// with them the drive's metadata can be cached.
+void addIdentification(FakeDrive &drive)
+{
+    FakeGroup sy{10, "Sy", 's', 0x18, 3, 2, "System", {}};
+    sy.parameters[2] = {"Inverter identifier", 0, 0xFFFF, 0, 0, 0, {}, {0x0F51}};
+    sy.parameters[3] = {"Power unit", -255, 255, 0, 0, 0, {}, {7}};
+    drive.groups[0x00] = sy;
+    FakeGroup in{11, "In", 'i', 0x18, 10, 4, "Information", {}};
+    in.parameters[0] = {"Inverter type", 0, 0xFFFF, 0, 0, 0, {}, {0x0F50}};
+    in.parameters[6] = {"Software version", 0, 9999, 0, 0, 0, {}, {180}};
+    in.parameters[7] = {"Software date", 0, 31129, 0, 0, 0, {}, {22114}};
+    in.parameters[10] = {"Serial number", 0, 99999999, 0, 0, 0, {}, {1234}};
+    drive.groups[0x0E] = in;
+}
+
 // One scan's outcome as a user of the scanner sees it.
 struct ScanResult {
     std::optional<DriveDescription> description;
@@ -386,6 +402,7 @@ private slots:
     void readsSetsTogetherWhereTheyAgree();
     void asksService13OnlyWhereTheLinkFramesIt();
     void aDriveWithoutIdentityIsNeverCached();
+    void variableMetadataIsReadAgainOnACachedKind();
 };
 
 void TestDriveScanner::readsEveryGroupAndParameter()
@@ -780,6 +797,47 @@ void TestDriveScanner::aDriveWithoutIdentityIsNeverCached()
         QVERIFY(drive.count(Service::GroupProperties, 0x02) == 1); // read cold, every time
         QVERIFY(QDir(cache.path()).entryList(QDir::Files).isEmpty());
     }
+}
+
+void TestDriveScanner::variableMetadataIsReadAgainOnACachedKind()
+{
+    QTemporaryDir cache;
+    ScanOptions options;
+    options.metadata = MetadataSource::Cache;
+    options.cacheDirectory = cache.path();
+    constexpr quint32 kUpperLimitAlwaysVariable = 2u << 14;
+    const auto makeIdentified = [](FakeDrive &drive) {
+        makeDrive(drive);
+        addIdentification(drive);
+        // Only a scan without a failed metadata read is kept: this drive answers everything.
+        drive.groups[0x02].name = "Run";
+        drive.groups[0x02].parameters[1].propertiesRefused = false;
+        drive.groups[0x03].parameters[1].limitsRefused = false;
+        drive.groups[0x05].parameters[1].refusedSet = -1;
+        drive.groups[0x05].parameters[0].properties1 |= kUpperLimitAlwaysVariable; // ud.00
+    };
+
+    FakeDrive first;
+    makeIdentified(first);
+    const ScanResult cold = scan(first, options);
+    QVERIFY(cold.description && !cold.description->metadataFromCache);
+    QCOMPARE(QDir(cache.path()).entryList(QDir::Files).size(), 1);
+
+    // The same kind of drive, where ud.00's upper limit has moved since.
+    FakeDrive second;
+    makeIdentified(second);
+    second.groups[0x05].parameters[0].upper = 5000;
+    second.groups[0x05].parameters[1].upper = 999; // constant limits: the cache's stand
+    const ScanResult warm = scan(second, options);
+    QVERIFY(warm.description && warm.description->metadataFromCache);
+    QCOMPARE(warm.description->find(0x0500)->maximum, 5000);
+    QCOMPARE(warm.description->find(0x0501)->maximum, 100);
+    const auto limitReads = std::count_if(second.received.cbegin(), second.received.cend(),
+                                          [](const Telegram &t) {
+                                              return t.service == Service::Limits;
+                                          });
+    QCOMPARE(int(limitReads), 1);
+    QCOMPARE(second.count(Service::GroupProperties, 0x05), 0);
 }
 
 QTEST_GUILESS_MAIN(TestDriveScanner)
