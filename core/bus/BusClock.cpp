@@ -12,7 +12,7 @@ BusClock::BusClock(SimulatedBus *bus, QObject *parent)
 {
     m_clock.start();
     m_timer.setSingleShot(true);
-    m_timer.setTimerType(Qt::CoarseTimer);
+    m_timer.setTimerType(Qt::PreciseTimer);
     connect(&m_timer, &QTimer::timeout, this, &BusClock::deliver);
 }
 
@@ -36,8 +36,10 @@ void BusClock::arm()
         return;
     }
     const qint64 waitNs = *due - nowNs();
-    // Rounded up: a transmission is never handed out before its last byte is in.
-    const qint64 waitMs = waitNs <= 0 ? 0 : (waitNs + 999'999) / 1'000'000;
+    // QTimer counts whole milliseconds. Rounding up would hand every reply out up to a
+    // millisecond late, a turnaround no drive has; so the whole milliseconds are waited and the
+    // rest in zero-time steps. A transmission is still never handed out before its last byte.
+    const qint64 waitMs = waitNs <= 0 ? 0 : waitNs / 1'000'000;
     m_timer.start(int(std::min<qint64>(waitMs, std::numeric_limits<int>::max())));
 }
 
