@@ -1,7 +1,10 @@
 #include "tst_mainwindow_support.h"
 
+#include "main/DriveSession.h"
 #include "main/NoticeBar.h"
 #include "main/RecentConnections.h"
+#include "protocol/hsp5/Hsp5Codec.h"
+#include "protocol/hsp5/Hsp5Layout.h"
 
 #include <QAbstractItemModelTester>
 #include <QAction>
@@ -260,6 +263,43 @@ private slots:
         QVERIFY(connectAndRead(second, simulated()));
         QVERIFY(second.model()->isFavourite(kFixedSpeed1));
         QCOMPARE(second.model()->favourites().size(), 1);
+    }
+
+    void theWindowSendsOnlyWhatTheDriveCanFrame()
+    {
+        // The simulated drive knows exactly seed 000's services over HSP5, as a real one does.
+        m_window->connectTo(simulated());
+        QVERIFY(m_window->session());
+        QSignalSpy traffic(m_window->session()->client(), &DriveClient::traffic);
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->isReady(), kWaitMs);
+        auto *polling = m_window->findChild<QAction *>(QStringLiteral("pollingAction"));
+        QVERIFY(polling);
+        if (!polling->isChecked())
+            polling->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(traffic.size() > 1000, kWaitMs);
+        QTest::qWait(300); // a few polling rounds
+
+        const auto decoder
+            = Hsp5Codec(Hsp5Services::WithExtensions).makeDecoder(Role::Drive);
+        int requests = 0;
+        for (const QList<QVariant> &arguments : std::as_const(traffic)) {
+            const auto record = arguments.at(0).value<TrafficRecord>();
+            QVERIFY2(record.kind != TrafficRecord::Kind::Error, qPrintable(record.meaning));
+            if (record.kind != TrafficRecord::Kind::Sent)
+                continue;
+            decoder->feed(record.bytes);
+            while (const std::optional<Decoded> item = decoder->next()) {
+                const auto *telegram = std::get_if<Telegram>(&*item);
+                QVERIFY(telegram);
+                ++requests;
+                const Access access = telegram->access;
+                QVERIFY2(hsp5Layout(telegram->service, access, Direction::Request),
+                         qPrintable(describe(*telegram)));
+            }
+        }
+        QVERIFY(requests > 1000);
+        QVERIFY(!m_window->noticeBar()->isVisible()
+                || m_window->noticeBar()->kind() != NoticeBar::Kind::Problem);
     }
 
     void theNextConnectionTakesTheMetadataFromTheCache()
