@@ -130,12 +130,14 @@ void CliRunner::scan(ScanOptions options, std::function<void(const DriveDescript
                 watcher->deleteLater();
                 for (const QString &warning : description.warnings)
                     m_err << warning << '\n';
-                if (description.metadataFromCache && !m_request.quiet)
+                if (description.metadataFromCache && !m_request.quiet && !m_cacheNoted) {
+                    m_cacheNoted = true; // once, however many scans a command makes
                     m_err << QStringLiteral("metadata from the cache of this kind of drive (%1); "
                                             "--no-cache reads it from the drive\n")
                                  .arg(options.cacheDirectory.isEmpty()
                                           ? MetadataCache::defaultDirectory()
                                           : options.cacheDirectory);
+                }
                 next(description);
             });
     watcher->setFuture(m_client->scan(options));

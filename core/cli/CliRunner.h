@@ -50,6 +50,7 @@ private:
     QTextStream m_out;
     QTextStream m_err;
     bool m_finished = false;
+    bool m_cacheNoted = false;
 };
 
 } // namespace DriveDesk
