@@ -83,7 +83,6 @@ void DriveSession::rescan(MetadataSource metadata)
     m_polling->setEnabled(false);
     ScanOptions options;
     options.metadata = metadata;
-    options.cacheDirectory = m_cacheDirectory;
     m_scan.setFuture(m_client->scan(options));
     emit scanStarted();
 }

@@ -42,8 +42,6 @@ public:
     // Reads the drive into the model: metadata from the cache where the drive is of a cached
     // kind, or from the drive (RefreshCache: "Read metadata again").
     void rescan(MetadataSource metadata = MetadataSource::Cache);
-    // Where the metadata cache lives; empty for the user's cache location (tests use their own).
-    void setCacheDirectory(const QString &directory) { m_cacheDirectory = directory; }
     bool isScanning() const { return m_scan.isRunning(); }
     // A scan filled the model: there is something to edit and to refresh.
     bool hasDescription() const { return m_described; }
@@ -84,7 +82,6 @@ private:
     QFutureWatcher<DriveDescription> m_scan;
     std::optional<quint16> m_activeSet;
     std::optional<quint16> m_setPointer;
-    QString m_cacheDirectory;
     bool m_described = false;
     bool m_pollingWanted = false;
 };
