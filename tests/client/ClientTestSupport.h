@@ -2,6 +2,7 @@
 
 #include "client/DriveClient.h"
 
+#include <QCoreApplication>
 #include <QFuture>
 #include <QSignalSpy>
 #include <QTest>
@@ -88,6 +89,9 @@ struct Session {
 
     QList<TrafficRecord> records() const
     {
+        // The records come from the worker thread as queued signals: take in those on the way,
+        // or a reply that finished a moment ago may be missing the record of its request.
+        QCoreApplication::processEvents();
         QList<TrafficRecord> list;
         for (const QList<QVariant> &arguments : *traffic)
             list.append(arguments.at(0).value<TrafficRecord>());
