@@ -2,13 +2,12 @@
 
 
 #include "cli/ParameterTable.h"
-#include "parameters/DisplayScaling.h"
 #include "parameters/DriveIdentity.h"
 #include "parameters/MetadataCache.h"
 #include "parameters/ParameterDocument.h"
+#include "parameters/ParameterFormat.h"
 #include "parameters/ParameterId.h"
 #include "parameters/ParameterProperties.h"
-#include "parameters/Plaintexts.h"
 
 #include <QFutureWatcher>
 
@@ -246,35 +245,14 @@ void CliRunner::runWrite()
 {
     lookUpParameter([this](const GroupDescription &group, const ParameterDescription &parameter) {
         const QString id = parameterId(group.id, parameter.number());
+        // The window's rule: a plaintext or a number in display units (or a raw integer with
+        // --raw), refused when it cannot be held exactly or lies outside the limits.
+        const ParameterFormat display(parameter);
+        const ParameterFormat format = m_request.raw ? display.rawFormat() : display;
         QString error;
-        std::optional<qint32> raw;
-        if (m_request.raw) {
-            bool ok = false;
-            const QString text = m_request.value.trimmed();
-            const qint64 n = text.startsWith(QLatin1String("0x"), Qt::CaseInsensitive)
-                                 ? text.mid(2).toLongLong(&ok, 16)
-                                 : text.toLongLong(&ok);
-            if (ok && n >= std::numeric_limits<qint32>::min() && n <= std::numeric_limits<qint32>::max())
-                raw = qint32(n);
-            else
-                error = QStringLiteral("'%1' is not a raw 32-bit integer").arg(m_request.value);
-        } else {
-            const Plaintexts plaintexts(parameter.plaintexts, DisplayScaling(parameter.scaling));
-            QString plaintextError;
-            if (!plaintexts.isEmpty())
-                raw = plaintexts.value(m_request.value, &plaintextError);
-            if (!raw)
-                raw = DisplayScaling(parameter.scaling).parse(m_request.value, &error);
-            if (!raw && !plaintextError.isEmpty())
-                error = plaintextError + QStringLiteral("; ") + error;
-        }
+        const std::optional<qint32> raw = format.parse(m_request.value, &error);
         if (!raw)
-            return fail(2, QStringLiteral("%1: %2").arg(id, error));
-        if (*raw < parameter.minimum || *raw > parameter.maximum) {
-            return fail(2, QStringLiteral("%1: %2 is outside the limits %3 .. %4; nothing was written")
-                               .arg(id, valueText(parameter, *raw), valueText(parameter, parameter.minimum),
-                                    valueText(parameter, parameter.maximum)));
-        }
+            return fail(2, QStringLiteral("%1: %2; nothing was written").arg(id, error));
         const quint8 mask = m_request.setMask;
         QFuture<Reply> reply = mask ? m_client->writeValue(parameter.address, *raw, mask)
                                     : m_client->writeValueStandard(parameter.address, *raw, 0);

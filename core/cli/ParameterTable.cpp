@@ -3,6 +3,7 @@
 
 #include "parameters/DisplayScaling.h"
 #include "parameters/DriveIdentity.h"
+#include "parameters/ParameterFormat.h"
 #include "parameters/ParameterId.h"
 #include "parameters/Plaintexts.h"
 
@@ -58,7 +59,7 @@ QString valuesText(const ParameterDescription &parameter)
 
 QString valueText(const ParameterDescription &parameter, qint32 raw, bool withUnit)
 {
-    return Plaintexts(parameter.plaintexts, DisplayScaling(parameter.scaling)).shown(raw, withUnit);
+    return ParameterFormat(parameter).text(raw, withUnit);
 }
 
 QString scan(const DriveDescription &drive, bool withValues, Language language)

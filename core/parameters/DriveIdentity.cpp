@@ -1,6 +1,6 @@
 #include "DriveIdentity.h"
 
-#include "Plaintexts.h"
+#include "ParameterFormat.h"
 
 #include <algorithm>
 
@@ -22,7 +22,7 @@ const ParameterDescription *findParameter(const DriveDescription &drive,
 
 QString shown(const ParameterDescription &parameter, qint32 raw)
 {
-    return Plaintexts(parameter.plaintexts, DisplayScaling(parameter.scaling)).shown(raw);
+    return ParameterFormat(parameter).text(raw);
 }
 
 } // namespace

@@ -115,8 +115,18 @@ std::optional<qint32> ParameterFormat::parseNumber(const QString &text, QString 
         return std::nullopt;
     };
     if (m_raw) {
+        // Decimal, or hexadecimal with 0x as the drive's hex parameters are usually written.
+        const bool hex = text.startsWith(QLatin1String("0x"), Qt::CaseInsensitive)
+                         || text.startsWith(QLatin1String("-0x"), Qt::CaseInsensitive);
         bool ok = false;
-        const qint64 value = text.toLongLong(&ok);
+        qint64 value = 0;
+        if (hex) {
+            const bool negative = text.startsWith(QLatin1Char('-'));
+            value = text.mid(negative ? 3 : 2).toLongLong(&ok, 16);
+            value = negative ? -value : value;
+        } else {
+            value = text.toLongLong(&ok);
+        }
         if (!ok)
             return fail(tr("'%1' is not a whole number").arg(text));
         if (value < std::numeric_limits<qint32>::min()

@@ -177,6 +177,24 @@ private slots:
         QVERIFY2(run.err.contains(QStringLiteral("300.00 s")), qPrintable(run.err));
     }
 
+    void aValueThatCannotBeHeldExactlyIsRefusedAsInTheWindow()
+    {
+        // uF.07 holds tenths of a percent: 75.03 would be written as 75.0.
+        const Run run = sim({QStringLiteral("write"), QStringLiteral("uF.07"), QStringLiteral("75.03")});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(QStringLiteral("cannot be set exactly")), qPrintable(run.err));
+        QVERIFY2(run.err.contains(QStringLiteral("75.0 %")), qPrintable(run.err));
+        QVERIFY2(run.err.contains(QStringLiteral("nothing was written")), qPrintable(run.err));
+        QVERIFY(run.out.isEmpty());
+
+        const Run exact = sim({QStringLiteral("write"), QStringLiteral("uF.07"), QStringLiteral("75.0")});
+        QVERIFY2(exact.exitCode == 0, qPrintable(explain(exact)));
+        const Run raw = sim({QStringLiteral("write"), QStringLiteral("uF.07"), QStringLiteral("0x2EE"),
+                             QStringLiteral("--raw")});
+        QVERIFY2(raw.exitCode == 0, qPrintable(explain(raw)));
+        QVERIFY2(raw.out.contains(QStringLiteral("75.0 %")), qPrintable(raw.out));
+    }
+
     void writeReadsTheValueBack()
     {
         const Run run = sim({QStringLiteral("write"), QStringLiteral("op.28"), QStringLiteral("12.5"),

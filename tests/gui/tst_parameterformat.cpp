@@ -1,6 +1,6 @@
 #include "GuiTestDrive.h"
 
-#include "model/ParameterFormat.h"
+#include "parameters/ParameterFormat.h"
 
 #include <QTest>
 

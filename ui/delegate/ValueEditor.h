@@ -1,6 +1,6 @@
 #pragma once
 
-#include "model/ParameterFormat.h"
+#include "parameters/ParameterFormat.h"
 
 #include <QString>
 

@@ -1,7 +1,7 @@
 #include "EditController.h"
 
 #include "client/DriveClient.h"
-#include "model/ParameterFormat.h"
+#include "parameters/ParameterFormat.h"
 #include "model/ParameterModel.h"
 #include "parameters/ParameterId.h"
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ParameterFormat.h"
+#include "parameters/ParameterFormat.h"
 
 #include "parameters/DriveDescription.h"
 #include "parameters/ParameterProperties.h"
