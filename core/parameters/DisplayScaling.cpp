@@ -1,5 +1,7 @@
 #include "DisplayScaling.h"
 
+#include "DecimalText.h"
+
 #include "DisplayUnit.h"
 
 #include <QRegularExpression>
@@ -231,21 +233,15 @@ std::optional<qint32> DisplayScaling::parseDecimal(const QString &text, QString 
         return std::nullopt;
     };
 
-    static const QRegularExpression pattern(
-        QStringLiteral("^([+-]?)(?:([0-9]+)(?:[.,]([0-9]*))?|[.,]([0-9]+))"));
-    const QRegularExpressionMatch match = pattern.match(text);
-    if (!match.hasMatch())
+    const std::optional<DecimalText> number = DecimalText::read(text);
+    if (!number)
         return fail(tr("'%1' is not a number").arg(text));
-    if (!acceptUnit(text, text.mid(match.capturedLength()).trimmed(), error))
+    if (!acceptUnit(text, text.mid(number->length).trimmed(), error))
         return std::nullopt;
 
-    const bool negative = match.captured(1) == QLatin1String("-");
-    QString integral = match.captured(2);
-    QString fraction = match.captured(2).isNull() ? match.captured(4) : match.captured(3);
-    while (integral.startsWith(QLatin1Char('0')))
-        integral.remove(0, 1);
-    while (fraction.endsWith(QLatin1Char('0')))
-        fraction.chop(1);
+    const bool negative = number->negative;
+    const QString &integral = number->integral;
+    const QString &fraction = number->fraction;
     const QString digits = integral + fraction;
     if (digits.size() > 18)
         return fail(tr("'%1' has too many digits").arg(text));

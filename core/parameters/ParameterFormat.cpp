@@ -1,5 +1,7 @@
 #include "ParameterFormat.h"
 
+#include "DecimalText.h"
+
 #include <QRegularExpression>
 
 #include <limits>
@@ -8,27 +10,11 @@ namespace DriveDesk {
 
 namespace {
 
-// The number at the start of a text as "-12.5": no leading or trailing zeros, '.' as the
-// separator, no sign on zero. Empty when the text does not start with a number.
+// The number at the start of a text as "-12.5"; empty when the text does not start with one.
 QString canonicalNumber(const QString &text)
 {
-    static const QRegularExpression pattern(
-        QStringLiteral("^([+-]?)(?:([0-9]+)(?:[.,]([0-9]*))?|[.,]([0-9]+))"));
-    const QRegularExpressionMatch match = pattern.match(text.trimmed());
-    if (!match.hasMatch())
-        return {};
-    QString integral = match.captured(2);
-    QString fraction = match.captured(2).isNull() ? match.captured(4) : match.captured(3);
-    while (integral.startsWith(QLatin1Char('0')))
-        integral.remove(0, 1);
-    while (fraction.endsWith(QLatin1Char('0')))
-        fraction.chop(1);
-    if (integral.isEmpty())
-        integral = QStringLiteral("0");
-    QString number = fraction.isEmpty() ? integral : integral + QLatin1Char('.') + fraction;
-    if (match.captured(1) == QLatin1String("-") && number != QLatin1String("0"))
-        number.prepend(QLatin1Char('-'));
-    return number;
+    const std::optional<DecimalText> number = DecimalText::read(text.trimmed());
+    return number ? number->canonical() : QString();
 }
 
 bool looksNumeric(const QString &text)
