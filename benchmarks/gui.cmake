@@ -1,5 +1,3 @@
 # The window's event loop during a scan and during polling, 5,000 simulated parameters.
-if(TARGET drivedesk_ui)
-    add_executable(bench_gui_stall ${CMAKE_CURRENT_LIST_DIR}/bench_gui_stall.cpp)
-    target_link_libraries(bench_gui_stall PRIVATE drivedesk_ui)
-endif()
+add_executable(bench_gui_stall ${CMAKE_CURRENT_LIST_DIR}/bench_gui_stall.cpp)
+target_link_libraries(bench_gui_stall PRIVATE drivedesk_ui)

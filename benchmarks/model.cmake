@@ -1,5 +1,3 @@
 # The parameter model: filling it and filter keystrokes with 5,000 parameters.
-if(TARGET drivedesk_ui)
-    add_executable(bench_model ${CMAKE_CURRENT_LIST_DIR}/bench_model.cpp)
-    target_link_libraries(bench_model PRIVATE drivedesk_ui)
-endif()
+add_executable(bench_model ${CMAKE_CURRENT_LIST_DIR}/bench_model.cpp)
+target_link_libraries(bench_model PRIVATE drivedesk_ui)

@@ -1,12 +1,10 @@
 # Editing: write, read-back, undo, copy, refresh, polling, the password level and their dialogs,
 # against the simulated drive (offscreen).
-if(TARGET drivedesk_ui)
-    drivedesk_add_test(NAME tst_editcontroller LABEL gui
-        SOURCES gui/tst_editcontroller.cpp gui/tst_editsupport.h LIBS drivedesk_ui)
-    drivedesk_add_test(NAME tst_polling LABEL gui
-        SOURCES gui/tst_polling.cpp gui/tst_editsupport.h LIBS drivedesk_ui)
-    drivedesk_add_test(NAME tst_access LABEL gui
-        SOURCES gui/tst_access.cpp gui/tst_editsupport.h LIBS drivedesk_ui)
-    drivedesk_add_test(NAME tst_editdialogs LABEL gui
-        SOURCES gui/tst_editdialogs.cpp LIBS drivedesk_ui)
-endif()
+drivedesk_add_test(NAME tst_editcontroller LABEL gui
+    SOURCES gui/tst_editcontroller.cpp gui/tst_editsupport.h LIBS drivedesk_ui)
+drivedesk_add_test(NAME tst_polling LABEL gui
+    SOURCES gui/tst_polling.cpp gui/tst_editsupport.h LIBS drivedesk_ui)
+drivedesk_add_test(NAME tst_access LABEL gui
+    SOURCES gui/tst_access.cpp gui/tst_editsupport.h LIBS drivedesk_ui)
+drivedesk_add_test(NAME tst_editdialogs LABEL gui
+    SOURCES gui/tst_editdialogs.cpp LIBS drivedesk_ui)

@@ -1,10 +1,8 @@
 # The shell: the main window, its dialogs and the start-up options (offscreen, against the
 # simulated drive).
-if(TARGET drivedesk_ui)
-    drivedesk_add_test(NAME tst_mainwindow LABEL gui
-        SOURCES gui/tst_mainwindow.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui)
-    drivedesk_add_test(NAME tst_mainwindow_edit LABEL gui
-        SOURCES gui/tst_mainwindow_edit.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui)
-    drivedesk_add_test(NAME tst_mainwindow_dialogs LABEL gui
-        SOURCES gui/tst_mainwindow_dialogs.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui)
-endif()
+drivedesk_add_test(NAME tst_mainwindow LABEL gui
+    SOURCES gui/tst_mainwindow.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui)
+drivedesk_add_test(NAME tst_mainwindow_edit LABEL gui
+    SOURCES gui/tst_mainwindow_edit.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui)
+drivedesk_add_test(NAME tst_mainwindow_dialogs LABEL gui
+    SOURCES gui/tst_mainwindow_dialogs.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui)

@@ -450,16 +450,12 @@ private slots:
 
     void theApplicationIconIsAResource()
     {
-#ifdef DRIVEDESK_ICON_RESOURCE
         QVERIFY(QFile::exists(QStringLiteral(":/icons/drivedesk.svg")));
         for (int size : { 16, 32, 48, 64, 128, 256 }) {
             const QIcon icon(QStringLiteral(":/icons/drivedesk-%1.png").arg(size));
             QVERIFY2(!icon.isNull(), qPrintable(QString::number(size)));
             QCOMPARE(icon.availableSizes().value(0), QSize(size, size));
         }
-#else
-        QSKIP("resources/ is not part of this build (add_subdirectory(resources))");
-#endif
     }
 };
 

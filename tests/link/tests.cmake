@@ -6,7 +6,5 @@ drivedesk_add_test(NAME tst_seriallink LABEL integration
 drivedesk_add_test(NAME tst_tcplink LABEL integration
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_tcplink.cpp LIBS drivedesk_link)
 # The links against drivedesk's own simulator (TCP and its pseudo-terminal).
-if(TARGET drivedesk_bus)
-    drivedesk_add_test(NAME tst_linktosimulator LABEL integration
-        SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_linktosimulator.cpp LIBS drivedesk_bus)
-endif()
+drivedesk_add_test(NAME tst_linktosimulator LABEL integration
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_linktosimulator.cpp LIBS drivedesk_bus)
