@@ -70,6 +70,10 @@
         <source>%1 via %2</source>
         <translation>%1 über %2</translation>
     </message>
+    <message>
+        <source>&quot;%1&quot; is not a TCP port (0..65535, 0 picks a free one)</source>
+        <translation>„%1“ ist kein TCP-Port (0..65535, 0 wählt einen freien)</translation>
+    </message>
 </context>
 <context>
     <name>DisplayScaling</name>

@@ -1,6 +1,7 @@
 // drivedesk-sim: simulated KEB drives on TCP or on a pseudo-terminal, for DriveDesk and for
 // any other program that talks HSP5 or DIN66019(II).
 #include "bus/SimulatorServer.h"
+#include "link/TcpTarget.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -95,22 +96,20 @@ bool parseRate(const QCommandLineParser &parser, const QString &name, double *va
 
 bool parseListen(const QString &text, Options *options, QString *error)
 {
-    const QString rest = text.startsWith(QLatin1String("tcp:")) ? text.mid(4) : QString();
-    const qsizetype colon = rest.lastIndexOf(QLatin1Char(':'));
-    if (colon <= 0) {
+    if (!text.startsWith(QLatin1String("tcp:"))) {
         *error = tr("--listen \"%1\" is not tcp:HOST:PORT (e.g. tcp:127.0.0.1:5020)").arg(text);
         return false;
     }
-    QString host = rest.left(colon);
-    if (host.startsWith(QLatin1Char('[')) && host.endsWith(QLatin1Char(']')))
-        host = host.mid(1, host.size() - 2);
-    bool ok = false;
-    const uint port = rest.mid(colon + 1).toUInt(&ok);
-    if (!ok || port > 65535) {
-        *error = tr("--listen: \"%1\" is not a TCP port (0..65535, 0 picks a free one)")
-                     .arg(rest.mid(colon + 1));
+    // The client's syntax (core/link/TcpTarget), with port 0 for any free one.
+    QString reason;
+    const std::optional<TcpTarget> target
+        = TcpTarget::parse(text.mid(4), TcpTarget::Port::AnyFree, &reason);
+    if (!target) {
+        *error = QStringLiteral("--listen: %1").arg(reason);
         return false;
     }
+    const QString host = target->host;
+    const quint16 port = target->port;
     const bool named = host == QLatin1String("*")
                        || host.compare(QLatin1String("localhost"), Qt::CaseInsensitive) == 0;
     if (!named && QHostAddress(host).isNull()) {

@@ -1,6 +1,7 @@
 #include "ConnectionSettings.h"
 
 #include "SerialLink.h"
+#include "TcpTarget.h"
 
 #include <QCoreApplication>
 
@@ -27,47 +28,6 @@ QString protocolTitle(Protocol protocol)
     case Protocol::Din66019: return QStringLiteral("DIN66019");
     }
     return QString();
-}
-
-// "HOST:PORT" or "[IPv6]:PORT".
-bool splitHostPort(const QString &text, QString *host, quint16 *port, QString *error)
-{
-    QString hostPart;
-    QString portPart;
-    if (text.startsWith(QLatin1Char('['))) {
-        const qsizetype close = text.indexOf(QLatin1Char(']'));
-        if (close < 0 || text.mid(close + 1, 1) != QLatin1String(":")) {
-            *error = ConnectionSettingsText::tr(
-                         "\"%1\" is not HOST:PORT (an IPv6 address is written [ADDRESS]:PORT)")
-                         .arg(text);
-            return false;
-        }
-        hostPart = text.mid(1, close - 1);
-        portPart = text.mid(close + 2);
-    } else {
-        const qsizetype colon = text.lastIndexOf(QLatin1Char(':'));
-        if (colon < 0) {
-            *error
-                = ConnectionSettingsText::tr("\"%1\" has no port: write tcp:HOST:PORT").arg(text);
-            return false;
-        }
-        hostPart = text.left(colon);
-        portPart = text.mid(colon + 1);
-    }
-    if (hostPart.isEmpty()) {
-        *error = ConnectionSettingsText::tr("the host is missing in \"%1\": write tcp:HOST:PORT")
-                     .arg(text);
-        return false;
-    }
-    bool ok = false;
-    const uint number = portPart.toUInt(&ok);
-    if (!ok || number < 1 || number > 65535) {
-        *error = ConnectionSettingsText::tr("\"%1\" is not a TCP port (1..65535)").arg(portPart);
-        return false;
-    }
-    *host = hostPart;
-    *port = quint16(number);
-    return true;
 }
 
 } // namespace
@@ -109,13 +69,13 @@ bool ConnectionSettings::parseTarget(const QString &target, QString *error)
         return true;
     }
     if (scheme == QLatin1String("tcp")) {
-        QString newHost;
-        quint16 newPort = 0;
-        if (!splitHostPort(rest, &newHost, &newPort, &message))
+        const std::optional<TcpTarget> tcp = TcpTarget::parse(rest, TcpTarget::Port::Given,
+                                                              &message);
+        if (!tcp)
             return false;
         kind = Kind::Tcp;
-        host = newHost;
-        port = newPort;
+        host = tcp->host;
+        port = tcp->port;
         return true;
     }
     if (scheme == QLatin1String("serial")) {

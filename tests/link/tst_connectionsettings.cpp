@@ -1,4 +1,5 @@
 #include "link/ConnectionSettings.h"
+#include "link/TcpTarget.h"
 
 #include <QTest>
 
@@ -19,6 +20,25 @@ private slots:
         QCOMPARE(settings.host, QStringLiteral("192.168.0.7"));
         QCOMPARE(settings.port, quint16(4001));
         QCOMPARE(settings.target(), QStringLiteral("tcp:192.168.0.7:4001"));
+    }
+
+    void aServerWritesItsAddressAsTheClientDoes()
+    {
+        // drivedesk-sim --listen and --connect share one syntax; a server may ask for port 0.
+        const std::optional<TcpTarget> any
+            = TcpTarget::parse(QStringLiteral("[::1]:0"), TcpTarget::Port::AnyFree);
+        QVERIFY(any);
+        QCOMPARE(any->host, QStringLiteral("::1"));
+        QCOMPARE(any->port, quint16(0));
+        QString error;
+        QVERIFY(!TcpTarget::parse(QStringLiteral("[::1]:0"), TcpTarget::Port::Given, &error));
+        QVERIFY2(error.contains(QStringLiteral("1..65535")), qPrintable(error));
+        QVERIFY(!TcpTarget::parse(QStringLiteral("host:70000"), TcpTarget::Port::AnyFree, &error));
+        QVERIFY2(error.contains(QStringLiteral("0 picks a free one")), qPrintable(error));
+        ConnectionSettings settings;
+        QVERIFY(settings.parseTarget(QStringLiteral("tcp:[::1]:5020"), nullptr));
+        QCOMPARE(settings.host, TcpTarget::parse(QStringLiteral("[::1]:5020"),
+                                                 TcpTarget::Port::Given)->host);
     }
 
     void parsesIpv6AndHostNames()
