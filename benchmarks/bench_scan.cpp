@@ -3,6 +3,7 @@
 // and both directions together for DIN66019II (one shared line). DIN66019II also waits for the
 // drive's reply latency once per request: its half-duplex limit adds that. A reconnect scan
 // takes the metadata from the cache the cold scan before it filled.
+#include "bus/LinkFactory.h"
 #include "client/DriveClient.h"
 
 #include <QCoreApplication>
@@ -55,7 +56,7 @@ public:
         ClientOptions options;
         options.maxInFlight = c.inFlight;
 
-        m_client = std::make_unique<DriveClient>(settings, options);
+        m_client = std::make_unique<DriveClient>(settings, everyLink(), options);
         m_sent = m_received = m_requests = 0;
         m_answers.clear();
         m_codec = makeCodec(c.protocol);

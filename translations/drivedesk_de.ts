@@ -261,6 +261,10 @@
             <numerusform>keine der laufenden Anfragen wurde beantwortet: eine Anfrage nach der anderen, jede nach %n ms Ruhe auf der Leitung, bis der Umrichter wieder antwortet</numerusform>
         </translation>
     </message>
+    <message>
+        <source>%1: this program cannot open such a connection</source>
+        <translation>%1: dieses Programm kann eine solche Verbindung nicht öffnen</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ConnectionDialog</name>

@@ -261,6 +261,10 @@
             <numerusform>no request in flight was answered: one request at a time, each after %n ms of quiet line, until the drive answers again</numerusform>
         </translation>
     </message>
+    <message>
+        <source>%1: this program cannot open such a connection</source>
+        <translation>%1: this program cannot open such a connection</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ConnectionDialog</name>

@@ -6,6 +6,11 @@
 
 namespace DriveDesk {
 
+LinkMaker everyLink()
+{
+    return [](const ConnectionSettings &settings) { return makeLink(settings); };
+}
+
 std::unique_ptr<Link> makeLink(const ConnectionSettings &settings, QObject *parent)
 {
     switch (settings.kind) {

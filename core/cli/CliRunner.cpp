@@ -1,6 +1,7 @@
 #include "CliRunner.h"
 
 
+#include "bus/LinkFactory.h"
 #include "cli/ParameterTable.h"
 #include "parameters/DriveIdentity.h"
 #include "parameters/MetadataCache.h"
@@ -45,7 +46,7 @@ void CliRunner::start()
 {
     ClientOptions options;
     options.timeoutMs = m_request.timeoutMs;
-    m_client = std::make_unique<DriveClient>(m_request.connection, options);
+    m_client = std::make_unique<DriveClient>(m_request.connection, everyLink(), options);
     connect(m_client.get(), &DriveClient::connected, this, &CliRunner::runCommand);
     connect(m_client.get(), &DriveClient::connectionFailed, this, [this](const QString &reason) {
         fail(3, QStringLiteral("cannot connect to %1: %2")

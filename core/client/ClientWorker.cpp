@@ -2,7 +2,6 @@
 
 #include "ClientTiming.h"
 #include "ReplyCheck.h"
-#include "bus/LinkFactory.h"
 
 #include <QDateTime>
 #include <QTimer>
@@ -21,14 +20,16 @@ constexpr int kBroadcastAddress = 255;
 
 } // namespace
 
-ClientWorker::ClientWorker(ConnectionSettings settings, ClientOptions options, QObject *parent)
+ClientWorker::ClientWorker(ConnectionSettings settings, ClientOptions options,
+                           LinkMaker makeLink, QObject *parent)
     : QObject(parent)
     , m_settings(std::move(settings))
     , m_options(options)
+    , m_makeLink(std::move(makeLink))
     , m_answerTimeoutMs(DriveDesk::answerTimeoutMs(m_settings, m_options))
-    , m_quietLineMs(quietLineMs(m_settings))
     , m_codec(makeCodec(m_settings.protocol, CodecOptions{m_settings.hsp5Extensions}))
     , m_decoder(m_codec->makeDecoder(Role::Operator))
+    , m_quietLineMs(quietLineMs(m_settings))
 {}
 
 ClientWorker::~ClientWorker()
@@ -77,7 +78,13 @@ void ClientWorker::connectToDrive()
     m_decoder->reset();
     m_selectedDrive = -1;
     m_recovering = false;
-    m_link = makeLink(m_settings);
+    m_link = m_makeLink ? m_makeLink(m_settings) : nullptr;
+    if (!m_link) {
+        setState(DriveClient::State::Disconnected);
+        emit connectionFailed(tr("%1: this program cannot open such a connection")
+                                  .arg(m_settings.displayName()));
+        return;
+    }
     // Queued: a link may report from inside send(), and the worker must not re-enter itself.
     // What a dropped link still had on its way is not this link's business.
     const quint64 generation = ++m_linkGeneration;

@@ -25,7 +25,8 @@ class ClientWorker : public QObject, public RequestSink
 {
     Q_OBJECT
 public:
-    ClientWorker(ConnectionSettings settings, ClientOptions options, QObject *parent = nullptr);
+    ClientWorker(ConnectionSettings settings, ClientOptions options, LinkMaker makeLink,
+                 QObject *parent = nullptr);
     ~ClientWorker() override;
 
     // Runs once the thread started.
@@ -113,6 +114,7 @@ private:
 
     const ConnectionSettings m_settings;
     const ClientOptions m_options;
+    const LinkMaker m_makeLink;
     const int m_answerTimeoutMs = 0;
     std::unique_ptr<ProtocolCodec> m_codec;
     std::unique_ptr<FrameDecoder> m_decoder;

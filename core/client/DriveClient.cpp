@@ -18,10 +18,12 @@ std::shared_ptr<QPromise<T>> startedPromise()
 
 } // namespace
 
-DriveClient::DriveClient(ConnectionSettings settings, ClientOptions options, QObject *parent)
+DriveClient::DriveClient(ConnectionSettings settings, LinkMaker makeLink, ClientOptions options,
+                         QObject *parent)
     : QObject(parent)
     , m_settings(std::move(settings))
     , m_options(options)
+    , m_makeLink(std::move(makeLink))
 {
     qRegisterMetaType<Reply>();
     qRegisterMetaType<TrafficRecord>();
@@ -29,7 +31,7 @@ DriveClient::DriveClient(ConnectionSettings settings, ClientOptions options, QOb
 
     m_thread = new QThread; // not a child: it must outlive everything the worker does
     m_thread->setObjectName(QStringLiteral("DriveDesk client: %1").arg(m_settings.displayName()));
-    m_worker = new ClientWorker(m_settings, m_options);
+    m_worker = new ClientWorker(m_settings, m_options, m_makeLink);
     m_worker->moveToThread(m_thread);
     connect(m_thread, &QThread::started, m_worker, &ClientWorker::init);
     connect(m_thread, &QThread::finished, m_worker, &QObject::deleteLater);

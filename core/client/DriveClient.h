@@ -2,6 +2,7 @@
 
 #include "client/Reply.h"
 #include "link/ConnectionSettings.h"
+#include "link/Link.h"
 #include "parameters/DriveDescription.h"
 
 #include <QFuture>
@@ -58,7 +59,9 @@ public:
     enum class State : quint8 { Disconnected, Connecting, Connected, Lost };
     Q_ENUM(State)
 
-    explicit DriveClient(ConnectionSettings settings, ClientOptions options = {},
+    // `makeLink` gives the client its link on every connectToDrive(): the application chooses
+    // which kinds of link there are (core/bus's everyLink(): serial, TCP, simulated).
+    DriveClient(ConnectionSettings settings, LinkMaker makeLink, ClientOptions options = {},
                          QObject *parent = nullptr);
     ~DriveClient() override;
 
@@ -98,6 +101,7 @@ private:
 
     ConnectionSettings m_settings;
     ClientOptions m_options;
+    LinkMaker m_makeLink;
     std::atomic<State> m_state = State::Disconnected; // read from any thread
     QThread *m_thread = nullptr; // owned; stopped and joined in the destructor
     ClientWorker *m_worker = nullptr; // owned by its thread, deleted on finished

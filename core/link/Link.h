@@ -4,7 +4,12 @@
 #include <QObject>
 #include <QString>
 
+#include <functional>
+#include <memory>
+
 namespace DriveDesk {
+
+struct ConnectionSettings;
 
 // The byte pipe to a drive: serial port, TCP socket to a serial device server, or the
 // simulated drive in process. The client sees no difference between them.
@@ -35,5 +40,9 @@ signals:
     // at once; the link is closed afterwards.
     void failed(const QString &reason);
 };
+
+// How a client gets its link: the application decides which kinds it offers (the serial port,
+// TCP, the simulated drive), so the client depends on no particular one.
+using LinkMaker = std::function<std::unique_ptr<Link>(const ConnectionSettings &settings)>;
 
 } // namespace DriveDesk

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "bus/LinkFactory.h"
 #include "client/DriveClient.h"
 
 #include <QCoreApplication>
@@ -68,7 +69,7 @@ struct Session {
     std::unique_ptr<QSignalSpy> traffic;
 
     explicit Session(const ConnectionSettings &settings, ClientOptions options = {})
-        : client(std::make_unique<DriveClient>(settings, options))
+        : client(std::make_unique<DriveClient>(settings, everyLink(), options))
         , traffic(std::make_unique<QSignalSpy>(client.get(), &DriveClient::traffic))
     {
         client->connectToDrive();

@@ -9,7 +9,7 @@ foreach(name clientservices clientdin clientpipeline clientfaults clienttranspor
         clientseedonly clientcache)
     drivedesk_add_test(NAME tst_${name} LABEL integration TIMEOUT 300
         SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_${name}.cpp ${CMAKE_CURRENT_LIST_DIR}/ClientTestSupport.h
-        LIBS drivedesk_client)
+        LIBS drivedesk_client drivedesk_bus)
 endforeach()
 
 include(${CMAKE_CURRENT_LIST_DIR}/scanner.cmake)

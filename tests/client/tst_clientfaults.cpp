@@ -1,5 +1,6 @@
 #include "ClientTestSupport.h"
 
+#include "bus/LinkFactory.h"
 #include "bus/SimulatorServer.h"
 
 #include <QTest>
@@ -196,7 +197,7 @@ private slots:
         settings.kind = ConnectionSettings::Kind::Tcp;
         settings.host = QStringLiteral("127.0.0.1");
         settings.port = port;
-        DriveClient client(settings);
+        DriveClient client(settings, everyLink());
         QSignalSpy failed(&client, &DriveClient::connectionFailed);
         client.connectToDrive();
         const QFuture<Reply> queued = client.readValue(kMaxSpeedForward, 1);

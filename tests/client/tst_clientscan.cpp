@@ -1,5 +1,7 @@
 #include "ClientTestSupport.h"
 
+#include "bus/LinkFactory.h"
+
 #include <QTest>
 
 using namespace DriveDesk;
@@ -70,7 +72,7 @@ private slots:
 
     void scanWithoutConnectionSaysSo()
     {
-        DriveClient client(simulated(Protocol::Hsp5, fast()));
+        DriveClient client(simulated(Protocol::Hsp5, fast()), everyLink());
         QFuture<DriveDescription> scan = client.scan();
         QVERIFY(waitFinished(scan));
         QVERIFY(!scan.result().incompleteReason.isEmpty());

@@ -1,5 +1,7 @@
 #include "ClientTestSupport.h"
 
+#include "bus/LinkFactory.h"
+
 #include <QTest>
 
 using namespace DriveDesk;
@@ -27,10 +29,29 @@ private:
     }
 
 private slots:
+    void theApplicationChoosesTheLinks()
+    {
+        // A program that offers no simulated drive hands the client no link for it.
+        int asked = 0;
+        DriveClient client(simulated(Protocol::Hsp5), [&asked](const ConnectionSettings &) {
+            ++asked;
+            return std::unique_ptr<Link>();
+        });
+        QSignalSpy failed(&client, &DriveClient::connectionFailed);
+        client.connectToDrive();
+        QVERIFY(failed.wait(kWaitMs));
+        QCOMPARE(asked, 1);
+        QVERIFY2(failed.constFirst().at(0).toString().contains(QStringLiteral("cannot open")),
+                 qPrintable(failed.constFirst().at(0).toString()));
+        QCOMPARE(client.state(), DriveClient::State::Disconnected);
+        const Reply reply = replyOf(client.readValue(kMaxSpeedForward, 1));
+        QCOMPARE(reply.status, Reply::Status::NotConnected);
+    }
+
     void connects_data() { protocols(); }
     void connects()
     {
-        DriveClient client(settings());
+        DriveClient client(settings(), everyLink());
         QSignalSpy connected(&client, &DriveClient::connected);
         QSignalSpy states(&client, &DriveClient::stateChanged);
         QCOMPARE(client.state(), DriveClient::State::Disconnected);
@@ -45,7 +66,7 @@ private slots:
     void requestWithoutConnectionFailsAtOnce_data() { protocols(); }
     void requestWithoutConnectionFailsAtOnce()
     {
-        DriveClient client(settings());
+        DriveClient client(settings(), everyLink());
         const Reply reply = replyOf(client.readValue(kMaxSpeedForward, 1));
         QCOMPARE(reply.status, Reply::Status::NotConnected);
         QCOMPARE(reply.message(), QStringLiteral("not connected to a drive"));

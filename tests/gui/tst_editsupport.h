@@ -1,5 +1,6 @@
 #pragma once
 
+#include "bus/LinkFactory.h"
 #include "client/DriveClient.h"
 #include "model/ParameterModel.h"
 
@@ -45,7 +46,7 @@ struct SimulatedDrive
     QUndoStack undoStack;
 
     explicit SimulatedDrive(int replyLatencyUs = 0)
-        : client(simulated(replyLatencyUs))
+        : client(simulated(replyLatencyUs), everyLink())
     { }
 
     // Connects and scans (values, no plaintexts; every group, or those of the pages given);

@@ -1,3 +1,4 @@
+#include "bus/LinkFactory.h"
 #include "monitor/TelegramMonitor.h"
 #include "monitor/TrafficFilterModel.h"
 #include "monitor/TrafficModel.h"
@@ -133,7 +134,7 @@ private slots:
     {
         QFETCH(QString, protocol);
         const Protocol spoken = *protocolFromName(protocol);
-        DriveClient client(simulated(spoken));
+        DriveClient client(simulated(spoken), everyLink());
         m_monitor->attach(&client);
         QVERIFY(connectClient(client));
         QVERIFY(finished(client.readValue(kMaxSpeedForward, 0x01)));
@@ -204,7 +205,7 @@ private slots:
         faults.seed = 3;
         ClientOptions options;
         options.timeoutMs = 30;
-        DriveClient client(simulated(Protocol::Din66019II, faults), options);
+        DriveClient client(simulated(Protocol::Din66019II, faults), everyLink(), options);
         m_monitor->attach(&client);
         QVERIFY(connectClient(client));
         const auto errorRows = [this] { return rowsOf(model(), QStringLiteral("error")); };

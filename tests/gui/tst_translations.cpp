@@ -1,3 +1,4 @@
+#include "bus/LinkFactory.h"
 #include "edit/EditController.h"
 #include "link/ConnectionSettings.h"
 #include "model/ParameterModel.h"
@@ -175,7 +176,7 @@ private slots:
 
     void editControllerSpeaksGerman()
     {
-        DriveClient client(ConnectionSettings{});
+        DriveClient client(ConnectionSettings{}, everyLink());
         ParameterModel model;
         QUndoStack undoStack;
         EditController controller(&client, &model, &undoStack);

@@ -1,5 +1,6 @@
 #include "DriveSession.h"
 
+#include "bus/LinkFactory.h"
 #include "edit/AccessController.h"
 #include "edit/EditController.h"
 #include "edit/PollingController.h"
@@ -21,7 +22,7 @@ DriveSession::DriveSession(const ConnectionSettings &settings, ParameterModel *m
     : QObject(parent)
     , m_model(model)
 {
-    m_client = new DriveClient(settings);
+    m_client = new DriveClient(settings, everyLink());
     m_edit = new EditController(m_client, model, undoStack, this);
     m_polling = new PollingController(m_client, model, this);
     m_polling->setGroup(kLiveGroup);

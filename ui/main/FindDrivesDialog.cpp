@@ -1,5 +1,6 @@
 #include "FindDrivesDialog.h"
 
+#include "bus/LinkFactory.h"
 #include "protocol/Codec.h"
 
 #include <QDialogButtonBox>
@@ -96,7 +97,7 @@ FindDrivesDialog::FindDrivesDialog(DriveClient *client, QWidget *parent)
 FindDrivesDialog::FindDrivesDialog(const ConnectionSettings &settings, QWidget *parent)
     : FindDrivesDialog(parent)
 {
-    m_ownClient = std::make_unique<DriveClient>(settings);
+    m_ownClient = std::make_unique<DriveClient>(settings, everyLink());
     m_client = m_ownClient.get();
     m_bus->setText(tr("Asking every address %2..%3 on %1 whether a drive answers.")
                        .arg(busName(settings))
