@@ -269,7 +269,7 @@ private slots:
         });
         poll.start(20);
         window.findChild<QAction *>(QStringLiteral("findDrivesAction"))->trigger();
-        QVERIFY(answered);
+        QTRY_VERIFY_WITH_TIMEOUT(answered, kWaitMs);
         QTRY_VERIFY_WITH_TIMEOUT(window.isReady(), kWaitMs);
         QCOMPARE(window.session()->settings().driveAddress, 3);
         QCOMPARE(RecentConnections::last().driveAddress, 3);

@@ -334,11 +334,15 @@ void ConnectionDialog::findDrives()
     }
     if (!validate())
         return;
-    FindDrivesDialog dialog(settings(), this);
-    if (dialog.exec() != QDialog::Accepted || !dialog.chosenAddress())
-        return;
-    m_address->setValue(*dialog.chosenAddress());
-    accept();
+    auto *dialog = new FindDrivesDialog(settings(), this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] {
+        if (!dialog->chosenAddress())
+            return;
+        m_address->setValue(*dialog->chosenAddress());
+        accept();
+    });
+    dialog->open();
 }
 
 void ConnectionDialog::updateEnabled()

@@ -14,6 +14,7 @@ class QUndoStack;
 
 namespace DriveDesk {
 
+class ConnectionDialog;
 class DriveSession;
 class NoticeBar;
 class ParameterBrowser;
@@ -34,8 +35,9 @@ public:
 
     // Drops the current connection (if any) and connects to `settings`, then scans the drive.
     void connectTo(ConnectionSettings settings);
-    // The connection dialog, filled with the last connection; connects when accepted.
-    void openConnectionDialog();
+    // The connection dialog, filled with the last connection; connects when accepted. It opens
+    // without waiting (open()) and closes itself.
+    ConnectionDialog *openConnectionDialog();
 
     ParameterModel *model() const { return m_model; }
     ParameterBrowser *browser() const { return m_browser; }

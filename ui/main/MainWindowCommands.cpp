@@ -24,13 +24,27 @@
 
 namespace DriveDesk {
 
-void MainWindow::openConnectionDialog()
+namespace {
+
+// Dialogs open with open() and act in a handler: no nested event loop, and what the handler
+// needs it reads when the dialog closes, not before it opened.
+template<typename Dialog>
+Dialog *openDialog(Dialog *dialog)
 {
-    ConnectionDialog dialog(this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->open();
+    return dialog;
+}
+
+} // namespace
+
+ConnectionDialog *MainWindow::openConnectionDialog()
+{
+    auto *dialog = new ConnectionDialog(this);
     if (m_session)
-        dialog.setSettings(m_session->settings());
-    if (dialog.exec() == QDialog::Accepted)
-        connectTo(dialog.settings());
+        dialog->setSettings(m_session->settings());
+    connect(dialog, &QDialog::accepted, this, [this, dialog] { connectTo(dialog->settings()); });
+    return openDialog(dialog);
 }
 
 void MainWindow::findDrives()
@@ -38,20 +52,19 @@ void MainWindow::findDrives()
     // On a bus already connected, search through that connection: the port is ours.
     if (m_session && m_session->state() == DriveClient::State::Connected
         && m_session->settings().protocol != Protocol::Hsp5) {
-        FindDrivesDialog dialog(m_session->client(), this);
-        if (dialog.exec() != QDialog::Accepted || !dialog.chosenAddress())
-            return;
-        ConnectionSettings settings = m_session->settings(); // the same bus, another drive
-        settings.driveAddress = *dialog.chosenAddress();
-        connectTo(settings);
+        auto *dialog = new FindDrivesDialog(m_session->client(), this);
+        connect(dialog, &QDialog::accepted, this, [this, dialog] {
+            if (!m_session || !dialog->chosenAddress())
+                return;
+            ConnectionSettings settings = m_session->settings(); // the same bus, another drive
+            settings.driveAddress = *dialog->chosenAddress();
+            connectTo(settings);
+        });
+        openDialog(dialog);
         return;
     }
-    ConnectionDialog dialog(this);
-    if (m_session)
-        dialog.setSettings(m_session->settings());
-    QTimer::singleShot(0, &dialog, &ConnectionDialog::findDrives);
-    if (dialog.exec() == QDialog::Accepted)
-        connectTo(dialog.settings());
+    ConnectionDialog *dialog = openConnectionDialog();
+    QTimer::singleShot(0, dialog, &ConnectionDialog::findDrives);
 }
 
 void MainWindow::resetToDefault()
@@ -114,55 +127,67 @@ void MainWindow::writeToSets()
         showMessage(tr("%1 has no value read in set %2 to write.").arg(id).arg(set));
         return;
     }
-    SetsDialog dialog(SetsDialog::Mode::ChooseSets, this);
-    dialog.setWindowTitle(tr("Write to Sets"));
-    dialog.setPrompt(
+    auto *dialog = new SetsDialog(SetsDialog::Mode::ChooseSets, this);
+    dialog->setWindowTitle(tr("Write to Sets"));
+    dialog->setPrompt(
         tr("Write %1 to %2 in:")
             .arg(m_model->valueIndex(address, set).data(Qt::DisplayRole).toString(), id));
-    dialog.setActiveSet(activeSet());
-    dialog.setSetMask(quint8(1u << set));
-    if (dialog.exec() != QDialog::Accepted)
-        return;
-    QString problem;
-    if (!m_model->requestWrite(address, dialog.setMask(), *raw, &problem))
-        showMessage(problem);
+    dialog->setActiveSet(activeSet());
+    dialog->setSetMask(quint8(1u << set));
+    connect(dialog, &QDialog::accepted, this, [this, dialog, address, set, id] {
+        // The value as it is now: polling or another write may have changed it meanwhile.
+        const std::optional<qint32> now = isReady() ? m_model->value(address, set) : std::nullopt;
+        if (!now) {
+            showMessage(tr("%1 has no value read in set %2 to write.").arg(id).arg(set));
+            return;
+        }
+        QString problem;
+        if (!m_model->requestWrite(address, dialog->setMask(), *now, &problem))
+            showMessage(problem);
+    });
+    openDialog(dialog);
 }
 
 void MainWindow::copySet()
 {
     if (!isReady())
         return;
-    SetsDialog dialog(SetsDialog::Mode::CopySet, this);
-    dialog.setWindowTitle(tr("Copy Set"));
-    dialog.setPrompt(tr("Copy every set-programmable value you may change from one set to "
-                        "another:"));
+    auto *dialog = new SetsDialog(SetsDialog::Mode::CopySet, this);
+    dialog->setWindowTitle(tr("Copy Set"));
+    dialog->setPrompt(tr("Copy every set-programmable value you may change from one set to "
+                         "another:"));
     const int active = activeSet();
-    dialog.setActiveSet(active);
+    dialog->setActiveSet(active);
     const int from = std::max(active, 0);
-    dialog.setCopy(from, (from + 1) % kParameterSets);
-    if (dialog.exec() == QDialog::Accepted)
-        m_session->editController()->copySet(dialog.fromSet(), dialog.toSet());
+    dialog->setCopy(from, (from + 1) % kParameterSets);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] {
+        if (isReady())
+            m_session->editController()->copySet(dialog->fromSet(), dialog->toSet());
+    });
+    openDialog(dialog);
 }
 
 void MainWindow::enterPassword()
 {
     if (!isReady())
         return;
-    AccessController *access = m_session->accessController();
-    PasswordDialog dialog(this);
-    dialog.setLevel(access->isLevelKnown() ? std::optional<PasswordLevel>(access->level())
-                                           : std::nullopt,
-                    m_language);
-    if (dialog.exec() == QDialog::Accepted && dialog.password())
-        access->enterPassword(*dialog.password());
+    const AccessController *access = m_session->accessController();
+    auto *dialog = new PasswordDialog(this);
+    dialog->setLevel(access->isLevelKnown() ? std::optional<PasswordLevel>(access->level())
+                                            : std::nullopt,
+                     m_language);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] {
+        if (isReady() && dialog->password())
+            m_session->accessController()->enterPassword(*dialog->password());
+    });
+    openDialog(dialog);
 }
 
 void MainWindow::showDriveInformation()
 {
     if (!m_session || !m_session->hasDescription())
         return;
-    DriveInfoDialog dialog(m_model->description(), m_session->settings(), this);
-    dialog.exec();
+    openDialog(new DriveInfoDialog(m_model->description(), m_session->settings(), this));
 }
 
 void MainWindow::chooseLanguage(Language language)
@@ -172,9 +197,10 @@ void MainWindow::chooseLanguage(Language language)
                                                       : QStringLiteral("en"));
     if (language == m_language)
         return;
-    QMessageBox::information(this, tr("Language"),
-                             tr("DriveDesk uses the new language from its next start on: the "
-                                "window's texts and the drive's own texts."));
+    openDialog(new QMessageBox(QMessageBox::Information, tr("Language"),
+                               tr("DriveDesk uses the new language from its next start on: the "
+                                  "window's texts and the drive's own texts."),
+                               QMessageBox::Ok, this));
 }
 
 void MainWindow::setPollingInterval(int ms)
@@ -192,11 +218,14 @@ void MainWindow::setPollingInterval(int ms)
 
 void MainWindow::about()
 {
-    QMessageBox::about(this, tr("About DriveDesk"),
-                       tr("<p><b>DriveDesk</b> %1</p><p>Reads and edits the parameters of KEB "
-                          "frequency inverters over HSP5, DIN66019II and DIN66019, and ships a "
-                          "simulated COMBIVERT F5.</p>")
-                           .arg(QCoreApplication::applicationVersion().toHtmlEscaped()));
+    auto *box = new QMessageBox(QMessageBox::NoIcon, tr("About DriveDesk"),
+                                tr("<p><b>DriveDesk</b> %1</p><p>Reads and edits the parameters "
+                                   "of KEB frequency inverters over HSP5, DIN66019II and "
+                                   "DIN66019, and ships a simulated COMBIVERT F5.</p>")
+                                    .arg(QCoreApplication::applicationVersion().toHtmlEscaped()),
+                                QMessageBox::Ok, this);
+    box->setIconPixmap(windowIcon().pixmap(64, 64));
+    openDialog(box);
 }
 
 } // namespace DriveDesk

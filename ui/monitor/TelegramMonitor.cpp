@@ -257,18 +257,28 @@ void TelegramMonitor::chooseFileAndSave()
         QStringLiteral("telegrams-%1.csv")
             .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-hhmmss"))));
     const QString csvFilter = tr("CSV files (*.csv)");
-    QString selectedFilter = csvFilter;
-    QString path = QFileDialog::getSaveFileName(
-        this, tr("Save telegrams"), suggested,
-        csvFilter + QStringLiteral(";;") + tr("Text files (*.txt)"), &selectedFilter);
-    if (path.isEmpty())
-        return;
-    if (QFileInfo(path).suffix().isEmpty())
-        path += selectedFilter == csvFilter ? QStringLiteral(".csv") : QStringLiteral(".txt");
-    settings().setValue(kSaveDirectoryKey, QFileInfo(path).absolutePath());
-    QString error;
-    if (!saveTo(path, &error))
-        QMessageBox::warning(this, tr("Save telegrams"), error);
+    // Opened with open(): no nested event loop while the user chooses.
+    auto *dialog = new QFileDialog(this, tr("Save telegrams"), suggested,
+                                   csvFilter + QStringLiteral(";;") + tr("Text files (*.txt)"));
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setAcceptMode(QFileDialog::AcceptSave);
+    dialog->selectFile(suggested);
+    connect(dialog, &QFileDialog::fileSelected, this, [this, dialog, csvFilter](QString path) {
+        if (path.isEmpty())
+            return;
+        if (QFileInfo(path).suffix().isEmpty())
+            path += dialog->selectedNameFilter() == csvFilter ? QStringLiteral(".csv")
+                                                              : QStringLiteral(".txt");
+        settings().setValue(kSaveDirectoryKey, QFileInfo(path).absolutePath());
+        QString error;
+        if (saveTo(path, &error))
+            return;
+        auto *box = new QMessageBox(QMessageBox::Warning, tr("Save telegrams"), error,
+                                    QMessageBox::Ok, this);
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open();
+    });
+    dialog->open();
 }
 
 void TelegramMonitor::copySelection() const
