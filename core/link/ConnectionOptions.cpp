@@ -36,12 +36,9 @@ bool ConnectionOptions::language(const QCommandLineParser &parser,
 {
     if (!parser.isSet(m_language))
         return true;
-    const QString name = parser.value(m_language).toLower();
-    if (name == QLatin1String("en")) {
-        *language = Language::English;
-    } else if (name == QLatin1String("de")) {
-        *language = Language::German;
-    } else {
+    const QString name = parser.value(m_language);
+    *language = languageFromCode(name);
+    if (!*language) {
         *error = tr("unknown language \"%1\": use en or de").arg(name);
         return false;
     }

@@ -192,9 +192,7 @@ void MainWindow::showDriveInformation()
 
 void MainWindow::chooseLanguage(Language language)
 {
-    QSettings().setValue(QStringLiteral("language"),
-                         language == Language::German ? QStringLiteral("de")
-                                                      : QStringLiteral("en"));
+    QSettings().setValue(QStringLiteral("language"), languageCode(language));
     if (language == m_language)
         return;
     openDialog(new QMessageBox(QMessageBox::Information, tr("Language"),

@@ -26,11 +26,9 @@ Language StartupOptions::uiLanguage() const
 {
     if (language)
         return *language;
-    const QString chosen = QSettings().value(QStringLiteral("language")).toString();
-    if (chosen == QLatin1String("de"))
-        return Language::German;
-    if (chosen == QLatin1String("en"))
-        return Language::English;
+    if (const std::optional<Language> chosen
+        = languageFromCode(QSettings().value(QStringLiteral("language")).toString()))
+        return *chosen;
     return QLocale::system().language() == QLocale::German ? Language::German : Language::English;
 }
 
