@@ -2,6 +2,7 @@
 
 #include "bus/LinkFactory.h"
 #include "client/DriveClient.h"
+#include "protocol/Codec.h"
 
 #include <QCoreApplication>
 #include <QFuture>
@@ -99,6 +100,23 @@ struct Session {
         return list;
     }
 };
+
+// The services of the requests in `records`, read back as a drive reads them with `codec`.
+inline QList<Service> sentServices(const QList<TrafficRecord> &records, const ProtocolCodec &codec)
+{
+    const auto decoder = codec.makeDecoder(Role::Drive);
+    QList<Service> services;
+    for (const TrafficRecord &record : records) {
+        if (record.kind != TrafficRecord::Kind::Sent)
+            continue;
+        decoder->feed(record.bytes);
+        while (const std::optional<Decoded> item = decoder->next()) {
+            if (const auto *telegram = std::get_if<Telegram>(&*item))
+                services.append(telegram->service);
+        }
+    }
+    return services;
+}
 
 inline QString describeReply(const Reply &reply)
 {

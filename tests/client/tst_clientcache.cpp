@@ -34,17 +34,7 @@ Scanned scan(const ConnectionSettings &settings, MetadataSource metadata, const 
     if (!waitFinished(future, 120000))
         return {};
     Scanned result{future.result(), {}};
-    const auto codec = makeCodec(settings.protocol);
-    const auto decoder = codec->makeDecoder(Role::Drive);
-    for (const TrafficRecord &record : s.records()) {
-        if (record.kind != TrafficRecord::Kind::Sent)
-            continue;
-        decoder->feed(record.bytes);
-        while (const std::optional<Decoded> item = decoder->next()) {
-            if (const auto *telegram = std::get_if<Telegram>(&*item))
-                result.services.append(telegram->service);
-        }
-    }
+    result.services = sentServices(s.records(), *makeCodec(settings.protocol));
     return result;
 }
 

@@ -15,19 +15,7 @@ namespace {
 // DriveDesk's extensions would read them (so that an extension shows up as what it is).
 QList<Service> sentServices(const Session &session)
 {
-    const auto decoder
-        = Hsp5Codec(Hsp5Services::WithExtensions).makeDecoder(Role::Drive);
-    QList<Service> services;
-    for (const TrafficRecord &record : session.records()) {
-        if (record.kind != TrafficRecord::Kind::Sent)
-            continue;
-        decoder->feed(record.bytes);
-        while (const std::optional<Decoded> item = decoder->next()) {
-            if (const auto *telegram = std::get_if<Telegram>(&*item))
-                services.append(telegram->service);
-        }
-    }
-    return services;
+    return ClientTest::sentServices(session.records(), Hsp5Codec(Hsp5Services::WithExtensions));
 }
 
 QStringList errors(const Session &session)
