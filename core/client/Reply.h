@@ -28,7 +28,17 @@ struct Reply {
 
     bool ok() const { return status == Status::Ok; }
     Ack ack() const { return response.ack; }
-    template<typename T> const T *data() const { return ok() ? response.as<T>() : nullptr; }
+    // The answer's data, or null. Only on a Reply that outlives the pointer: a temporary's
+    // pointer would dangle as soon as the statement ends.
+    template<typename T> const T *data() const & { return ok() ? response.as<T>() : nullptr; }
+    template<typename T> const T *data() const && = delete;
+    // The transport gave up (link lost, not connected, cancelled): no answer from the drive at
+    // all, so every later request of the same job fails alike.
+    bool isConnectionFailure() const
+    {
+        return status == Status::LinkLost || status == Status::NotConnected
+            || status == Status::Cancelled;
+    }
     // A sentence for a user: "drive refused: data invalid", "no answer from the drive after 4
     // attempts (timeout 60 ms)".
     QString message(Language language = Language::English) const;

@@ -241,8 +241,10 @@ struct Telegram {
 
     bool isResponse() const { return direction == Direction::Response; }
     bool isWrite() const { return access == Access::Write; }
-    template<typename T> const T *as() const { return std::get_if<T>(&data); }
-    template<typename T> T *as() { return std::get_if<T>(&data); }
+    // No pointer into a temporary telegram: it would dangle when the statement ends.
+    template<typename T> const T *as() const & { return std::get_if<T>(&data); }
+    template<typename T> T *as() & { return std::get_if<T>(&data); }
+    template<typename T> const T *as() const && = delete;
     bool operator==(const Telegram &) const = default;
 
     static Telegram request(Service service, Access access, ServiceData data);

@@ -118,6 +118,13 @@ inline QList<Service> sentServices(const QList<TrafficRecord> &records, const Pr
     return services;
 }
 
+// The value a read answered, or -1 when it did not answer with one (the test then fails on it).
+inline qint32 valueOf(const Reply &reply)
+{
+    const auto *value = reply.data<ParameterValue>();
+    return value ? value->value : -1;
+}
+
 inline QString describeReply(const Reply &reply)
 {
     return QStringLiteral("%1: %2").arg(statusName(reply.status), reply.message());

@@ -60,7 +60,7 @@ private slots:
         const Reply onTwo = s.request(Service::ParameterValue, Access::Read,
                                       ParameterValue{kMaxSpeedForward, 1, 0}, 2);
         QCOMPARE(onTwo.data<ParameterValue>()->value, 1234);
-        QCOMPARE(s.call(s.client->readValue(kMaxSpeedForward, 1)).data<ParameterValue>()->value,
+        QCOMPARE(valueOf(s.call(s.client->readValue(kMaxSpeedForward, 1))),
                  kMaxSpeedDefault);
     }
 
@@ -154,14 +154,13 @@ private slots:
         const Reply group = s.request(Service::ParameterValue, Access::Write,
                                       ParameterValue{kMaxSpeedForward, 1, 1111}, 0xF0);
         QCOMPARE(group.status, Reply::Status::NoReply);
-        const auto valueOf = [&s](int drive) {
-            return s.request(Service::ParameterValue, Access::Read,
-                             ParameterValue{kMaxSpeedForward, 1, 0}, drive)
-                .data<ParameterValue>()->value;
+        const auto valueOn = [&s](int drive) {
+            return valueOf(s.request(Service::ParameterValue, Access::Read,
+                                     ParameterValue{kMaxSpeedForward, 1, 0}, drive));
         };
-        QCOMPARE(valueOf(1), 1111);
-        QCOMPARE(valueOf(5), 1111);
-        QCOMPARE(valueOf(17), 2222);
+        QCOMPARE(valueOn(1), 1111);
+        QCOMPARE(valueOn(5), 1111);
+        QCOMPARE(valueOn(17), 2222);
     }
 
     void readsFromGroupsAreRefusedBeforeSending()

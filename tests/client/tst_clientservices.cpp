@@ -250,7 +250,7 @@ private slots:
 
         const Reply reset = s.call(s.client->resetToDefault(kMotorVoltage, 0x01));
         QVERIFY2(reset.ok(), qPrintable(describeReply(reset)));
-        QCOMPARE(s.call(s.client->readValue(kMotorVoltage, 0x01)).data<ParameterValue>()->value,
+        QCOMPARE(valueOf(s.call(s.client->readValue(kMotorVoltage, 0x01))),
                  400);
     }
 

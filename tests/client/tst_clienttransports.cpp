@@ -58,7 +58,7 @@ void checkRoundTrips(const Session &s)
     QVERIFY2(read.ok(), qPrintable(describeReply(read)));
     QCOMPARE(read.data<ParameterValue>()->value, kMaxSpeedDefault);
     QVERIFY(s.call(s.client->writeValue(kMaxSpeedForward, 2750, 1)).ok());
-    QCOMPARE(s.call(s.client->readValue(kMaxSpeedForward, 1)).data<ParameterValue>()->value, 2750);
+    QCOMPARE(valueOf(s.call(s.client->readValue(kMaxSpeedForward, 1))), 2750);
     const Reply name = s.request(Service::ParameterName, Access::Read,
                                  NameData{kMaxSpeedForward, 0, {}});
     QCOMPARE(name.data<NameData>()->text, QByteArrayLiteral("Maximum speed forward"));

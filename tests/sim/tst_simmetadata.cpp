@@ -184,10 +184,8 @@ private slots:
         // uF.07 keeps the facts: 0.0..130.0 %, default 70.0 %.
         r = drive.respond(read(Service::Limits, ParameterLimits { 0x0507 }), 0);
         QCOMPARE(r.as<ParameterLimits>()->upper, 1300);
-        QCOMPARE(drive.respond(read(Service::DefaultValue, DefaultValue { 0x0507 }), 0)
-                     .as<DefaultValue>()
-                     ->value,
-                 700);
+        r = drive.respond(read(Service::DefaultValue, DefaultValue { 0x0507 }), 0);
+        QCOMPARE(r.as<DefaultValue>()->value, 700);
 
         // ru.03: read-only, 0.0125 Hz per bit, signed.
         r = drive.respond(read(Service::Properties, PropertiesData { kActualFrequency }), 0);
@@ -412,10 +410,8 @@ private slots:
             const Telegram r = drive.respond(write(s, data), 0);
             QVERIFY2(r.ack == Ack::ServiceNotAvailable, qPrintable(serviceName(s)));
         }
-        QCOMPARE(drive.respond(read(Service::Limits, ParameterLimits { 0x031C }), 0)
-                     .as<ParameterLimits>()
-                     ->upper,
-                 30000);
+        const Telegram limits = drive.respond(read(Service::Limits, ParameterLimits { 0x031C }), 0);
+        QCOMPARE(limits.as<ParameterLimits>()->upper, 30000);
     }
 
     void identifiesAsSimulatedDrive()
