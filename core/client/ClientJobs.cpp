@@ -84,4 +84,24 @@ void ClientWorker::scan(const ScanOptions &options,
     scanner->start();
 }
 
+void ClientWorker::runJob(std::shared_ptr<RequestJobBase> job)
+{
+    auto sink = std::make_shared<OwnedSink>(*this);
+    auto *watcher = new QFutureWatcher<void>(this);
+    const std::weak_ptr<RequestJobBase> weak = job;
+    connect(watcher, &QFutureWatcherBase::canceled, this, [weak] {
+        if (const auto running = weak.lock())
+            running->cancel();
+    });
+    watcher->setFuture(job->untypedFuture());
+    RequestJobBase *const raw = job.get();
+    raw->begin(*sink, [this, job, sink, watcher]() mutable {
+        watcher->deleteLater();
+        // The job may still be on its own stack (it ended from a reply's callback): release it
+        // once that has unwound.
+        QMetaObject::invokeMethod(
+            this, [job = std::move(job), sink = std::move(sink)] {}, Qt::QueuedConnection);
+    });
+}
+
 } // namespace DriveDesk

@@ -49,6 +49,8 @@ public:
     void findDrives(int first, int last, quint16 probeAddress,
                     std::shared_ptr<QPromise<QList<int>>> promise);
     void scan(const ScanOptions &options, std::shared_ptr<QPromise<DriveDescription>> promise);
+    // A job of many requests on a sink of its own, so that its cancel drops only its requests.
+    void runJob(std::shared_ptr<RequestJobBase> job);
 
     // For jobs in this thread. Returns the request's ticket; `done` may run before it returns
     // (a request that cannot be sent, or no connection).

@@ -1,6 +1,7 @@
 #include "DriveClient.h"
 
 #include "ClientWorker.h"
+#include "ValueRequests.h"
 
 #include <QThread>
 
@@ -88,41 +89,39 @@ QFuture<Reply> DriveClient::send(const Telegram &request)
 
 QFuture<Reply> DriveClient::readValue(quint16 address, quint8 setMask)
 {
-    return send(Telegram::request(Service::ParameterValue, Access::Read,
-                                  ParameterValue{address, setMask, 0}));
+    return send(ValueRequests::read(address, setMask));
 }
 
 QFuture<Reply> DriveClient::writeValue(quint16 address, qint32 value, quint8 setMask)
 {
-    return send(Telegram::request(Service::ParameterValue, Access::Write,
-                                  ParameterValue{address, setMask, value}));
+    return send(ValueRequests::write(address, value, setMask));
 }
 
 QFuture<Reply> DriveClient::readValueStandard(quint16 address, quint8 set)
 {
-    const Service service = m_settings.protocol == Protocol::Din66019
-                                ? Service::Legacy
-                                : Service::ParameterValueStandard;
-    return send(Telegram::request(service, Access::Read, ParameterValue{address, set, 0}));
+    return send(ValueRequests::readStandard(m_settings.protocol, address, set));
 }
 
 QFuture<Reply> DriveClient::writeValueStandard(quint16 address, qint32 value, quint8 set)
 {
-    const Service service = m_settings.protocol == Protocol::Din66019
-                                ? Service::Legacy
-                                : Service::ParameterValueStandard;
-    return send(Telegram::request(service, Access::Write, ParameterValue{address, set, value}));
+    return send(ValueRequests::writeStandard(m_settings.protocol, address, value, set));
 }
 
 QFuture<Reply> DriveClient::resetToDefault(quint16 address, quint8 setMask)
 {
-    return send(Telegram::request(Service::CheckDefault, Access::Write,
-                                  DefaultCheckData{address, setMask}));
+    return send(ValueRequests::resetToDefault(address, setMask));
 }
 
 QFuture<Reply> DriveClient::readScope()
 {
     return send(Telegram::request(Service::Scope, Access::Read, ScopeData{}));
+}
+
+void DriveClient::start(std::shared_ptr<RequestJobBase> job)
+{
+    ClientWorker *worker = m_worker;
+    QMetaObject::invokeMethod(
+        worker, [worker, job = std::move(job)] { worker->runJob(job); }, Qt::QueuedConnection);
 }
 
 QFuture<QList<int>> DriveClient::findDrives(int first, int last, quint16 probeAddress)

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "client/Reply.h"
+#include "client/RequestJob.h"
 #include "link/ConnectionSettings.h"
 #include "link/Link.h"
 #include "parameters/DriveDescription.h"
@@ -86,6 +87,16 @@ public:
     // Discovers groups, parameters, metadata and values. Progress in 0..1000; cancellable.
     QFuture<DriveDescription> scan(ScanOptions options = {});
 
+    // Runs a job of many requests in the client's thread, on the client's queue, and returns
+    // its future. Cancelling the future stops the job.
+    template<typename Job>
+    QFuture<typename Job::ResultType> run(std::shared_ptr<Job> job)
+    {
+        QFuture<typename Job::ResultType> future = job->future();
+        start(std::move(job));
+        return future;
+    }
+
     // Drops every queued and in-flight request (they finish as Cancelled).
     void cancelAll();
 
@@ -98,6 +109,7 @@ signals:
 
 private:
     void setState(State state);
+    void start(std::shared_ptr<RequestJobBase> job);
 
     ConnectionSettings m_settings;
     ClientOptions m_options;

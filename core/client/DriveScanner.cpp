@@ -12,10 +12,6 @@ namespace DriveDesk {
 
 namespace {
 
-// Requests handed to the sink at once: enough for it to keep 4 in flight (HSP5) and have the
-// next ones ready, few enough that a cancel or a refusal reaches the plan quickly.
-constexpr int kSubmitWindow = 8;
-
 // Service 13 function 1: the device identification text.
 constexpr quint8 kIdentifyFunction = 1;
 
@@ -116,7 +112,7 @@ void DriveScanner::submitQueued()
         return;
     m_submitting = true;
     const QPointer<DriveScanner> self(this);
-    while (!m_finished && m_submitted < kSubmitWindow && !m_queue.empty()) {
+    while (!m_finished && m_submitted < kJobRequestWindow && !m_queue.empty()) {
         QueuedRequest next = std::move(m_queue.front());
         m_queue.pop_front();
         ++m_submitted;

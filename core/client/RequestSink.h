@@ -6,6 +6,11 @@
 
 namespace DriveDesk {
 
+// How many requests a job keeps on the client's queue at a time: enough to keep the drive's
+// four HSP5 requests on the wire, few enough that a write the user asks for meanwhile is not
+// stuck behind hundreds of a job's reads.
+inline constexpr int kJobRequestWindow = 8;
+
 // Where the drive scan and other multi-step jobs put their requests. The client worker is
 // one; a test can put a simulated drive behind another.
 // Thread: submit() and `done` both run in the sink's thread.
