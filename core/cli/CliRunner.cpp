@@ -9,6 +9,7 @@
 #include "parameters/ParameterFormat.h"
 #include "parameters/ParameterId.h"
 #include "parameters/ParameterProperties.h"
+#include "session/ValueChange.h"
 
 #include <QFutureWatcher>
 
@@ -246,6 +247,8 @@ void CliRunner::runWrite()
 {
     lookUpParameter([this](const GroupDescription &group, const ParameterDescription &parameter) {
         const QString id = parameterId(group.id, parameter.number());
+        if (ParameterProperties(parameter.properties1, parameter.properties2).isReadOnly())
+            return fail(2, QStringLiteral("%1 is read-only; nothing was written").arg(id));
         // The window's rule: a plaintext or a number in display units (or a raw integer with
         // --raw), refused when it cannot be held exactly or lies outside the limits.
         const ParameterFormat display(parameter);
@@ -254,46 +257,55 @@ void CliRunner::runWrite()
         const std::optional<qint32> raw = format.parse(m_request.value, &error);
         if (!raw)
             return fail(2, QStringLiteral("%1: %2; nothing was written").arg(id, error));
-        const quint8 mask = m_request.setMask;
-        QFuture<Reply> reply = mask ? m_client->writeValue(parameter.address, *raw, mask)
-                                    : m_client->writeValueStandard(parameter.address, *raw, 0);
-        reply.then(this, [this, id, parameter, mask](const Reply &r) {
-            if (!r.ok())
-                return fail(1, QStringLiteral("%1: %2").arg(id, r.message(language())));
-            readBack(parameter, mask);
+        ValueChange change;
+        change.address = parameter.address;
+        change.setProgrammable = parameter.isSetProgrammable();
+        change.steps = {WriteStep{m_request.setMask, *raw, false}};
+        const auto job = std::make_shared<WriteValueJob>(m_request.connection.protocol, change);
+        m_client->run(job).then(this, [this, id, parameter, raw = *raw](const WriteOutcome &outcome) {
+            report(id, parameter, raw, outcome);
         });
     });
 }
 
-// A write counts only once the drive shows the value: read every written set back.
-void CliRunner::readBack(const ParameterDescription &parameter, quint8 setMask)
+// A write counts only once the drive shows the value: the job read every written set back.
+void CliRunner::report(const QString &id, const ParameterDescription &parameter, qint32 raw,
+                       const WriteOutcome &outcome)
 {
-    const QString id = m_request.parameter;
-    QList<QFuture<Reply>> reads;
-    if (setMask == 0) {
-        reads << m_client->readValueStandard(parameter.address, 0);
-    } else {
-        for (int s = 0; s < kParameterSets; ++s) {
-            if (setMask & (1u << s))
-                reads << m_client->readValue(parameter.address, quint8(1u << s));
+    if (!outcome.anyAcknowledged())
+        return fail(1, QStringLiteral("%1: %2").arg(id, outcome.error));
+    if (!outcome.readBackError.isEmpty()) {
+        return fail(1, QStringLiteral("%1: written, but reading it back failed: %2")
+                           .arg(id, outcome.readBackError));
+    }
+    QStringList shown;
+    QStringList differing;
+    for (int set = 0; set < kParameterSets; ++set) {
+        const std::optional<qint32> held = outcome.readBack[std::size_t(set)];
+        if (!held)
+            continue;
+        shown << valueText(parameter, *held);
+        if (*held != raw) {
+            differing << QStringLiteral("%1 holds %2")
+                             .arg(outcome.activeSetAcknowledged ? QStringLiteral("the active set")
+                                                                : setListText(quint8(1u << set)),
+                                  valueText(parameter, *held));
         }
     }
-    QtFuture::whenAll(reads.begin(), reads.end())
-        .then(this, [this, id, parameter, setMask](const QList<QFuture<Reply>> &results) {
-            QStringList shown;
-            for (const QFuture<Reply> &future : results) {
-                const Reply r = future.result();
-                if (!r.ok())
-                    return fail(1, QStringLiteral("%1: written, but reading it back failed: %2")
-                                       .arg(id, r.message(language())));
-                shown << valueText(parameter, r.data<ParameterValue>()->value);
-            }
-            shown.removeDuplicates();
-            m_out << QStringLiteral("%1  %2 = %3  (%4)\n")
-                         .arg(id, parameter.name, shown.join(QStringLiteral(" / ")),
-                              setMask ? setListText(setMask) : QStringLiteral("active set"));
-            done();
-        });
+    shown.removeDuplicates();
+    const quint8 mask = outcome.acknowledgedMask;
+    m_out << QStringLiteral("%1  %2 = %3  (%4)\n")
+                 .arg(id, parameter.name, shown.join(QStringLiteral(" / ")),
+                      mask ? setListText(mask) : QStringLiteral("active set"));
+    if (!outcome.error.isEmpty()) {
+        return fail(1, QStringLiteral("%1: not written to %2: %3")
+                           .arg(id, setListText(outcome.refusedMask), outcome.error));
+    }
+    if (!differing.isEmpty()) {
+        return fail(1, QStringLiteral("%1: written %2, but %3")
+                           .arg(id, valueText(parameter, raw), differing.join(QStringLiteral(", "))));
+    }
+    done();
 }
 
 QString CliRunner::valueText(const ParameterDescription &parameter, qint32 raw) const

@@ -10,6 +10,8 @@
 
 namespace DriveDesk {
 
+struct WriteOutcome;
+
 // Runs one drivedesk-cli command against a drive: connects, does the work asynchronously
 // through the client, prints the result, and ends with finished(exit code).
 // Exit codes: 0 done, 1 the drive refused or the work could not be completed,
@@ -35,7 +37,8 @@ private:
     void runLegacy();
     // Finds the parameter named on the command line and reads its metadata, then calls next.
     void lookUpParameter(std::function<void(const GroupDescription &, const ParameterDescription &)> next);
-    void readBack(const ParameterDescription &parameter, quint8 setMask);
+    void report(const QString &id, const ParameterDescription &parameter, qint32 raw,
+                const WriteOutcome &outcome);
     // Scans with progress on stderr and hands the result to done.
     // Metadata of a cached kind of drive comes from the cache unless --no-cache.
     void scan(ScanOptions options, std::function<void(const DriveDescription &)> done);

@@ -219,13 +219,19 @@ private slots:
 
     void theDrivesRefusalIsPrintedInWords()
     {
-        Run run = sim({QStringLiteral("write"), QStringLiteral("ru.03"), QStringLiteral("--raw"), QStringLiteral("0")});
+        // cn.00 is written at the Drive mode level; the drive starts at Application.
+        const Run run = sim({QStringLiteral("write"), QStringLiteral("cn.00"), QStringLiteral("--raw"),
+                             QStringLiteral("1")});
         QCOMPARE(run.exitCode, 1);
-        QVERIFY2(run.err.contains(QStringLiteral("write protected")), qPrintable(run.err));
-        run = sim({QStringLiteral("--language"), QStringLiteral("de"), QStringLiteral("write"),
-                   QStringLiteral("ru.03"), QStringLiteral("--raw"), QStringLiteral("0")});
-        QCOMPARE(run.exitCode, 1);
-        QVERIFY2(run.err.contains(QStringLiteral("schreibgeschützt")), qPrintable(run.err));
+        QVERIFY2(run.err.contains(QStringLiteral("address or password invalid")), qPrintable(run.err));
+    }
+
+    void readOnlyIsRefusedBeforeAnythingIsSent()
+    {
+        const Run run = sim({QStringLiteral("write"), QStringLiteral("ru.03"), QStringLiteral("--raw"),
+                             QStringLiteral("0")});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(QStringLiteral("ru.03 is read-only")), qPrintable(run.err));
     }
 
     void germanTextsComeFromTheDrive()

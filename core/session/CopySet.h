@@ -1,0 +1,48 @@
+#pragma once
+
+#include "client/RequestJob.h"
+#include "parameters/DriveDescription.h"
+#include "parameters/PasswordLevel.h"
+#include "session/ValueChange.h"
+
+#include <QList>
+
+namespace DriveDesk {
+
+// What copying one parameter set to another writes, worked out from the values known.
+struct CopySetPlan
+{
+    struct Item
+    {
+        quint16 address = 0;
+        qint32 raw = 0; // the source set's value
+    };
+
+    int from = 0;
+    int to = 0;
+    QList<Item> items; // the set-programmable values that differ, in the drive's order
+    int locked = 0;    // differ, but read-only or above the password level in force
+    int unknown = 0;   // the source set's value was never read
+};
+
+CopySetPlan planCopySet(const DriveDescription &drive, int from, int to, PasswordLevel level);
+
+// Writes a plan's items to the target set one after the other, each read back; result i is
+// the outcome of items[i]. A lost connection stops the job. requestStop() sends nothing more
+// and still reports the write on its way, so that every item without a result was never
+// written.
+class CopySetJob : public RequestJob<WriteOutcome>
+{
+public:
+    CopySetJob(Protocol protocol, CopySetPlan plan);
+
+private:
+    void start() override;
+    void writeNext();
+
+    const Protocol m_protocol;
+    const CopySetPlan m_plan;
+    qsizetype m_next = 0;
+};
+
+} // namespace DriveDesk

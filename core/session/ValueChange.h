@@ -1,0 +1,72 @@
+#pragma once
+
+#include "client/RequestJob.h"
+#include "protocol/Codec.h"
+#include "parameters/DriveDescription.h"
+
+#include <QList>
+#include <QString>
+
+#include <array>
+#include <functional>
+#include <optional>
+
+namespace DriveDesk {
+
+// One step of a change to a parameter: one value written to the sets of a mask (service 0), or
+// those sets reset to their default (service 32). Set mask 0 writes the active set (service 1,
+// set 0); a reset always names its sets.
+struct WriteStep
+{
+    quint8 setMask = 0;
+    qint32 raw = 0; // not used by a reset
+    bool reset = false;
+};
+
+// A change of one parameter's values: its steps, written in order.
+struct ValueChange
+{
+    quint16 address = 0;
+    // Not set-programmable: the drive holds one value, written as set 0 (mask 01h) whatever the
+    // steps' masks say.
+    bool setProgrammable = true;
+    QList<WriteStep> steps;
+};
+
+// What became of a change. A change counts once the drive shows the value: every set it
+// acknowledged is read back.
+struct WriteOutcome
+{
+    quint16 address = 0;
+    quint8 acknowledgedMask = 0; // sets whose write the drive acknowledged
+    quint8 refusedMask = 0;      // sets whose write was refused or never answered
+    bool activeSetAcknowledged = false; // a step with set mask 0
+    QString error;               // the first refusal or transport failure, in words
+    bool connectionFailed = false; // no answer at all: later requests will fail alike
+    QString readBackError;       // acknowledged, but the value could not be read back
+    // What the drive holds after the change, per set read back ([0] for the active set).
+    std::array<std::optional<qint32>, kParameterSets> readBack{};
+
+    bool ok() const { return refusedMask == 0 && error.isEmpty(); }
+    bool anyAcknowledged() const { return acknowledgedMask != 0 || activeSetAcknowledged; }
+};
+
+// Sends the change's steps one after the other on `sink`, then reads back every set the drive
+// acknowledged; `done` runs once with the outcome. Thread: the sink's.
+void sendValueChange(RequestSink &sink, Protocol protocol, ValueChange change,
+                     std::function<void(const WriteOutcome &)> done);
+
+// One change as a job of its own: the window's edits, undo and redo, the command line's write.
+class WriteValueJob : public RequestJob<WriteOutcome>
+{
+public:
+    WriteValueJob(Protocol protocol, ValueChange change);
+
+private:
+    void start() override;
+
+    const Protocol m_protocol;
+    const ValueChange m_change;
+};
+
+} // namespace DriveDesk
