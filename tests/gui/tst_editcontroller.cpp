@@ -263,12 +263,21 @@ private slots:
 
     void cancelledCopyKeepsWhatWasWrittenUndoable()
     {
+        // Replies that take their time, so that the cancel comes while the first write is on
+        // its way: the write the drive took is reported and undoable, the next is not sent.
+        cleanup();
+        m_drive = std::make_unique<SimulatedDrive>(20000);
+        QVERIFY(m_drive->start({kMaxSpeedForward >> 8}));
+        m_editor = std::make_unique<EditController>(&m_drive->client, &m_drive->model,
+                                                    &m_drive->undoStack);
+        m_messages = std::make_unique<QSignalSpy>(m_editor.get(), &EditController::message);
         QVERIFY(m_drive->model.requestWrite(kMaxSpeedForward, 0x01, 1111));
         QVERIFY(m_drive->model.requestWrite(kFixedSpeed1, 0x01, -222));
         QTRY_COMPARE_WITH_TIMEOUT(m_drive->undoStack.count(), 2, kWaitMs);
+        QTRY_VERIFY_WITH_TIMEOUT(!m_editor->isBusy(), kWaitMs);
 
-        connect(m_editor.get(), &EditController::progress, this, [this](int done, int) {
-            if (done == 1)
+        connect(&m_drive->client, &DriveClient::traffic, this, [this](const TrafficRecord &record) {
+            if (record.kind == TrafficRecord::Kind::Sent && m_editor->isBusy())
                 m_editor->cancel();
         });
         m_editor->copySet(0, 6);
@@ -277,9 +286,12 @@ private slots:
         QCOMPARE(m_drive->undoStack.command(2)->childCount(), 1);
         const QString said = m_messages->constLast().at(0).toString();
         QVERIFY2(said.contains(QStringLiteral("cancelled")), qPrintable(said));
-        // op.11 comes before op.20: only it was copied.
+        // op.11 comes before op.20: only it was copied, and the window shows what the drive holds.
         QCOMPARE(m_drive->driveValue(kMaxSpeedForward, 6), 1111);
         QCOMPARE(m_drive->driveValue(kFixedSpeed1, 6), 100);
+        QCOMPARE(m_drive->model.value(kFixedSpeed1, 6), 100);
+        QCOMPARE(m_drive->state(kFixedSpeed1, 6), EditState::None);
+        QCOMPARE(m_drive->state(kMaxSpeedForward, 6), EditState::Written);
 
         m_drive->undoStack.undo();
         QTRY_VERIFY_WITH_TIMEOUT(!m_editor->isBusy(), kWaitMs);

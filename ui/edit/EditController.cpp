@@ -38,7 +38,7 @@ void EditController::write(quint16 address, quint8 setMask, qint32 raw)
         return;
     }
     m_writer->apply(address, { WriteStep { setMask, raw, false } },
-                    [this, setMask, raw](const WriteOutcome &outcome) {
+                    [this, setMask, raw](const EditOutcome &outcome) {
                         changeDone(WriteValueCommand::Kind::Write, setMask, raw, outcome);
                     });
 }
@@ -59,14 +59,14 @@ void EditController::resetToDefault(quint16 address, quint8 setMask)
     }
     const qint32 defaultValue = parameter->defaultValue;
     m_writer->apply(address, { WriteStep { setMask, 0, true } },
-                    [this, setMask, defaultValue](const WriteOutcome &outcome) {
+                    [this, setMask, defaultValue](const EditOutcome &outcome) {
                         changeDone(WriteValueCommand::Kind::ResetToDefault, setMask, defaultValue,
                                    outcome);
                     });
 }
 
 void EditController::changeDone(WriteValueCommand::Kind kind, quint8 setMask, qint32 raw,
-                                const WriteOutcome &outcome)
+                                const EditOutcome &outcome)
 {
     const quint16 address = outcome.address;
     const bool reset = kind == WriteValueCommand::Kind::ResetToDefault;
@@ -111,13 +111,13 @@ void EditController::perform(WriteValueCommand *command, Direction direction)
         return;
     m_writer->apply(
         address, steps,
-        [this, command, alive = command->lifeToken(), direction](const WriteOutcome &outcome) {
+        [this, command, alive = command->lifeToken(), direction](const EditOutcome &outcome) {
             performed(command, alive, direction, outcome);
         });
 }
 
 void EditController::performed(WriteValueCommand *command, const std::weak_ptr<const int> &alive,
-                               Direction direction, const WriteOutcome &outcome)
+                               Direction direction, const EditOutcome &outcome)
 {
     const bool undo = direction == Direction::Undo;
     const QString what = alive.expired() ? idOf(outcome.address) : command->text();

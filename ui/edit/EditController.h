@@ -4,6 +4,9 @@
 #include "ValueWriter.h"
 #include "WriteValueCommand.h"
 
+#include "session/CopySet.h"
+
+#include <QFutureWatcher>
 #include <QHash>
 #include <QObject>
 #include <QPointer>
@@ -59,36 +62,29 @@ signals:
 
 private:
     friend class WriteValueCommand;
-    // copySet() while it runs.
+    // copySet() while its job runs in the client's thread.
     struct CopyJob
     {
-        struct Item
-        {
-            quint16 address = 0;
-            qint32 raw = 0;
-        };
-
-        int from = 0;
-        int to = 0;
-        QList<Item> items;
-        qsizetype next = 0;
+        CopySetPlan plan;
+        std::shared_ptr<CopySetJob> job;
+        QList<WriteValueCommand::Values> before; // per item: the target set's value, for undo
+        QFutureWatcher<WriteOutcome> watcher;
+        int reported = 0; // outcomes taken from the job
         std::unique_ptr<QUndoCommand> macro; // the values written, one step on the stack
         int written = 0;
         QStringList refusals;
         QString stopReason;
         bool cancelled = false;
-        int locked = 0; // differing, but read-only or above the level in force
-        int unknown = 0; // the source set's value was never read
     };
 
     // Undo or redo of a command on the stack: to the drive and back.
     void perform(WriteValueCommand *command, Direction direction);
     void performed(WriteValueCommand *command, const std::weak_ptr<const int> &alive,
-                   Direction direction, const WriteOutcome &outcome);
+                   Direction direction, const EditOutcome &outcome);
     void changeDone(WriteValueCommand::Kind kind, quint8 setMask, qint32 raw,
-                    const WriteOutcome &outcome);
+                    const EditOutcome &outcome);
 
-    void copyNext();
+    void copyTake(int begin, int end);
     void copyFinished();
     void refreshFinished();
     bool refuseWhileJobRuns();

@@ -1,6 +1,7 @@
 // The EditController's long jobs: copying one set to another and re-reading every value.
 #include "EditController.h"
 
+#include "client/DriveClient.h"
 #include "model/ParameterModel.h"
 
 #include <QUndoStack>
@@ -10,7 +11,7 @@ namespace DriveDesk {
 bool EditController::refuseWhileJobRuns()
 {
     if (m_copy) {
-        emit message(tr("Still copying set %1 to set %2").arg(m_copy->from).arg(m_copy->to));
+        emit message(tr("Still copying set %1 to set %2").arg(m_copy->plan.from).arg(m_copy->plan.to));
         return true;
     }
     if (m_refresh) {
@@ -36,64 +37,49 @@ void EditController::copySet(int fromSet, int toSet)
     if (refuseWhileJobRuns())
         return;
     auto job = std::make_unique<CopyJob>();
-    job->from = fromSet;
-    job->to = toSet;
-    const DriveDescription drive = m_model->description();
-    for (const GroupDescription &group : drive.groups) {
-        for (const ParameterDescription &parameter : group.parameters) {
-            if (!parameter.isSetProgrammable())
-                continue;
-            const std::optional<qint32> source = parameter.values[std::size_t(fromSet)];
-            if (!source) {
-                ++job->unknown;
-                continue;
-            }
-            if (parameter.values[std::size_t(toSet)] == source)
-                continue;
-            if (!m_model->isEditable(parameter.address)) {
-                ++job->locked;
-                continue;
-            }
-            job->items << CopyJob::Item { parameter.address, *source };
-        }
-    }
+    job->plan = planCopySet(m_model->description(), fromSet, toSet, m_model->passwordLevel());
     job->macro
         = std::make_unique<QUndoCommand>(tr("Copy set %1 to set %2").arg(fromSet).arg(toSet));
+    for (const CopySetPlan::Item &item : std::as_const(job->plan.items)) {
+        WriteValueCommand::Values before{};
+        before[std::size_t(toSet)] = m_model->value(item.address, toSet);
+        job->before << before;
+        m_model->markPending(item.address, quint8(1u << toSet), item.raw);
+    }
+    connect(&job->watcher, &QFutureWatcherBase::resultsReadyAt, this, &EditController::copyTake);
+    connect(&job->watcher, &QFutureWatcherBase::progressValueChanged, this,
+            [this](int done) { emit progress(done, int(m_copy->plan.items.size())); });
+    connect(&job->watcher, &QFutureWatcherBase::finished, this, &EditController::copyFinished);
     m_copy = std::move(job);
     updateBusy();
-    emit progress(0, int(m_copy->items.size()));
-    copyNext();
+    emit progress(0, int(m_copy->plan.items.size()));
+    m_copy->job = std::make_shared<CopySetJob>(m_client->settings().protocol, m_copy->plan);
+    m_copy->watcher.setFuture(m_client->run(m_copy->job));
 }
 
-void EditController::copyNext()
+void EditController::copyTake(int begin, int end)
 {
-    CopyJob &job = *m_copy;
-    if (job.cancelled || !job.stopReason.isEmpty() || job.next >= job.items.size()) {
-        copyFinished();
-        return;
+    CopyJob &copy = *m_copy;
+    const QFuture<WriteOutcome> future = copy.watcher.future();
+    for (int index = begin; index < end; ++index) {
+        const WriteOutcome outcome = future.resultAt(index);
+        const CopySetPlan::Item &item = copy.plan.items.at(index);
+        ++copy.reported;
+        showOutcome(*m_model, outcome);
+        if (outcome.acknowledgedMask) {
+            new WriteValueCommand(this, WriteValueCommand::Kind::Write, item.address,
+                                  outcome.acknowledgedMask, item.raw, copy.before.at(index),
+                                  tr("Write %1 = %2%3")
+                                      .arg(idOf(item.address), valueText(item.address, item.raw),
+                                           inSets(item.address, outcome.acknowledgedMask)),
+                                  copy.macro.get());
+            ++copy.written;
+        } else if (outcome.connectionFailed) {
+            copy.stopReason = outcome.error;
+        } else {
+            copy.refusals << tr("%1: %2").arg(idOf(item.address), outcome.error);
+        }
     }
-    const CopyJob::Item item = job.items.at(job.next++);
-    const quint8 mask = quint8(1u << job.to);
-    m_writer->apply(item.address, { WriteStep { mask, item.raw, false } },
-                    [this, item](const WriteOutcome &outcome) {
-                        CopyJob &copy = *m_copy;
-                        if (outcome.acknowledgedMask) {
-                            new WriteValueCommand(
-                                this, WriteValueCommand::Kind::Write, item.address,
-                                outcome.acknowledgedMask, item.raw, outcome.before,
-                                tr("Write %1 = %2%3")
-                                    .arg(idOf(item.address), valueText(item.address, item.raw),
-                                         inSets(item.address, outcome.acknowledgedMask)),
-                                copy.macro.get());
-                            ++copy.written;
-                        } else if (outcome.connectionFailed) {
-                            copy.stopReason = outcome.error;
-                        } else {
-                            copy.refusals << tr("%1: %2").arg(idOf(item.address), outcome.error);
-                        }
-                        emit progress(int(copy.next), int(copy.items.size()));
-                        copyNext();
-                    });
 }
 
 void EditController::copyFinished()
@@ -101,14 +87,22 @@ void EditController::copyFinished()
     const std::unique_ptr<CopyJob> job = std::move(m_copy);
     if (job->macro->childCount() > 0)
         m_undoStack->push(job->macro.release());
+    // An item without an outcome was never sent: its cell shows again what it held.
+    for (qsizetype index = 0; index < job->plan.items.size(); ++index) {
+        if (!job->watcher.future().isResultReadyAt(int(index)))
+            m_model->clearEditState(job->plan.items.at(index).address, quint8(1u << job->plan.to));
+    }
 
+    const int from = job->plan.from;
+    const int to = job->plan.to;
+    const int notCopied = int(job->plan.items.size()) - job->reported;
     QStringList parts;
-    if (job->items.isEmpty()) {
-        parts << tr("Set %2 holds the values of set %1 already").arg(job->from).arg(job->to);
+    if (job->plan.items.isEmpty()) {
+        parts << tr("Set %2 holds the values of set %1 already").arg(from).arg(to);
     } else {
         parts << tr("Set %1 copied to set %2: %n value(s) written", nullptr, job->written)
-                     .arg(job->from)
-                     .arg(job->to);
+                     .arg(from)
+                     .arg(to);
     }
     if (!job->refusals.isEmpty()) {
         parts << tr("%n refused (%1)", nullptr, int(job->refusals.size()))
@@ -116,17 +110,16 @@ void EditController::copyFinished()
     }
     if (!job->stopReason.isEmpty())
         parts << tr("stopped: %1").arg(job->stopReason);
-    else if (job->cancelled && job->next < job->items.size())
-        parts << tr("cancelled, %n value(s) not copied", nullptr,
-                    int(job->items.size() - job->next));
-    if (job->locked > 0) {
+    else if (job->cancelled && notCopied > 0)
+        parts << tr("cancelled, %n value(s) not copied", nullptr, notCopied);
+    if (job->plan.locked > 0) {
         parts << tr("%n parameter(s) left as they are: read-only or above the password level",
-                    nullptr, job->locked);
+                    nullptr, job->plan.locked);
     }
-    if (job->unknown > 0)
+    if (job->plan.unknown > 0)
         parts << tr("%n parameter(s) left out: the value in set %1 was never read", nullptr,
-                    job->unknown)
-                     .arg(job->from);
+                    job->plan.unknown)
+                     .arg(from);
     emit message(parts.join(QStringLiteral("; ")));
     updateBusy();
 }
@@ -135,15 +128,8 @@ void EditController::refresh()
 {
     if (refuseWhileJobRuns())
         return;
-    QList<ValueRead> reads;
-    const PasswordLevel level = m_model->passwordLevel();
-    const DriveDescription drive = m_model->description();
-    for (const GroupDescription &group : drive.groups) {
-        for (const ParameterDescription &parameter : group.parameters) {
-            if (isReadable(parameter, level))
-                reads << valueReadsOf(parameter);
-        }
-    }
+    const QList<ValueRead> reads
+        = readableValues(m_model->description(), m_model->passwordLevel());
     m_refresh = new ValueReadBatch(m_client, m_model, reads, this);
     connect(m_refresh, &ValueReadBatch::progress, this, &EditController::progress);
     connect(m_refresh, &ValueReadBatch::finished, this, &EditController::refreshFinished);
@@ -179,8 +165,12 @@ void EditController::refreshFinished()
 
 void EditController::cancel()
 {
-    if (m_copy)
+    if (m_copy) {
+        // Stopped, not cancelled: the write on its way is still reported, so that what the
+        // drive took reaches the undo history.
         m_copy->cancelled = true;
+        m_copy->job->requestStop();
+    }
     if (m_refresh)
         m_refresh->cancel();
 }

@@ -74,11 +74,7 @@ QList<ValueRead> PollingController::groupReads()
     const GroupDescription *group = drive.findGroup(m_group);
     if (!group)
         return m_reads;
-    const PasswordLevel level = m_model->passwordLevel();
-    for (const ParameterDescription &parameter : group->parameters) {
-        if (isReadable(parameter, level))
-            m_reads << valueReadsOf(parameter);
-    }
+    m_reads = readableValues(*group, m_model->passwordLevel());
     return m_reads;
 }
 

@@ -29,12 +29,4 @@ void whenReplied(QObject *owner, const QFuture<Reply> &future, Handler handle)
     watcher->setFuture(future);
 }
 
-// The transport gave up (link lost, not connected, cancelled): no answer from the drive at all,
-// so every later request of the same job will fail the same way.
-inline bool isConnectionFailure(const Reply &reply)
-{
-    return reply.status == Reply::Status::LinkLost || reply.status == Reply::Status::NotConnected
-        || reply.status == Reply::Status::Cancelled;
-}
-
 } // namespace DriveDesk

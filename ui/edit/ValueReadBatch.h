@@ -1,9 +1,8 @@
 #pragma once
 
-#include "client/Reply.h"
-#include "parameters/DriveDescription.h"
-#include "parameters/PasswordLevel.h"
+#include "session/ValueReads.h"
 
+#include <QFutureWatcher>
 #include <QList>
 #include <QObject>
 #include <QString>
@@ -13,25 +12,9 @@ namespace DriveDesk {
 class DriveClient;
 class ParameterModel;
 
-// One value to read: service 0 for one set of a set-programmable parameter, service 1 set 0 for
-// the one value of any other parameter, as the drive scan reads them.
-struct ValueRead
-{
-    quint16 address = 0;
-    int set = 0;
-    bool perSet = false;
-};
-
-// Every value of the parameter: one read per set, or the one value.
-QList<ValueRead> valueReadsOf(const ParameterDescription &parameter);
-// Whether the level in force lets the parameter be read at all.
-bool isReadable(const ParameterDescription &parameter, PasswordLevel level);
-
-// Reads a list of values and puts what the drive answers into the model (setValue: only a value
-// that changed is announced). At most a few requests are on the client's queue at a time, so
-// that a write the user asks for meanwhile is not stuck behind hundreds of reads. A read the
-// drive refuses is recorded and the batch goes on; when the connection fails it stops.
-// Lives in the GUI thread.
+// Runs a ReadValuesJob in the client's thread and puts what the drive answers into the model as
+// it comes (setValue: only a value that changed is announced). A read the drive refuses is
+// recorded; when the connection fails the job stops and says why. Lives in the GUI thread.
 class ValueReadBatch : public QObject
 {
     Q_OBJECT
@@ -45,6 +28,7 @@ public:
 
     ValueReadBatch(DriveClient *client, ParameterModel *model, QList<ValueRead> reads,
                    QObject *parent = nullptr);
+    ~ValueReadBatch() override;
 
     void start();
     // Sends nothing more; finished() follows when the reads on the way are back.
@@ -63,16 +47,13 @@ signals:
     void finished();
 
 private:
-    void sendMore();
-    void handle(const ValueRead &read, const Reply &reply);
-
-    static constexpr int kWindow = 4; // HSP5's requests on the wire; DIN queues them
+    void take(int begin, int end);
+    void jobFinished();
 
     DriveClient *m_client = nullptr;
     ParameterModel *m_model = nullptr;
     QList<ValueRead> m_reads;
-    qsizetype m_next = 0;
-    int m_onTheWay = 0;
+    QFutureWatcher<ValueReading> m_watcher;
     int m_done = 0;
     bool m_running = false;
     bool m_cancelled = false;

@@ -1,12 +1,32 @@
 #include "ValueWriter.h"
 
-#include "ReplyWatch.h"
-
 #include "client/DriveClient.h"
 #include "model/ParameterModel.h"
 #include "parameters/ParameterId.h"
 
+#include <QFutureWatcher>
+
 namespace DriveDesk {
+
+void showOutcome(ParameterModel &model, const WriteOutcome &outcome, bool superseded)
+{
+    const quint16 address = outcome.address;
+    if (outcome.refusedMask && !superseded)
+        model.markFailed(address, outcome.refusedMask, outcome.error);
+    for (int set = 0; set < kParameterSets; ++set) {
+        if (!(outcome.acknowledgedMask & (1u << set)))
+            continue;
+        if (const std::optional<qint32> value = outcome.readBack[std::size_t(set)]) {
+            if (superseded)
+                model.setValue(address, set, *value);
+            else
+                model.confirmReadBack(address, set, *value);
+        } else if (!superseded) {
+            // The drive acknowledged the write; only the confirmation is missing.
+            model.markWritten(address, quint8(1u << set));
+        }
+    }
+}
 
 ValueWriter::ValueWriter(DriveClient *client, ParameterModel *model, QObject *parent)
     : QObject(parent)
@@ -55,67 +75,37 @@ void ValueWriter::begin(const ChangePtr &change)
     for (int set = 0; set < kParameterSets; ++set)
         change->outcome.before[std::size_t(set)] = m_model->value(change->address, set);
     markPending(*change);
-    sendStep(change);
-}
-
-void ValueWriter::sendStep(const ChangePtr &change)
-{
-    if (change->nextStep >= change->steps.size()) {
-        readBack(change);
-        return;
-    }
-    const WriteStep step = change->steps.at(change->nextStep++);
-    const QFuture<Reply> reply = step.reset
-        ? m_client->resetToDefault(change->address, step.setMask)
-        : m_client->writeValue(change->address, step.raw, step.setMask);
-    whenReplied(this, reply, [this, change, step](const Reply &answer) {
-        WriteOutcome &outcome = change->outcome;
-        if (answer.ok()) {
-            outcome.acknowledgedMask |= step.setMask;
+    const ParameterDescription *parameter = m_model->parameter(change->address);
+    ValueChange request;
+    request.address = change->address;
+    request.setProgrammable = parameter && parameter->isSetProgrammable();
+    request.steps = change->steps;
+    auto *watcher = new QFutureWatcher<WriteOutcome>(this);
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, change] {
+        const QFuture<WriteOutcome> future = watcher->future();
+        watcher->deleteLater();
+        WriteOutcome outcome;
+        outcome.address = change->address;
+        if (future.resultCount() > 0) {
+            outcome = future.result();
         } else {
-            const QString reason = answer.message(m_client->settings().language);
-            outcome.refusedMask |= step.setMask;
-            if (outcome.error.isEmpty())
-                outcome.error = reason;
-            outcome.connectionFailed = outcome.connectionFailed || isConnectionFailure(answer);
-            if (!isSuperseded(*change))
-                m_model->markFailed(change->address, step.setMask, reason);
+            // The client went away before the job ran: nothing was sent.
+            outcome.error = tr("the connection to the drive was closed");
+            outcome.connectionFailed = true;
+            for (const WriteStep &step : change->steps)
+                outcome.refusedMask |= step.setMask;
         }
-        sendStep(change);
+        written(change, outcome);
     });
+    watcher->setFuture(m_client->run(
+        std::make_shared<WriteValueJob>(m_client->settings().protocol, std::move(request))));
 }
 
-void ValueWriter::readBack(const ChangePtr &change)
+void ValueWriter::written(const ChangePtr &change, const WriteOutcome &outcome)
 {
-    const quint8 mask = change->outcome.acknowledgedMask;
-    for (int set = 0; set < kParameterSets; ++set) {
-        if (!(mask & (1u << set)))
-            continue;
-        ++change->readsOnTheWay;
-        whenReplied(this, m_client->readValue(change->address, quint8(1u << set)),
-                    [this, change, set](const Reply &answer) {
-                        --change->readsOnTheWay;
-                        const bool superseded = isSuperseded(*change);
-                        if (const auto *value = answer.data<ParameterValue>()) {
-                            if (superseded)
-                                m_model->setValue(change->address, set, value->value);
-                            else
-                                m_model->confirmReadBack(change->address, set, value->value);
-                        } else {
-                            if (change->outcome.readBackError.isEmpty()) {
-                                change->outcome.readBackError
-                                    = answer.message(m_client->settings().language);
-                            }
-                            // The drive acknowledged the write; only the confirmation is missing.
-                            if (!superseded)
-                                m_model->markWritten(change->address, quint8(1u << set));
-                        }
-                        if (change->readsOnTheWay == 0)
-                            finish(change);
-                    });
-    }
-    if (change->readsOnTheWay == 0)
-        finish(change);
+    static_cast<WriteOutcome &>(change->outcome) = outcome;
+    showOutcome(*m_model, outcome, isSuperseded(*change));
+    finish(change);
 }
 
 void ValueWriter::finish(const ChangePtr &change)

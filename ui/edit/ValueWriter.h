@@ -1,6 +1,7 @@
 #pragma once
 
 #include "parameters/DriveDescription.h"
+#include "session/ValueChange.h"
 
 #include <QHash>
 #include <QList>
@@ -17,40 +18,29 @@ namespace DriveDesk {
 class DriveClient;
 class ParameterModel;
 
-// One step of a change to a parameter: one value written to the sets of a mask (service 0), or
-// those sets reset to their default (service 32).
-struct WriteStep
+// A change's outcome as the window needs it: the drive's values (as the model held them) when
+// the change began, per set or [0], for undo.
+struct EditOutcome : WriteOutcome
 {
-    quint8 setMask = 0;
-    qint32 raw = 0; // not used by a reset
-    bool reset = false;
+    std::array<std::optional<qint32>, kParameterSets> before{};
 };
 
-// What became of a change.
-struct WriteOutcome
-{
-    quint16 address = 0;
-    quint8 acknowledgedMask = 0; // sets whose write the drive acknowledged
-    quint8 refusedMask = 0; // sets whose write was refused or never answered
-    QString error; // the first refusal or transport failure, in words
-    bool connectionFailed = false; // no answer at all: later requests will fail alike
-    QString readBackError; // acknowledged, but the value could not be read back
-    // The drive's values (as the model held them) when the change began; per set, or [0].
-    std::array<std::optional<qint32>, kParameterSets> before {};
+// Shows a change's outcome in the model's cells: failed with the drive's reason, or the value
+// read back (written when it is what was asked for). A change that a later one of the same
+// parameter supersedes only stores the values read, so the later one's cells never show a
+// failure that is not theirs.
+void showOutcome(ParameterModel &model, const WriteOutcome &outcome, bool superseded = false);
 
-    bool ok() const { return refusedMask == 0 && error.isEmpty(); }
-};
-
-// Carries changes of parameter values to the drive and reads every set it wrote back, telling
-// the model each cell's outcome: pending at once, then written or failed with the drive's
-// reason. The changes of one parameter run one after the other; the read-back of a change that
+// Carries changes of parameter values to the drive, each as a WriteValueJob (written, then
+// read back, in the client's thread), telling the model each cell's outcome: pending at once,
+// then written or failed with the drive's reason. The changes of one parameter run one after the other; the read-back of a change that
 // a later one of the same parameter follows only stores the value, so the later one's cells
 // never show a failure that is not theirs. Lives in the GUI thread.
 class ValueWriter : public QObject
 {
     Q_OBJECT
 public:
-    using Done = std::function<void(const WriteOutcome &)>;
+    using Done = std::function<void(const EditOutcome &)>;
 
     ValueWriter(DriveClient *client, ParameterModel *model, QObject *parent = nullptr);
     ~ValueWriter() override;
@@ -70,16 +60,13 @@ private:
         quint16 address = 0;
         QList<WriteStep> steps;
         Done done;
-        WriteOutcome outcome;
-        qsizetype nextStep = 0;
-        int readsOnTheWay = 0;
+        EditOutcome outcome;
     };
     using ChangePtr = std::shared_ptr<Change>;
 
     void markPending(const Change &change);
     void begin(const ChangePtr &change);
-    void sendStep(const ChangePtr &change);
-    void readBack(const ChangePtr &change);
+    void written(const ChangePtr &change, const WriteOutcome &outcome);
     void finish(const ChangePtr &change);
     // A later change of the same parameter waits: it will write and read these cells again.
     bool isSuperseded(const Change &change) const;

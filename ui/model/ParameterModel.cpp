@@ -1,5 +1,6 @@
 #include "ParameterModel.h"
 
+#include "parameters/ParameterAccess.h"
 #include "parameters/ParameterId.h"
 
 namespace DriveDesk {
@@ -127,14 +128,13 @@ std::optional<qint32> ParameterModel::value(quint16 address, int set) const
 bool ParameterModel::isAboveLevel(const ParameterRow &row) const
 {
     const ParameterProperties &properties = row.properties();
-    if (properties.readLevel() > m_level)
-        return true;
-    return !properties.isReadOnly() && properties.writeLevel() > m_level;
+    return !isReadable(properties, m_level)
+        || (!properties.isReadOnly() && !isWritable(properties, m_level));
 }
 
 bool ParameterModel::isEditable(const ParameterRow &row) const
 {
-    return !row.properties().isReadOnly() && !isAboveLevel(row);
+    return isWritable(row.properties(), m_level);
 }
 
 bool ParameterModel::isAboveLevel(quint16 address) const
@@ -246,6 +246,11 @@ void ParameterModel::clearEditStates()
         }
     }
     emitAllChanged();
+}
+
+void ParameterModel::clearEditState(quint16 address, quint8 setMask)
+{
+    changeCells(address, setMask, [](ParameterRow &row, int cell) { row.clearEditState(cell); });
 }
 
 EditState ParameterModel::editState(quint16 address, int set) const

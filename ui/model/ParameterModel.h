@@ -79,6 +79,8 @@ public:
     // asked for, failed (saying what the drive holds) when it does not.
     void confirmReadBack(quint16 address, int set, qint32 raw);
     void clearEditStates();
+    // Drops the edit states of the sets in the mask: nothing was written there after all.
+    void clearEditState(quint16 address, quint8 setMask);
     EditState editState(quint16 address, int set) const;
 
     // Until told otherwise nothing is locked by level: the drive refuses what it must.
