@@ -1,6 +1,8 @@
 #include "SampleDrive.h"
 #include "parameters/ParameterDocument.h"
 
+#include <QDir>
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -341,6 +343,34 @@ private slots:
         QVERIFY(!ParameterDocument::fromJson("{\n  \"format\": \"drivedesk-parameters\",\n  x\n}",
                                              &error));
         QVERIFY2(error.contains(QStringLiteral("line 3")), qPrintable(error));
+    }
+
+    // What fuzz_parameterfile found: every file loads, exactly, or is refused with a reason.
+    void fuzzCorpusReplays()
+    {
+        const QDir corpus(QStringLiteral(DRIVEDESK_TEST_DATA "/fuzz/parameterfile"));
+        const QStringList files = corpus.entryList(QDir::Files);
+        QVERIFY2(files.size() >= 4, qPrintable(corpus.path()));
+        int loaded = 0;
+        for (const QString &name : files) {
+            QFile file(corpus.filePath(name));
+            QVERIFY(file.open(QIODevice::ReadOnly));
+            QString error;
+            const std::optional<DriveDescription> drive
+                = ParameterDocument::fromJson(file.readAll(), &error);
+            if (!drive) {
+                QVERIFY2(!error.isEmpty(), qPrintable(name));
+                continue;
+            }
+            ++loaded;
+            QVERIFY2(error.isEmpty(), qPrintable(name + QLatin1String(": ") + error));
+            const QByteArray saved = ParameterDocument::toJson(*drive);
+            const std::optional<DriveDescription> again
+                = ParameterDocument::fromJson(saved, &error);
+            QVERIFY2(again, qPrintable(name + QLatin1String(": ") + error));
+            QVERIFY2(*again == *drive, qPrintable(name));
+        }
+        QVERIFY(loaded > 0); // the valid seeds
     }
 };
 
