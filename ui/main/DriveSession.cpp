@@ -145,6 +145,11 @@ void DriveSession::readSetPointers()
     }
 }
 
+int DriveSession::activeSet() const
+{
+    return m_activeSet ? m_model->value(*m_activeSet, 0).value_or(-1) : -1;
+}
+
 void DriveSession::setPollingWanted(bool on)
 {
     m_pollingWanted = on;

@@ -53,6 +53,8 @@ public:
     // Fr.02 (active set) and Fr.09 (set pointer) where the drive has them.
     std::optional<quint16> activeSetAddress() const { return m_activeSet; }
     std::optional<quint16> setPointerAddress() const { return m_setPointer; }
+    // Fr.02 as last read; -1 when unknown.
+    int activeSet() const;
 
 signals:
     void stateChanged(DriveDesk::DriveClient::State state);

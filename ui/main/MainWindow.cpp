@@ -7,23 +7,19 @@
 #include "ParameterBrowser.h"
 #include "ParameterView.h"
 #include "RecentConnections.h"
+#include "WindowFeatures.h"
 
 #include "delegate/ParameterDelegate.h"
-#include "edit/AccessController.h"
 #include "edit/EditController.h"
-#include "edit/PollingController.h"
 #include "model/ParameterModel.h"
-#include "monitor/TelegramMonitor.h"
-#include "parameters/DriveIdentity.h"
-#include "parameters/ParameterId.h"
 
 #include <QAction>
 #include <QCloseEvent>
 #include <QCryptographicHash>
+#include <QDockWidget>
 #include <QFile>
 #include <QIcon>
 #include <QLabel>
-#include <QProgressBar>
 #include <QSettings>
 #include <QStatusBar>
 #include <QUndoStack>
@@ -36,8 +32,6 @@ namespace {
 const QString kGeometryKey = QStringLiteral("window/geometry");
 const QString kStateKey = QStringLiteral("window/state");
 const QString kBrowserKey = QStringLiteral("window/browser");
-const QString kPollingKey = QStringLiteral("polling/enabled");
-const QString kIntervalKey = QStringLiteral("polling/intervalMs");
 const QString kFavouritesGroup = QStringLiteral("favourites");
 
 // Favourites belong to a drive: its identification and serial number (In.10) where it has
@@ -90,16 +84,15 @@ MainWindow::MainWindow(Language language, QWidget *parent)
     layout->addWidget(m_browser, 1);
     setCentralWidget(central);
 
-    m_monitor = new TelegramMonitor(this);
-    if (m_monitor->objectName().isEmpty())
-        m_monitor->setObjectName(QStringLiteral("telegramMonitor"));
-    addDockWidget(Qt::BottomDockWidgetArea, m_monitor);
-    m_monitor->hide();
-
     createActions();
     createMenus();
     createToolBar();
     createStatusBar();
+    m_features = makeWindowFeatures(*this);
+    for (WindowFeature *feature : std::as_const(m_features))
+        feature->setParent(this);
+    finishMenus();
+    statusBar()->addPermanentWidget(m_stateLabel);
 
     connect(m_notice, &NoticeBar::cancelClicked, this, [this] {
         if (m_session)
@@ -135,7 +128,12 @@ MainWindow::MainWindow(Language language, QWidget *parent)
 MainWindow::~MainWindow()
 {
     // The session's client may still answer into the model: it goes before the model does.
+    // The features go first: the children destroyed after this body still announce things
+    // (the undo stack its clearing) that a feature would pass on to a frame half gone.
+    qDeleteAll(m_features);
+    m_features.clear();
     delete m_session;
+    m_session = nullptr;
     // Children still talk while they are destroyed (the stack announces its clearing, an open
     // editor commits): nothing here is left to update.
     m_undoStack->disconnect(this);
@@ -154,7 +152,8 @@ void MainWindow::connectTo(ConnectionSettings settings)
 {
     settings.language = m_language;
     if (m_session) {
-        m_monitor->attach(nullptr);
+        for (WindowFeature *feature : std::as_const(m_features))
+            feature->attach(nullptr);
         delete m_session;
         m_session = nullptr;
     }
@@ -188,22 +187,9 @@ void MainWindow::connectTo(ConnectionSettings settings)
     connect(session, &DriveSession::described, this, &MainWindow::onDescribed);
     connect(session, &DriveSession::scanFinished, this, &MainWindow::onScanFinished);
     connect(session, &DriveSession::message, this, &MainWindow::showMessage);
-    connect(session->accessController(), &AccessController::levelChanged, this,
-            &MainWindow::onLevelChanged);
-    EditController *edit = session->editController();
-    connect(edit, &EditController::busyChanged, this, [this](bool busy) {
-        m_busy->setVisible(busy);
-        updateActions();
-    });
-    connect(edit, &EditController::progress, this, [this](int done, int total) {
-        m_busy->setRange(0, total);
-        m_busy->setValue(done);
-    });
-    m_monitor->attach(session->client());
-    session->pollingController()->setIntervalMs(m_pollingIntervalMs);
-    session->setPollingWanted(m_pollingAction->isChecked());
+    for (WindowFeature *feature : std::as_const(m_features))
+        feature->attach(session);
 
-    m_levelLabel->clear();
     m_browser->setEmptyText(tr("Connecting..."));
     m_notice->showProgress(tr("Connecting to %1...").arg(RecentConnections::describe(settings)), 0,
                            0);
@@ -272,8 +258,9 @@ void MainWindow::onScanFinished(const QString &problem)
         int parameters = 0;
         for (int group = 0; group < m_model->rowCount(); ++group)
             parameters += m_model->rowCount(m_model->index(group, 0));
-        showMessage(tr("Read %n parameter(s)", nullptr, parameters)
-                    + tr(" in %n group(s).", nullptr, m_model->rowCount()));
+        // One sentence per count: the plural of each is its own.
+        showMessage(tr("Read %n parameter(s).", nullptr, parameters) + QLatin1Char(' ')
+                    + tr("The drive has %n group(s).", nullptr, m_model->rowCount()));
     } else if (m_model->rowCount() == 0) {
         m_notice->showInformation(
             tr("Nothing was read: %1. Press Refresh (%2) to read the drive.")
@@ -302,11 +289,6 @@ void MainWindow::onConnectionFailed(const QString &reason)
                               .arg(RecentConnections::describe(m_session->settings()), reason));
     showMessage(tr("Could not connect: %1").arg(reason));
     updateActions();
-}
-
-void MainWindow::onLevelChanged(PasswordLevel level)
-{
-    m_levelLabel->setText(tr("Password level: %1").arg(passwordLevelName(level, m_language)));
 }
 
 void MainWindow::showMessage(const QString &text)
@@ -389,8 +371,6 @@ void MainWindow::restoreSettings()
         resize(1300, 820);
     restoreState(settings.value(kStateKey).toByteArray());
     m_browser->restoreState(settings.value(kBrowserKey).toByteArray());
-    m_pollingAction->setChecked(settings.value(kPollingKey, false).toBool());
-    setPollingInterval(settings.value(kIntervalKey, m_pollingIntervalMs).toInt());
 }
 
 void MainWindow::saveSettings()
@@ -399,8 +379,8 @@ void MainWindow::saveSettings()
     settings.setValue(kGeometryKey, saveGeometry());
     settings.setValue(kStateKey, saveState());
     settings.setValue(kBrowserKey, m_browser->saveState());
-    settings.setValue(kPollingKey, m_pollingAction->isChecked());
-    settings.setValue(kIntervalKey, m_pollingIntervalMs);
+    for (WindowFeature *feature : std::as_const(m_features))
+        feature->saveSettings();
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)

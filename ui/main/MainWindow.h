@@ -1,16 +1,13 @@
 #pragma once
 
+#include "WindowFeature.h"
+
 #include "client/DriveClient.h"
-#include "parameters/PasswordLevel.h"
-#include "protocol/Language.h"
 
 #include <QMainWindow>
 
 class QActionGroup;
-class QComboBox;
 class QLabel;
-class QProgressBar;
-class QUndoStack;
 
 namespace DriveDesk {
 
@@ -19,13 +16,13 @@ class DriveSession;
 class NoticeBar;
 class ParameterBrowser;
 class ParameterModel;
-class TelegramMonitor;
 
-// DriveDesk's window: the parameter browser of the connected drive, the connection's state
-// where the user looks (a notice bar and the status bar), menus and toolbar for connecting,
-// refreshing, polling, undo, sets, password, drive information and the telegram monitor.
+// DriveDesk's window, a frame: the parameter browser of the connected drive, the connection's
+// state where the user looks (a notice bar and the status bar), connecting, refreshing and drive
+// information. Editing, polling, the password level and the telegram monitor are features
+// (WindowFeatures.cpp) that put their actions in its menus and toolbar and follow its session.
 // Window layout, filters, favourites (per drive) and the last connection live in QSettings.
-class MainWindow : public QMainWindow
+class MainWindow : public QMainWindow, public WindowFrame
 {
     Q_OBJECT
 public:
@@ -39,14 +36,22 @@ public:
     // without waiting (open()) and closes itself.
     ConnectionDialog *openConnectionDialog();
 
-    ParameterModel *model() const { return m_model; }
-    ParameterBrowser *browser() const { return m_browser; }
     NoticeBar *noticeBar() const { return m_notice; }
-    QUndoStack *undoStack() const { return m_undoStack; }
-    TelegramMonitor *telegramMonitor() const { return m_monitor; }
-    DriveSession *session() const { return m_session; }
-    // Connected and read: values may be edited.
-    bool isReady() const;
+
+    // WindowFrame
+    QWidget *frameWidget() override { return this; }
+    QMenu *menu(Menu menu) override;
+    QToolBar *toolBar() override { return m_toolBar; }
+    void addStatusWidget(QWidget *widget) override;
+    void addDock(QDockWidget *dock) override;
+    ParameterModel *model() const override { return m_model; }
+    ParameterBrowser *browser() const override { return m_browser; }
+    QUndoStack *undoStack() const override { return m_undoStack; }
+    DriveSession *session() const override { return m_session; }
+    bool isReady() const override;
+    Language language() const override { return m_language; }
+    void showMessage(const QString &text) override;
+    void updateActions() override;
 
 signals:
     // The scan finished and the model holds the drive (or the scan stopped: see the notice).
@@ -61,17 +66,11 @@ private:
     void createMenus();
     void createToolBar();
     void createStatusBar();
-    void updateActions();
+    void finishMenus();
     // MainWindowCommands.cpp
     void findDrives();
-    void resetToDefault();
-    void writeToSets();
-    void copySet();
-    void enterPassword();
-    int activeSet() const; // Fr.02 as last read, -1 when unknown
     void showDriveInformation();
     void chooseLanguage(Language language);
-    void setPollingInterval(int ms);
     void about();
     // MainWindow.cpp
     void onStateChanged(DriveClient::State state);
@@ -80,8 +79,6 @@ private:
     void onDescribed(const DriveDescription &drive);
     void onLinkLost(const QString &reason);
     void onConnectionFailed(const QString &reason);
-    void onLevelChanged(PasswordLevel level);
-    void showMessage(const QString &text);
     void updateSetsLabel();
     void reconnect();
     void disconnectFromDrive();
@@ -95,33 +92,24 @@ private:
     QUndoStack *m_undoStack = nullptr;
     ParameterBrowser *m_browser = nullptr;
     NoticeBar *m_notice = nullptr;
-    TelegramMonitor *m_monitor = nullptr;
     DriveSession *m_session = nullptr; // owned; replaced on every connectTo()
+    QList<WindowFeature *> m_features; // children
     QString m_favouritesKey; // the drive's key in QSettings "favourites/"
 
+    QMenu *m_driveMenu = nullptr;
+    QMenu *m_editMenu = nullptr;
+    QMenu *m_viewMenu = nullptr;
+    QToolBar *m_toolBar = nullptr;
     QLabel *m_stateLabel = nullptr;
-    QLabel *m_levelLabel = nullptr;
     QLabel *m_setsLabel = nullptr;
     QLabel *m_metadataLabel = nullptr;
-    QProgressBar *m_busy = nullptr;
-    QComboBox *m_intervalBox = nullptr;
-    int m_pollingIntervalMs = 500;
 
     QAction *m_connectAction = nullptr;
     QAction *m_disconnectAction = nullptr;
     QAction *m_findDrivesAction = nullptr;
     QAction *m_refreshAction = nullptr;
     QAction *m_readMetadataAction = nullptr;
-    QAction *m_pollingAction = nullptr;
-    QActionGroup *m_intervalGroup = nullptr;
-    QAction *m_undoAction = nullptr;
-    QAction *m_redoAction = nullptr;
-    QAction *m_resetAction = nullptr;
-    QAction *m_writeSetsAction = nullptr;
-    QAction *m_copySetAction = nullptr;
-    QAction *m_passwordAction = nullptr;
     QAction *m_driveInfoAction = nullptr;
-    QAction *m_monitorAction = nullptr;
     QActionGroup *m_languageGroup = nullptr;
     QAction *m_quitAction = nullptr;
     QAction *m_aboutAction = nullptr;

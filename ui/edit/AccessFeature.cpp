@@ -1,0 +1,71 @@
+#include "AccessFeature.h"
+
+#include "AccessController.h"
+#include "PasswordDialog.h"
+
+#include "main/DriveSession.h"
+#include "main/FrameSupport.h"
+
+#include <QAction>
+#include <QLabel>
+#include <QMenu>
+#include <QToolBar>
+
+namespace DriveDesk {
+
+AccessFeature::AccessFeature(WindowFrame &frame, QObject *parent)
+    : WindowFeature(frame, parent)
+{
+    m_passwordAction = new QAction(themedIcon("dialog-password", QStyle::SP_DialogYesButton),
+                                   tr("&Password..."), this);
+    m_passwordAction->setObjectName(QStringLiteral("passwordAction"));
+    m_passwordAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
+    m_passwordAction->setToolTip(tr("Enter a password to open a higher password level"));
+    connect(m_passwordAction, &QAction::triggered, this, &AccessFeature::enterPassword);
+    QMenu *edit = frame.menu(WindowFrame::Menu::Edit);
+    edit->addSeparator();
+    edit->addAction(m_passwordAction);
+    QToolBar *bar = frame.toolBar();
+    bar->addSeparator();
+    bar->addAction(m_passwordAction);
+
+    m_levelLabel = new QLabel;
+    m_levelLabel->setObjectName(QStringLiteral("passwordLevel"));
+    m_levelLabel->setToolTip(tr("The password level in force on the drive (ud.01)"));
+    frame.addStatusWidget(m_levelLabel);
+}
+
+void AccessFeature::attach(DriveSession *session)
+{
+    m_levelLabel->clear();
+    if (!session)
+        return;
+    connect(session->accessController(), &AccessController::levelChanged, this,
+            [this](PasswordLevel level) {
+                m_levelLabel->setText(tr("Password level: %1")
+                                          .arg(passwordLevelName(level, frame().language())));
+            });
+}
+
+void AccessFeature::updateActions()
+{
+    m_passwordAction->setEnabled(frame().isReady());
+}
+
+void AccessFeature::enterPassword()
+{
+    if (!frame().isReady())
+        return;
+    const AccessController *access = frame().session()->accessController();
+    auto *dialog = new PasswordDialog(frame().frameWidget());
+    dialog->setLevel(access->isLevelKnown() ? std::optional<PasswordLevel>(access->level())
+                                            : std::nullopt,
+                     frame().language());
+    connect(dialog, &QDialog::accepted, this, [this, dialog] {
+        if (frame().isReady() && dialog->password())
+            frame().session()->accessController()->enterPassword(*dialog->password());
+    });
+    openDialog(dialog);
+}
+
+} // namespace DriveDesk

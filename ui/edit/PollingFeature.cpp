@@ -1,0 +1,99 @@
+#include "PollingFeature.h"
+
+#include "PollingController.h"
+
+#include "main/DriveSession.h"
+#include "main/FrameSupport.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QComboBox>
+#include <QMenu>
+#include <QSettings>
+#include <QToolBar>
+
+namespace DriveDesk {
+
+namespace {
+
+const QString kPollingKey = QStringLiteral("polling/enabled");
+const QString kIntervalKey = QStringLiteral("polling/intervalMs");
+const int kIntervalsMs[] = { 100, 200, 500, 1000, 2000, 5000 };
+
+QString intervalText(int ms)
+{
+    return ms < 1000 ? PollingFeature::tr("%1 ms").arg(ms)
+                     : PollingFeature::tr("%1 s").arg(ms / 1000);
+}
+
+} // namespace
+
+PollingFeature::PollingFeature(WindowFrame &frame, QObject *parent)
+    : WindowFeature(frame, parent)
+{
+    m_pollingAction = new QAction(themedIcon("media-playback-start", QStyle::SP_MediaPlay),
+                                  tr("&Poll Live Values"), this);
+    m_pollingAction->setObjectName(QStringLiteral("pollingAction"));
+    m_pollingAction->setCheckable(true);
+    m_pollingAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
+    m_pollingAction->setToolTip(tr("Read the run display (ru) again and again"));
+    connect(m_pollingAction, &QAction::toggled, this, [this](bool on) {
+        if (DriveSession *session = this->frame().session())
+            session->setPollingWanted(on);
+    });
+    m_intervalGroup = new QActionGroup(this);
+    for (int ms : kIntervalsMs) {
+        QAction *action = m_intervalGroup->addAction(tr("Every %1").arg(intervalText(ms)));
+        action->setCheckable(true);
+        action->setData(ms);
+        connect(action, &QAction::triggered, this, [this, ms] { setInterval(ms); });
+    }
+    m_intervalBox = new QComboBox;
+    m_intervalBox->setObjectName(QStringLiteral("pollingInterval"));
+    m_intervalBox->setToolTip(tr("How often the live values are read"));
+    for (int ms : kIntervalsMs)
+        m_intervalBox->addItem(intervalText(ms), ms);
+    connect(m_intervalBox, &QComboBox::activated, this,
+            [this](int index) { setInterval(m_intervalBox->itemData(index).toInt()); });
+
+    QMenu *drive = frame.menu(WindowFrame::Menu::Drive);
+    drive->addAction(m_pollingAction);
+    drive->addMenu(tr("Polling &Interval"))->addActions(m_intervalGroup->actions());
+    QToolBar *bar = frame.toolBar();
+    bar->addAction(m_pollingAction);
+    bar->addWidget(m_intervalBox);
+
+    QSettings settings;
+    m_pollingAction->setChecked(settings.value(kPollingKey, false).toBool());
+    setInterval(settings.value(kIntervalKey, m_intervalMs).toInt());
+}
+
+void PollingFeature::attach(DriveSession *session)
+{
+    if (!session)
+        return;
+    session->pollingController()->setIntervalMs(m_intervalMs);
+    session->setPollingWanted(m_pollingAction->isChecked());
+}
+
+void PollingFeature::saveSettings()
+{
+    QSettings settings;
+    settings.setValue(kPollingKey, m_pollingAction->isChecked());
+    settings.setValue(kIntervalKey, m_intervalMs);
+}
+
+void PollingFeature::setInterval(int ms)
+{
+    m_intervalMs = std::clamp(ms, int(PollingController::kMinimumIntervalMs),
+                              int(PollingController::kMaximumIntervalMs));
+    for (QAction *action : m_intervalGroup->actions())
+        action->setChecked(action->data().toInt() == m_intervalMs);
+    const int index = m_intervalBox->findData(m_intervalMs);
+    if (index >= 0)
+        m_intervalBox->setCurrentIndex(index);
+    if (DriveSession *session = frame().session())
+        session->pollingController()->setIntervalMs(m_intervalMs);
+}
+
+} // namespace DriveDesk

@@ -1,0 +1,26 @@
+#pragma once
+
+#include <QApplication>
+#include <QIcon>
+#include <QStyle>
+
+namespace DriveDesk {
+
+// The desktop theme's icon, or the style's where the theme has none.
+inline QIcon themedIcon(const char *theme, QStyle::StandardPixmap fallback)
+{
+    return QIcon::fromTheme(QString::fromLatin1(theme),
+                            QApplication::style()->standardIcon(fallback));
+}
+
+// Dialogs open with open() and act in a handler: no nested event loop, and what the handler
+// needs it reads when the dialog closes, not before it opened.
+template<typename Dialog>
+Dialog *openDialog(Dialog *dialog)
+{
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->open();
+    return dialog;
+}
+
+} // namespace DriveDesk

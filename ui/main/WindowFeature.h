@@ -1,0 +1,76 @@
+#pragma once
+
+#include "protocol/Language.h"
+
+#include <QObject>
+
+class QAction;
+class QDockWidget;
+class QMenu;
+class QToolBar;
+class QUndoStack;
+class QWidget;
+
+namespace DriveDesk {
+
+class DriveSession;
+class ParameterBrowser;
+class ParameterModel;
+
+// What a feature sees of the window it works in: the places for its actions and widgets, what
+// the window shows, and the drive session of the moment. MainWindow is the one frame.
+class WindowFrame
+{
+public:
+    enum class Menu { Drive, Edit, View };
+
+    virtual ~WindowFrame() = default;
+
+    virtual QWidget *frameWidget() = 0; // the parent of the feature's dialogs and docks
+    virtual QMenu *menu(Menu menu) = 0;
+    virtual QToolBar *toolBar() = 0;
+    virtual void addStatusWidget(QWidget *widget) = 0;
+    virtual void addDock(QDockWidget *dock) = 0; // at the bottom, hidden until asked for
+
+    virtual ParameterModel *model() const = 0;
+    virtual ParameterBrowser *browser() const = 0;
+    virtual QUndoStack *undoStack() const = 0;
+    // The connection and its controllers; nullptr before the first connect.
+    virtual DriveSession *session() const = 0;
+    // Connected and read: values may be edited.
+    virtual bool isReady() const = 0;
+    // The UI's language, in which the drive's own texts are read too.
+    virtual Language language() const = 0;
+
+    virtual void showMessage(const QString &text) = 0;
+    // Something an action depends on changed: every feature's actions enable as they apply.
+    virtual void updateActions() = 0;
+};
+
+// One feature of the window (editing, polling, the password level, the telegram monitor): it
+// owns its actions and widgets, puts them in the frame when it is made, and follows the drive
+// session. A feature is added to the window in WindowFeatures.cpp, and nowhere else.
+class WindowFeature : public QObject
+{
+    Q_OBJECT
+public:
+    explicit WindowFeature(WindowFrame &frame, QObject *parent = nullptr)
+        : QObject(parent)
+        , m_frame(frame)
+    { }
+
+    // A new session replaces the old one (already gone), or nullptr: none any more.
+    virtual void attach(DriveSession *session) { Q_UNUSED(session) }
+    // The connection, the scan, the selection or a job changed.
+    virtual void updateActions() { }
+    // The window closes: what the feature remembers goes to QSettings.
+    virtual void saveSettings() { }
+
+protected:
+    WindowFrame &frame() const { return m_frame; }
+
+private:
+    WindowFrame &m_frame;
+};
+
+} // namespace DriveDesk

@@ -1,0 +1,20 @@
+#include "WindowFeatures.h"
+
+#include "edit/AccessFeature.h"
+#include "edit/EditingFeature.h"
+#include "edit/PollingFeature.h"
+#include "monitor/MonitorFeature.h"
+
+namespace DriveDesk {
+
+QList<WindowFeature *> makeWindowFeatures(WindowFrame &frame)
+{
+    return {
+        new PollingFeature(frame),
+        new EditingFeature(frame),
+        new AccessFeature(frame),
+        new MonitorFeature(frame),
+    };
+}
+
+} // namespace DriveDesk

@@ -1,0 +1,38 @@
+#include "MonitorFeature.h"
+
+#include "TelegramMonitor.h"
+
+#include "main/DriveSession.h"
+#include "main/FrameSupport.h"
+
+#include <QAction>
+#include <QMenu>
+#include <QToolBar>
+
+namespace DriveDesk {
+
+MonitorFeature::MonitorFeature(WindowFrame &frame, QObject *parent)
+    : WindowFeature(frame, parent)
+{
+    m_monitor = new TelegramMonitor(frame.frameWidget());
+    if (m_monitor->objectName().isEmpty())
+        m_monitor->setObjectName(QStringLiteral("telegramMonitor"));
+    frame.addDock(m_monitor);
+
+    QAction *action = m_monitor->toggleViewAction();
+    action->setObjectName(QStringLiteral("monitorAction"));
+    action->setText(tr("&Telegram Monitor"));
+    action->setIcon(themedIcon("utilities-terminal", QStyle::SP_FileDialogDetailedView));
+    action->setShortcut(QKeySequence(Qt::Key_F12));
+    QMenu *view = frame.menu(WindowFrame::Menu::View);
+    view->addSeparator();
+    view->addAction(action);
+    frame.toolBar()->addAction(action);
+}
+
+void MonitorFeature::attach(DriveSession *session)
+{
+    m_monitor->attach(session ? session->client() : nullptr);
+}
+
+} // namespace DriveDesk
