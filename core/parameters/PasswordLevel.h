@@ -23,6 +23,10 @@ enum class PasswordLevel : quint8 {
 
 QString passwordLevelName(PasswordLevel level, Language language = Language::English);
 
+// The password parameter ud.01: it reads the level in force, a password written to it changes
+// the level.
+inline constexpr quint16 kPasswordParameterAddress = 0x0801;
+
 // What the password parameter reads while the level is in force: -1 (CP read only) .. -8.
 qint32 passwordReadValue(PasswordLevel level);
 std::optional<PasswordLevel> passwordLevelFromReadValue(qint32 value);

@@ -11,22 +11,26 @@ AccessController::AccessController(DriveClient *client, ParameterModel *model, Q
     : QObject(parent)
     , m_client(client)
     , m_model(model)
-    , m_level(model->passwordLevel())
 {
     // A refresh or a scan reading ud.01 tells the level as well.
     connect(m_model, &QAbstractItemModel::dataChanged, this, &AccessController::modelDataChanged);
     connect(m_model, &QAbstractItemModel::modelReset, this, [this] {
-        const std::optional<qint32> value = m_model->value(kPasswordAddress, 0);
+        const std::optional<qint32> value = m_model->value(kPasswordParameterAddress, 0);
         if (value && passwordLevelFromReadValue(*value))
             takeReadValue(*value);
     });
 }
 
+PasswordLevel AccessController::level() const
+{
+    return m_model->passwordLevel();
+}
+
 void AccessController::readLevel()
 {
-    whenReplied(this, m_client->readValueStandard(kPasswordAddress, 0), [this](const Reply &reply) {
+    whenReplied(this, m_client->readValueStandard(kPasswordParameterAddress, 0), [this](const Reply &reply) {
         if (const auto *value = reply.data<ParameterValue>()) {
-            m_model->setValue(kPasswordAddress, 0, value->value);
+            m_model->setValue(kPasswordParameterAddress, 0, value->value);
             takeReadValue(value->value);
             return;
         }
@@ -37,7 +41,7 @@ void AccessController::readLevel()
 
 void AccessController::enterPassword(int password)
 {
-    whenReplied(this, m_client->writeValueStandard(kPasswordAddress, password, 0),
+    whenReplied(this, m_client->writeValueStandard(kPasswordParameterAddress, password, 0),
                 [this](const Reply &reply) {
                     if (!reply.ok()) {
                         emit message(tr("Password not accepted: %1")
@@ -56,12 +60,11 @@ void AccessController::takeReadValue(qint32 value)
         emit message(tr("The password parameter reads %1, which names no password level: the "
                         "level stays %2")
                          .arg(value)
-                         .arg(levelName(m_level)));
+                         .arg(levelName(this->level())));
         return;
     }
-    const bool changed = !m_known || *level != m_level;
+    const bool changed = !m_known || *level != this->level();
     m_known = true;
-    m_level = *level;
     m_model->setPasswordLevel(*level);
     if (changed) {
         emit levelChanged(*level);
@@ -71,17 +74,17 @@ void AccessController::takeReadValue(qint32 value)
 
 void AccessController::modelDataChanged(const QModelIndex &topLeft, const QModelIndex &bottomRight)
 {
-    const QModelIndex cell = m_model->valueIndex(kPasswordAddress, 0);
+    const QModelIndex cell = m_model->valueIndex(kPasswordParameterAddress, 0);
     if (!cell.isValid() || cell.parent() != topLeft.parent() || cell.row() < topLeft.row()
         || cell.row() > bottomRight.row() || cell.column() < topLeft.column()
         || cell.column() > bottomRight.column()) {
         return;
     }
     // A value that names no level is a password on its way, not a reading.
-    const std::optional<qint32> value = m_model->value(kPasswordAddress, 0);
+    const std::optional<qint32> value = m_model->value(kPasswordParameterAddress, 0);
     const std::optional<PasswordLevel> level
         = value ? passwordLevelFromReadValue(*value) : std::nullopt;
-    if (level && (!m_known || *level != m_level))
+    if (level && (!m_known || *level != this->level()))
         takeReadValue(*value);
 }
 

@@ -10,20 +10,19 @@ class DriveClient;
 class ParameterModel;
 
 // The drive's password level: read from the password parameter ud.01, which reads -1 - level,
-// and changed by writing a password to it. The model learns the level, so that parameters above
-// it are locked in the view. Lives in the GUI thread; the client and the model outlive it.
+// and changed by writing a password to it. The level in force is kept once, by the model, which
+// locks the parameters above it in the view. Lives in the GUI thread; the client and the model
+// outlive it.
 class AccessController : public QObject
 {
     Q_OBJECT
 public:
-    static constexpr quint16 kPasswordAddress = 0x0801; // ud.01
-
     AccessController(DriveClient *client, ParameterModel *model, QObject *parent = nullptr);
 
     void readLevel(); // reads ud.01 (service 1, set 0), sets the model's level
     void enterPassword(int password); // writes ud.01, re-reads the level
     // The level last read; the model's (Supervisor: nothing locked) until then.
-    PasswordLevel level() const { return m_level; }
+    PasswordLevel level() const;
     bool isLevelKnown() const { return m_known; }
 
 signals:
@@ -38,8 +37,7 @@ private:
 
     DriveClient *m_client = nullptr;
     ParameterModel *m_model = nullptr;
-    PasswordLevel m_level = PasswordLevel::Supervisor;
-    bool m_known = false;
+    bool m_known = false; // the level was read from this drive
 };
 
 } // namespace DriveDesk
