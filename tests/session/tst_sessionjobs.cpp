@@ -1,0 +1,161 @@
+#include "../client/ClientTestSupport.h"
+
+#include "session/CopySet.h"
+#include "session/Polling.h"
+#include "session/ValueChange.h"
+#include "session/ValueReads.h"
+
+using namespace DriveDesk;
+using namespace DriveDesk::ClientTest;
+
+namespace {
+
+constexpr quint16 kActualFrequency = 0x0203; // ru.03, read-only
+constexpr quint16 kNoSuchParameter = 0x7F7F;
+
+ValueRead oneValue(quint16 address)
+{
+    return ValueRead{address, 0, false};
+}
+
+template<typename T>
+QList<T> resultsOf(const QFuture<T> &future)
+{
+    return waitFinished(future) ? future.results() : QList<T>{};
+}
+
+} // namespace
+
+// core/session's jobs and polling against the simulated drive through a real client: what the
+// window and the command line both rely on.
+class TestSessionJobs : public QObject
+{
+    Q_OBJECT
+private slots:
+    void pollingReadsRoundAfterRoundUntilTheConnectionGoes()
+    {
+        Session session(simulated(Protocol::Hsp5, fast()));
+        QVERIFY(session.connected());
+        Polling polling(session.client.get());
+        polling.setReads([] { return QList<ValueRead>{oneValue(kActualFrequency), oneValue(kRatedCurrent)}; });
+        polling.setIntervalMs(Polling::kMinimumIntervalMs);
+        QSignalSpy readings(&polling, &Polling::reading);
+        QSignalSpy rounds(&polling, &Polling::roundFinished);
+        QSignalSpy stopped(&polling, &Polling::stopped);
+
+        polling.setEnabled(true);
+        QTRY_VERIFY_WITH_TIMEOUT(rounds.size() >= 3, kWaitMs);
+        QCOMPARE(polling.roundsCompleted(), int(rounds.size()));
+        QVERIFY(readings.size() >= 6);
+        const auto last = readings.constLast().at(0).value<ValueReading>();
+        QCOMPARE(last.read.address, kRatedCurrent);
+        QCOMPARE(last.value, 105);
+        const auto round = rounds.constLast().at(0).value<Polling::Round>();
+        QCOMPARE(round.reads, 2);
+        QVERIFY(round.failures.isEmpty());
+
+        session.client->disconnectFromDrive();
+        QTRY_COMPARE_WITH_TIMEOUT(stopped.size(), 1, kWaitMs);
+        QCOMPARE(stopped.constFirst().at(0).toBool(), false);
+        QVERIFY(!polling.isEnabled());
+    }
+
+    void aRoundOnItsWaySkipsTheNext()
+    {
+        // DIN66019II, one request at a time, 30 ms each: a round of five takes longer than the
+        // 50 ms between rounds.
+        SimulationOptions options;
+        options.replyLatencyUs = 30000;
+        Session session(simulated(Protocol::Din66019II, options));
+        QVERIFY(session.connected());
+        Polling polling(session.client.get());
+        polling.setReads([] { return QList<ValueRead>(5, oneValue(kRatedCurrent)); });
+        polling.setIntervalMs(Polling::kMinimumIntervalMs);
+        QSignalSpy rounds(&polling, &Polling::roundFinished);
+        polling.setEnabled(true);
+        QTRY_VERIFY_WITH_TIMEOUT(rounds.size() >= 2, kWaitMs);
+        polling.setEnabled(false);
+        QVERIFY2(polling.roundsSkipped() > 0, qPrintable(QString::number(polling.roundsSkipped())));
+    }
+
+    void aRefusedReadIsReportedAndTheRoundGoesOn()
+    {
+        Session session(simulated(Protocol::Hsp5, fast()));
+        QVERIFY(session.connected());
+        Polling polling(session.client.get());
+        polling.setReads([] { return QList<ValueRead>{oneValue(kNoSuchParameter), oneValue(kRatedCurrent)}; });
+        QSignalSpy readings(&polling, &Polling::reading);
+        QSignalSpy rounds(&polling, &Polling::roundFinished);
+        polling.setEnabled(true);
+        QTRY_COMPARE_WITH_TIMEOUT(rounds.size(), 1, kWaitMs);
+        polling.setEnabled(false);
+        const auto round = rounds.constFirst().at(0).value<Polling::Round>();
+        QCOMPARE(round.failures.size(), 1);
+        QCOMPARE(round.failures.constFirst().read.address, kNoSuchParameter);
+        QVERIFY2(round.failures.constFirst().reason.contains(QStringLiteral("address")),
+                 qPrintable(round.failures.constFirst().reason));
+        QCOMPARE(readings.size(), 1);
+        QCOMPARE(readings.constFirst().at(0).value<ValueReading>().value, 105);
+    }
+
+    void nothingToReadIsSaid()
+    {
+        Session session(simulated(Protocol::Hsp5, fast()));
+        QVERIFY(session.connected());
+        Polling polling(session.client.get());
+        QSignalSpy nothing(&polling, &Polling::nothingToRead);
+        polling.setEnabled(true);
+        QCOMPARE(nothing.size(), 1);
+        QCOMPARE(polling.roundsCompleted(), 0);
+    }
+
+    void aWriteIsReadBackAndARefusalSaysWhy()
+    {
+        Session session(simulated(Protocol::Hsp5, fast()));
+        QVERIFY(session.connected());
+        ValueChange change;
+        change.address = kMaxSpeedForward;
+        change.steps = {WriteStep{0x04, 2500, false}};
+        const QList<WriteOutcome> written = resultsOf(
+            session.client->run(std::make_shared<WriteValueJob>(Protocol::Hsp5, change)));
+        QCOMPARE(written.size(), 1);
+        QVERIFY2(written.constFirst().ok(), qPrintable(written.constFirst().error));
+        QCOMPARE(written.constFirst().acknowledgedMask, quint8(0x04));
+        QCOMPARE(written.constFirst().readBack[2], 2500);
+        QCOMPARE(written.constFirst().readBack[1], std::nullopt);
+
+        change.address = kActualFrequency;
+        change.setProgrammable = false;
+        change.steps = {WriteStep{0x01, 10, false}};
+        const QList<WriteOutcome> refused = resultsOf(
+            session.client->run(std::make_shared<WriteValueJob>(Protocol::Hsp5, change)));
+        QCOMPARE(refused.size(), 1);
+        QVERIFY(!refused.constFirst().anyAcknowledged());
+        QVERIFY(!refused.constFirst().connectionFailed);
+        QVERIFY2(refused.constFirst().error.contains(QStringLiteral("write protected")),
+                 qPrintable(refused.constFirst().error));
+    }
+
+    void aCopyAskedToStopBeforeItBeganWritesNothing()
+    {
+        Session session(simulated(Protocol::Hsp5, fast()));
+        QVERIFY(session.connected());
+        CopySetPlan plan;
+        plan.from = 0;
+        plan.to = 3;
+        plan.items = {CopySetPlan::Item{kMaxSpeedForward, 1234}};
+        const auto job = std::make_shared<CopySetJob>(Protocol::Hsp5, plan);
+        job->requestStop();
+        QCOMPARE(resultsOf(session.client->run(job)).size(), 0);
+        QCOMPARE(valueOf(session.call(session.client->readValue(kMaxSpeedForward, 0x08))),
+                 kMaxSpeedDefault);
+
+        const auto copy = std::make_shared<CopySetJob>(Protocol::Hsp5, plan);
+        const QList<WriteOutcome> copied = resultsOf(session.client->run(copy));
+        QCOMPARE(copied.size(), 1);
+        QCOMPARE(copied.constFirst().readBack[3], 1234);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestSessionJobs)
+#include "tst_sessionjobs.moc"
