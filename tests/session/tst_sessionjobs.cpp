@@ -1,6 +1,7 @@
 #include "../client/ClientTestSupport.h"
 
 #include "session/CopySet.h"
+#include "session/PasswordLevelJob.h"
 #include "session/Polling.h"
 #include "session/ValueChange.h"
 #include "session/ValueReads.h"
@@ -134,6 +135,30 @@ private slots:
         QVERIFY(!refused.constFirst().connectionFailed);
         QVERIFY2(refused.constFirst().error.contains(QStringLiteral("write protected")),
                  qPrintable(refused.constFirst().error));
+    }
+
+    void thePasswordLevelIsReadAndAPasswordChangesIt()
+    {
+        Session session(simulated(Protocol::Hsp5, fast()));
+        QVERIFY(session.connected());
+        const auto levelAfter = [&](std::optional<qint32> password) {
+            const QList<PasswordLevelOutcome> outcomes = resultsOf(
+                session.client->run(std::make_shared<PasswordLevelJob>(Protocol::Hsp5, password)));
+            return outcomes.value(0);
+        };
+        PasswordLevelOutcome outcome = levelAfter(std::nullopt);
+        QCOMPARE(outcome.level, PasswordLevel::Application);
+        QCOMPARE(outcome.readValue, -4);
+
+        outcome = levelAfter(1234);
+        QVERIFY(!outcome.passwordAccepted);
+        QVERIFY2(outcome.error.contains(QStringLiteral("password invalid")), qPrintable(outcome.error));
+        QCOMPARE(outcome.readValue, std::nullopt);
+        QCOMPARE(levelAfter(std::nullopt).level, PasswordLevel::Application);
+
+        outcome = levelAfter(500);
+        QVERIFY(outcome.passwordAccepted);
+        QCOMPARE(outcome.level, PasswordLevel::DriveMode);
     }
 
     void aCopyAskedToStopBeforeItBeganWritesNothing()

@@ -1,9 +1,10 @@
 #include "AccessController.h"
 
-#include "ReplyWatch.h"
-
 #include "client/DriveClient.h"
 #include "model/ParameterModel.h"
+#include "session/PasswordLevelJob.h"
+
+#include <QFutureWatcher>
 
 namespace DriveDesk {
 
@@ -28,29 +29,38 @@ PasswordLevel AccessController::level() const
 
 void AccessController::readLevel()
 {
-    whenReplied(this, m_client->readValueStandard(kPasswordParameterAddress, 0), [this](const Reply &reply) {
-        if (const auto *value = reply.data<ParameterValue>()) {
-            m_model->setValue(kPasswordParameterAddress, 0, value->value);
-            takeReadValue(value->value);
-            return;
-        }
-        emit message(tr("The password level could not be read: %1")
-                         .arg(reply.message(m_client->settings().language)));
-    });
+    run(std::nullopt);
 }
 
 void AccessController::enterPassword(int password)
 {
-    whenReplied(this, m_client->writeValueStandard(kPasswordParameterAddress, password, 0),
-                [this](const Reply &reply) {
-                    if (!reply.ok()) {
-                        emit message(tr("Password not accepted: %1")
-                                         .arg(reply.message(m_client->settings().language)));
-                        return;
-                    }
-                    emit message(tr("Password accepted"));
-                    readLevel();
-                });
+    run(password);
+}
+
+void AccessController::run(std::optional<qint32> password)
+{
+    auto *watcher = new QFutureWatcher<PasswordLevelOutcome>(this);
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, password] {
+        watcher->deleteLater();
+        const QFuture<PasswordLevelOutcome> future = watcher->future();
+        if (future.isCanceled() || future.resultCount() == 0)
+            return;
+        const PasswordLevelOutcome outcome = future.result();
+        if (password && !outcome.passwordAccepted) {
+            emit message(tr("Password not accepted: %1").arg(outcome.error));
+            return;
+        }
+        if (password)
+            emit message(tr("Password accepted"));
+        if (!outcome.readValue) {
+            emit message(tr("The password level could not be read: %1").arg(outcome.error));
+            return;
+        }
+        m_model->setValue(kPasswordParameterAddress, 0, *outcome.readValue);
+        takeReadValue(*outcome.readValue);
+    });
+    watcher->setFuture(m_client->run(
+        std::make_shared<PasswordLevelJob>(m_client->settings().protocol, password)));
 }
 
 void AccessController::takeReadValue(qint32 value)

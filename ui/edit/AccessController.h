@@ -4,6 +4,8 @@
 
 #include <QObject>
 
+#include <optional>
+
 namespace DriveDesk {
 
 class DriveClient;
@@ -30,6 +32,8 @@ signals:
     void message(const QString &text);
 
 private:
+    // Reads the level, after writing the password if one is given (core's PasswordLevelJob).
+    void run(std::optional<qint32> password);
     // A value of ud.01 from the drive, read here or by a refresh.
     void takeReadValue(qint32 value);
     void modelDataChanged(const QModelIndex &topLeft, const QModelIndex &bottomRight);

@@ -8,7 +8,6 @@ target_sources(drivedesk_ui PRIVATE
     edit/PasswordDialog.cpp edit/PasswordDialog.h
     edit/PollingController.cpp edit/PollingController.h
     edit/PollingFeature.cpp edit/PollingFeature.h
-    edit/ReplyWatch.h
     edit/SetsDialog.cpp edit/SetsDialog.h
     edit/ValueReadBatch.cpp edit/ValueReadBatch.h
     edit/ValueWriter.cpp edit/ValueWriter.h
