@@ -1,2 +1,2 @@
-drivedesk_add_test(NAME tst_cli LABEL integration SOURCES cli/tst_cli.cpp LIBS drivedesk_parameters)
+drivedesk_add_test(NAME tst_cli LABELS unit integration SOURCES cli/tst_cli.cpp LIBS drivedesk_parameters)
 add_dependencies(tst_cli drivedesk-cli drivedesk-sim)

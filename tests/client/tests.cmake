@@ -1,13 +1,13 @@
 # The client: reply texts and checks (unit), and the real client against the simulated drive
 # in process, over TCP and over pseudo-terminals (integration).
-drivedesk_add_test(NAME tst_reply LABEL unit
+drivedesk_add_test(NAME tst_reply LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_reply.cpp LIBS drivedesk_client)
-drivedesk_add_test(NAME tst_replycheck LABEL unit
+drivedesk_add_test(NAME tst_replycheck LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_replycheck.cpp LIBS drivedesk_client)
 
 foreach(name clientservices clientdin clientpipeline clientfaults clienttransports clientscan clientunplug
         clientseedonly clientcache)
-    drivedesk_add_test(NAME tst_${name} LABEL integration TIMEOUT 300
+    drivedesk_add_test(NAME tst_${name} LABELS unit integration TIMEOUT 300
         SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_${name}.cpp ${CMAKE_CURRENT_LIST_DIR}/ClientTestSupport.h
         LIBS drivedesk_client drivedesk_bus)
 endforeach()

@@ -3,7 +3,7 @@
 if(NOT DRIVEDESK_QM_FILES)
     message(FATAL_ERROR "tst_translations needs the catalogues of translations/")
 endif()
-drivedesk_add_test(NAME tst_translations LABEL gui
+drivedesk_add_test(NAME tst_translations LABELS gui
     SOURCES gui/tst_translations.cpp LIBS drivedesk_ui)
 qt_add_resources(tst_translations "tst_translations_catalogues" PREFIX "/i18n"
     BASE ${DRIVEDESK_QM_DIR} FILES ${DRIVEDESK_QM_FILES})

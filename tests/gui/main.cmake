@@ -1,8 +1,8 @@
 # The shell: the main window, its dialogs and the start-up options (offscreen, against the
 # simulated drive).
-drivedesk_add_test(NAME tst_mainwindow LABEL gui
+drivedesk_add_test(NAME tst_mainwindow LABELS gui
     SOURCES gui/tst_mainwindow.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui)
-drivedesk_add_test(NAME tst_mainwindow_edit LABEL gui
+drivedesk_add_test(NAME tst_mainwindow_edit LABELS gui
     SOURCES gui/tst_mainwindow_edit.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui)
-drivedesk_add_test(NAME tst_mainwindow_dialogs LABEL gui
+drivedesk_add_test(NAME tst_mainwindow_dialogs LABELS gui
     SOURCES gui/tst_mainwindow_dialogs.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui)

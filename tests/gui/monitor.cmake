@@ -1,3 +1,3 @@
 # The telegram monitor dock (offscreen, against the simulated drive).
-drivedesk_add_test(NAME tst_telegrammonitor LABEL gui
+drivedesk_add_test(NAME tst_telegrammonitor LABELS gui
     SOURCES gui/tst_telegrammonitor.cpp LIBS drivedesk_ui)

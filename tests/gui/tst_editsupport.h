@@ -4,6 +4,7 @@
 #include "client/DriveClient.h"
 #include "model/ParameterModel.h"
 
+#include <QFutureWatcher>
 #include <QSignalSpy>
 #include <QTest>
 #include <QUndoStack>
@@ -75,6 +76,18 @@ struct SimulatedDrive
         return future.result();
     }
 
+    // Sends a read of ud.01 and waits until its reply arrives in this thread. By then every
+    // request sent before it has been answered, its reply handled here and its traffic (and this
+    // read's own) delivered: the drive answers in order, and the client hands this thread what
+    // happened in the order it happened.
+    bool answerToALaterRead()
+    {
+        QFutureWatcher<Reply> later;
+        QSignalSpy answered(&later, &QFutureWatcherBase::finished);
+        later.setFuture(client.readValueStandard(kPassword, 0));
+        return QTest::qWaitFor([&answered] { return !answered.isEmpty(); }, kWaitMs);
+    }
+
     // What the drive holds, read past the model.
     std::optional<qint32> driveValue(quint16 address, int set = 0)
     {
@@ -95,6 +108,17 @@ struct SimulatedDrive
         return model.valueIndex(address, set).data(Qt::ToolTipRole).toString();
     }
 };
+
+// How many records of a kind a spy on DriveClient::traffic holds.
+inline int records(const QSignalSpy &traffic, TrafficRecord::Kind kind)
+{
+    int count = 0;
+    for (const QList<QVariant> &arguments : traffic) {
+        if (arguments.at(0).value<TrafficRecord>().kind == kind)
+            ++count;
+    }
+    return count;
+}
 
 inline QStringList texts(const QSignalSpy &spy)
 {

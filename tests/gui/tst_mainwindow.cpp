@@ -1,5 +1,6 @@
 #include "tst_mainwindow_support.h"
 
+#include "edit/PollingController.h"
 #include "main/DriveSession.h"
 #include "main/NoticeBar.h"
 #include "main/RecentConnections.h"
@@ -277,7 +278,9 @@ private slots:
         if (!polling->isChecked())
             polling->trigger();
         QTRY_VERIFY_WITH_TIMEOUT(traffic.size() > 1000, kWaitMs);
-        QTest::qWait(300); // a few polling rounds
+        // Polling's requests are in the traffic too once a few of its rounds came back.
+        const PollingController *rounds = m_window->session()->pollingController();
+        QTRY_VERIFY_WITH_TIMEOUT(rounds->roundsCompleted() >= 3, kWaitMs);
 
         const auto decoder
             = Hsp5Codec(Hsp5Services::WithExtensions).makeDecoder(Role::Drive);

@@ -1,4 +1,4 @@
-#include "GuiTestDrive.h"
+#include "../parameters/EditorSampleDrive.h"
 
 #include "delegate/HexValueEdit.h"
 #include "delegate/ParameterDelegate.h"
@@ -16,7 +16,7 @@
 #include <memory>
 
 using namespace DriveDesk;
-using namespace DriveDesk::GuiTest;
+using namespace DriveDesk::EditorSample;
 
 // Editing values in a real tree view: the editor each kind of parameter gets, and what reaches
 // the model (valueEdited) or is refused with the reason. The view commits an editor's value

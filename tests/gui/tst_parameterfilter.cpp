@@ -1,4 +1,4 @@
-#include "GuiTestDrive.h"
+#include "../parameters/EditorSampleDrive.h"
 
 #include "model/ParameterFilterModel.h"
 #include "model/ParameterModel.h"
@@ -7,7 +7,7 @@
 #include <QTest>
 
 using namespace DriveDesk;
-using namespace DriveDesk::GuiTest;
+using namespace DriveDesk::EditorSample;
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "GuiTestDrive.h"
+#include "../parameters/EditorSampleDrive.h"
 
 #include "model/ParameterModel.h"
 
@@ -10,7 +10,7 @@
 #include <QTest>
 
 using namespace DriveDesk;
-using namespace DriveDesk::GuiTest;
+using namespace DriveDesk::EditorSample;
 
 namespace {
 

@@ -2,19 +2,22 @@
 
 #include "edit/PollingController.h"
 
+#include <QTimer>
+
 using namespace DriveDesk;
 using namespace DriveDesk::EditTest;
 
 namespace {
 
-int sentTelegrams(const QSignalSpy &traffic)
+// Waits while `intervals` polling intervals pass on a timer of its own, started now: a polling
+// timer left running, started before it, would have ticked by then.
+bool waitIntervals(const PollingController &polling, int intervals)
 {
-    int sent = 0;
-    for (const QList<QVariant> &arguments : traffic) {
-        if (arguments.at(0).value<TrafficRecord>().kind == TrafficRecord::Kind::Sent)
-            ++sent;
-    }
-    return sent;
+    QTimer clock;
+    clock.setTimerType(Qt::PreciseTimer);
+    QSignalSpy ticks(&clock, &QTimer::timeout);
+    clock.start(polling.intervalMs());
+    return QTest::qWaitFor([&ticks, intervals] { return ticks.size() >= intervals; }, kWaitMs);
 }
 
 } // namespace
@@ -71,13 +74,16 @@ private slots:
         QSignalSpy traffic(&drive.client, &DriveClient::traffic);
         polling.setEnabled(false);
         QVERIFY(!polling.isEnabled());
-        // Nothing new is sent: what was on the wire comes back, and the line stays quiet.
-        QTest::qWait(500);
-        const int settled = sentTelegrams(traffic);
-        QVERIFY2(settled <= 4, qPrintable(QString::number(settled)));
         const int rounds = polling.roundsCompleted();
-        QTest::qWait(500);
-        QCOMPARE(sentTelegrams(traffic), settled);
+        // Nothing new is sent: what was on the wire comes back (HSP5 keeps at most 4 there),
+        // and the line stays quiet while two rounds would have been due. Each later read is
+        // one request of the test's own.
+        QVERIFY(drive.answerToALaterRead());
+        const int settled = records(traffic, TrafficRecord::Kind::Sent) - 1;
+        QVERIFY2(settled <= 4, qPrintable(QString::number(settled)));
+        QVERIFY(waitIntervals(polling, 2));
+        QVERIFY(drive.answerToALaterRead());
+        QCOMPARE(records(traffic, TrafficRecord::Kind::Sent) - 2, settled);
         QCOMPARE(polling.roundsCompleted(), rounds);
     }
 
@@ -123,7 +129,7 @@ private slots:
         polling.setEnabled(true);
         QTRY_COMPARE(messages.size(), 1);
         QVERIFY(messages.constFirst().at(0).toString().contains(QStringLiteral("zz")));
-        QTest::qWait(200);
+        QVERIFY(waitIntervals(polling, 2));
         QCOMPARE(messages.size(), 1);
         QCOMPARE(polling.roundsCompleted(), 0);
     }

@@ -1,10 +1,10 @@
 # Links: connection settings, serial (socat pseudo-terminal pairs) and TCP.
-drivedesk_add_test(NAME tst_connectionsettings LABEL unit
+drivedesk_add_test(NAME tst_connectionsettings LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_connectionsettings.cpp LIBS drivedesk_link)
-drivedesk_add_test(NAME tst_seriallink LABEL integration
+drivedesk_add_test(NAME tst_seriallink LABELS unit integration
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_seriallink.cpp LIBS drivedesk_link)
-drivedesk_add_test(NAME tst_tcplink LABEL integration
+drivedesk_add_test(NAME tst_tcplink LABELS unit integration
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_tcplink.cpp LIBS drivedesk_link)
 # The links against drivedesk's own simulator (TCP and its pseudo-terminal).
-drivedesk_add_test(NAME tst_linktosimulator LABEL integration
+drivedesk_add_test(NAME tst_linktosimulator LABELS unit integration
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_linktosimulator.cpp LIBS drivedesk_bus)

@@ -1,17 +1,21 @@
-# Parameter metadata: properties, display scaling, plaintexts, ids, parameter files.
-drivedesk_add_test(NAME tst_displayscaling LABEL unit
+# Parameter metadata: properties, display scaling, plaintexts, ids, parameter files, and the
+# format values are shown and typed in.
+drivedesk_add_test(NAME tst_displayscaling LABELS unit
     SOURCES parameters/tst_displayscaling.cpp LIBS drivedesk_parameters)
-drivedesk_add_test(NAME tst_parameterproperties LABEL unit
+drivedesk_add_test(NAME tst_parameterproperties LABELS unit
     SOURCES parameters/tst_parameterproperties.cpp LIBS drivedesk_parameters)
-drivedesk_add_test(NAME tst_plaintexts LABEL unit
+drivedesk_add_test(NAME tst_plaintexts LABELS unit
     SOURCES parameters/tst_plaintexts.cpp LIBS drivedesk_parameters)
-drivedesk_add_test(NAME tst_parameterid LABEL unit
+drivedesk_add_test(NAME tst_parameterid LABELS unit
     SOURCES parameters/tst_parameterid.cpp LIBS drivedesk_parameters)
-drivedesk_add_test(NAME tst_drivedescription LABEL unit
+drivedesk_add_test(NAME tst_drivedescription LABELS unit
     SOURCES parameters/tst_drivedescription.cpp LIBS drivedesk_parameters)
-drivedesk_add_test(NAME tst_parameterdocument LABEL unit
+drivedesk_add_test(NAME tst_parameterdocument LABELS unit
     SOURCES parameters/tst_parameterdocument.cpp LIBS drivedesk_parameters)
-drivedesk_add_test(NAME tst_parameterfile LABEL unit
+drivedesk_add_test(NAME tst_parameterfile LABELS unit
     SOURCES parameters/tst_parameterfile.cpp LIBS drivedesk_parameters)
-drivedesk_add_test(NAME tst_metadatacache LABEL unit
+drivedesk_add_test(NAME tst_metadatacache LABELS unit
     SOURCES parameters/tst_metadatacache.cpp LIBS drivedesk_parameters)
+drivedesk_add_test(NAME tst_parameterformat LABELS unit
+    SOURCES parameters/tst_parameterformat.cpp parameters/EditorSampleDrive.h
+    LIBS drivedesk_parameters)

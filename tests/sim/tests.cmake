@@ -1,5 +1,5 @@
 # The simulated drive at the service level (no codec): each links drivedesk_sim only.
-drivedesk_add_test(NAME tst_simdatabase LABEL unit SOURCES sim/tst_simdatabase.cpp sim/SimRequests.h LIBS drivedesk_sim)
-drivedesk_add_test(NAME tst_simvalues LABEL unit SOURCES sim/tst_simvalues.cpp sim/SimRequests.h LIBS drivedesk_sim)
-drivedesk_add_test(NAME tst_simmetadata LABEL unit SOURCES sim/tst_simmetadata.cpp sim/SimRequests.h LIBS drivedesk_sim)
-drivedesk_add_test(NAME tst_simlive LABEL unit SOURCES sim/tst_simlive.cpp sim/SimRequests.h LIBS drivedesk_sim)
+drivedesk_add_test(NAME tst_simdatabase LABELS unit SOURCES sim/tst_simdatabase.cpp sim/SimRequests.h LIBS drivedesk_sim)
+drivedesk_add_test(NAME tst_simvalues LABELS unit SOURCES sim/tst_simvalues.cpp sim/SimRequests.h LIBS drivedesk_sim)
+drivedesk_add_test(NAME tst_simmetadata LABELS unit SOURCES sim/tst_simmetadata.cpp sim/SimRequests.h LIBS drivedesk_sim)
+drivedesk_add_test(NAME tst_simlive LABELS unit SOURCES sim/tst_simlive.cpp sim/SimRequests.h LIBS drivedesk_sim)

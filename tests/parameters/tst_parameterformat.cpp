@@ -1,11 +1,11 @@
-#include "GuiTestDrive.h"
+#include "EditorSampleDrive.h"
 
 #include "parameters/ParameterFormat.h"
 
 #include <QTest>
 
 using namespace DriveDesk;
-using namespace DriveDesk::GuiTest;
+using namespace DriveDesk::EditorSample;
 
 namespace {
 
@@ -124,5 +124,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestParameterFormat)
+QTEST_GUILESS_MAIN(TestParameterFormat)
 #include "tst_parameterformat.moc"

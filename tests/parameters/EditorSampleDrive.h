@@ -2,7 +2,9 @@
 
 #include "parameters/DriveDescription.h"
 
-namespace DriveDesk::GuiTest {
+// A drive description made by hand, with parameters of every kind the editor meets: what the
+// format test and the Widgets tests of the model, filter and delegate read.
+namespace DriveDesk::EditorSample {
 
 // Units and representations of the display flags (seed 002 2.7.1).
 inline constexpr quint16 kSeconds = 9;
@@ -144,4 +146,4 @@ inline DriveDescription drive()
     return drive;
 }
 
-} // namespace DriveDesk::GuiTest
+} // namespace DriveDesk::EditorSample
