@@ -94,7 +94,11 @@ private slots:
     {
         ClientOptions options;
         options.maxInFlight = 2;
-        Session s(simulated(Protocol::Hsp5, fast()), options);
+        // Replies that take a moment: the second request is always out before the first answer
+        // is in, however the threads are scheduled.
+        SimulationOptions simulation;
+        simulation.replyLatencyUs = 2000;
+        Session s(simulated(Protocol::Hsp5, simulation), options);
         QVERIFY(s.connected());
         const Batch batch = readMany(*s.client, 20);
         for (const QFuture<Reply> &future : batch.futures)
