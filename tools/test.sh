@@ -7,7 +7,7 @@ bash tools/setup.sh
 export QT_QPA_PLATFORM=offscreen
 ctest --test-dir build --output-on-failure -j2 --timeout 600
 
-# The sanitizers' options and the leak suppressions come with the tests (tests/CMakeLists.txt).
+# The sanitizers' options come with the tests (tests/CMakeLists.txt).
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DDRIVEDESK_SANITIZE=ON \
     -DDRIVEDESK_BUILD_BENCHMARKS=OFF
 cmake --build build-sanitize -j"$(nproc)"
