@@ -1811,6 +1811,10 @@ Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
         <source>this drive has no parameter %1</source>
         <translation>dieser Umrichter hat keinen Parameter %1</translation>
     </message>
+    <message>
+        <source>the connection to the drive was closed</source>
+        <translation>die Verbindung zum Umrichter wurde geschlossen</translation>
+    </message>
 </context>
 <context>
     <name>DriveIdentity</name>

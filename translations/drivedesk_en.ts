@@ -1811,6 +1811,10 @@ The DriveDesk parameter editor. Without --connect it opens the connection dialog
         <source>this drive has no parameter %1</source>
         <translation>this drive has no parameter %1</translation>
     </message>
+    <message>
+        <source>the connection to the drive was closed</source>
+        <translation>the connection to the drive was closed</translation>
+    </message>
 </context>
 <context>
     <name>DriveIdentity</name>
