@@ -85,7 +85,7 @@ void CliRunner::runLegacy()
     if (m_request.command == CliRequest::Command::Read) {
         m_client->readValueStandard(*address, 0).then(this, [this, id](const Reply &r) {
             if (!r.ok())
-                return fail(1, QStringLiteral("%1: %2").arg(id, r.message(language())));
+                return fail(1, QStringLiteral("%1: %2").arg(id, r.message()));
             m_out << QStringLiteral("%1 = %2 (raw)\n").arg(id).arg(r.data<ParameterValue>()->value);
             done();
         });
@@ -97,11 +97,11 @@ void CliRunner::runLegacy()
         return fail(2, QStringLiteral("'%1' is not a raw 16-bit value (DIN66019 writes raw values)").arg(m_request.value));
     m_client->writeValueStandard(*address, raw, 0).then(this, [this, id, address = *address](const Reply &r) {
         if (!r.ok())
-            return fail(1, QStringLiteral("%1: %2").arg(id, r.message(language())));
+            return fail(1, QStringLiteral("%1: %2").arg(id, r.message()));
         m_client->readValueStandard(address, 0).then(this, [this, id](const Reply &back) {
             if (!back.ok())
                 return fail(1, QStringLiteral("%1: written, but reading it back failed: %2")
-                                   .arg(id, back.message(language())));
+                                   .arg(id, back.message()));
             m_out << QStringLiteral("%1 = %2 (raw)\n").arg(id).arg(back.data<ParameterValue>()->value);
             done();
         });
@@ -232,7 +232,7 @@ void CliRunner::runRead()
                                             : QStringLiteral("active set");
         reply.then(this, [this, id, where, parameter](const Reply &r) {
             if (!r.ok())
-                return fail(1, QStringLiteral("%1: %2").arg(id, r.message(language())));
+                return fail(1, QStringLiteral("%1: %2").arg(id, r.message()));
             const qint32 raw = r.data<ParameterValue>()->value;
             m_out << QStringLiteral("%1  %2 = %3  (raw %4, %5)\n")
                          .arg(id, parameter.name, valueText(parameter, raw))

@@ -1,7 +1,5 @@
 #pragma once
 
-#include "protocol/Language.h"
-
 #include <QString>
 
 #include <optional>
@@ -21,7 +19,7 @@ enum class PasswordLevel : quint8 {
     Supervisor = 7,
 };
 
-QString passwordLevelName(PasswordLevel level, Language language = Language::English);
+QString passwordLevelName(PasswordLevel level);
 
 // What the password parameter reads while the level is in force: -1 (CP read only) .. -8.
 qint32 passwordReadValue(PasswordLevel level);

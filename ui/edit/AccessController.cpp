@@ -30,8 +30,7 @@ void AccessController::readLevel()
             takeReadValue(value->value);
             return;
         }
-        emit message(tr("The password level could not be read: %1")
-                         .arg(reply.message(m_client->settings().language)));
+        emit message(tr("The password level could not be read: %1").arg(reply.message()));
     });
 }
 
@@ -40,8 +39,7 @@ void AccessController::enterPassword(int password)
     whenReplied(this, m_client->writeValueStandard(kPasswordAddress, password, 0),
                 [this](const Reply &reply) {
                     if (!reply.ok()) {
-                        emit message(tr("Password not accepted: %1")
-                                         .arg(reply.message(m_client->settings().language)));
+                        emit message(tr("Password not accepted: %1").arg(reply.message()));
                         return;
                     }
                     emit message(tr("Password accepted"));
@@ -87,7 +85,7 @@ void AccessController::modelDataChanged(const QModelIndex &topLeft, const QModel
 
 QString AccessController::levelName(PasswordLevel level) const
 {
-    return passwordLevelName(level, m_client->settings().language);
+    return passwordLevelName(level);
 }
 
 } // namespace DriveDesk

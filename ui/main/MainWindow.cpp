@@ -306,7 +306,7 @@ void MainWindow::onConnectionFailed(const QString &reason)
 
 void MainWindow::onLevelChanged(PasswordLevel level)
 {
-    m_levelLabel->setText(tr("Password level: %1").arg(passwordLevelName(level, m_language)));
+    m_levelLabel->setText(tr("Password level: %1").arg(passwordLevelName(level)));
 }
 
 void MainWindow::showMessage(const QString &text)

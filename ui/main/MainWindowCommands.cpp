@@ -174,8 +174,7 @@ void MainWindow::enterPassword()
     const AccessController *access = m_session->accessController();
     auto *dialog = new PasswordDialog(this);
     dialog->setLevel(access->isLevelKnown() ? std::optional<PasswordLevel>(access->level())
-                                            : std::nullopt,
-                     m_language);
+                                            : std::nullopt);
     connect(dialog, &QDialog::accepted, this, [this, dialog] {
         if (isReady() && dialog->password())
             m_session->accessController()->enterPassword(*dialog->password());
