@@ -248,6 +248,96 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::CliRunner</name>
+    <message>
+        <source>all sets</source>
+        <translation>alle Sätze</translation>
+    </message>
+    <message numerus="yes">
+        <source>set(s) %1</source>
+        <translation>
+            <numerusform>Satz %1</numerusform>
+            <numerusform>Sätze %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>cannot connect to %1: %2</source>
+        <translation>keine Verbindung zu %1 möglich: %2</translation>
+    </message>
+    <message>
+        <source>DIN66019 carries parameter values only; use --protocol din66019ii for info and scan</source>
+        <translation>DIN66019 überträgt nur Parameterwerte; für info und scan --protocol din66019ii angeben</translation>
+    </message>
+    <message>
+        <source>%1 (DIN66019 has no group names: give the address, e.g. 0x0203)</source>
+        <translation>%1 (DIN66019 kennt keine Gruppennamen: die Adresse angeben, z. B. 0x0203)</translation>
+    </message>
+    <message>
+        <source>%1 = %2 (raw)</source>
+        <translation>%1 = %2 (Rohwert)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a raw 16-bit value (DIN66019 writes raw values)</source>
+        <translation>„%1“ ist kein 16-Bit-Rohwert (DIN66019 schreibt Rohwerte)</translation>
+    </message>
+    <message>
+        <source>%1: written, but reading it back failed: %2</source>
+        <translation>%1: geschrieben, aber das Zurücklesen ist fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>metadata from the cache of this kind of drive (%1); --no-cache reads it from the drive</source>
+        <translation>Metadaten aus dem Cache dieser Umrichterart (%1); --no-cache liest sie vom Umrichter</translation>
+    </message>
+    <message>
+        <source>could not read the groups: %1</source>
+        <translation>die Gruppen konnten nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>scan incomplete: %1</source>
+        <translation>Einlesen unvollständig: %1</translation>
+    </message>
+    <message>
+        <source>the drive has no parameter %1</source>
+        <translation>der Umrichter hat keinen Parameter %1</translation>
+    </message>
+    <message>
+        <source>set %1</source>
+        <translation>Satz %1</translation>
+    </message>
+    <message>
+        <source>active set</source>
+        <translation>aktiver Satz</translation>
+    </message>
+    <message>
+        <source>%1  %2 = %3  (raw %4, %5)</source>
+        <translation>%1  %2 = %3  (Rohwert %4, %5)</translation>
+    </message>
+    <message>
+        <source>%1 is read-only; nothing was written</source>
+        <translation>%1 ist schreibgeschützt; nichts wurde geschrieben</translation>
+    </message>
+    <message>
+        <source>%1: %2; nothing was written</source>
+        <translation>%1: %2; nichts wurde geschrieben</translation>
+    </message>
+    <message>
+        <source>the active set holds %1</source>
+        <translation>der aktive Satz enthält %1</translation>
+    </message>
+    <message>
+        <source>set %1 holds %2</source>
+        <translation>Satz %1 enthält %2</translation>
+    </message>
+    <message>
+        <source>%1: not written to %2: %3</source>
+        <translation>%1: %2 nicht geschrieben: %3</translation>
+    </message>
+    <message>
+        <source>%1: written %2, but %3</source>
+        <translation>%1: %2 geschrieben, aber %3</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::ClientWorker</name>
     <message>
         <source>arrived before the open request was sent, ignored: %1</source>
@@ -2458,6 +2548,71 @@ Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
     <message>
         <source>properties 2: free bit %1 set</source>
         <translation>Eigenschaften 2: freies Bit %1 gesetzt</translation>
+    </message>
+</context>
+<context>
+    <name>ParameterTable</name>
+    <message numerus="yes">
+        <source>%n group(s)</source>
+        <translation>
+            <numerusform>%n Gruppe</numerusform>
+            <numerusform>%n Gruppen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s)</source>
+        <translation>
+            <numerusform>%n Parameter</numerusform>
+            <numerusform>%n Parameter</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 (sets 0-7)</source>
+        <translation>%1 (Sätze 0-7)</translation>
+    </message>
+    <message>
+        <source>parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation>min</translation>
+    </message>
+    <message>
+        <source>max</source>
+        <translation>max</translation>
+    </message>
+    <message>
+        <source>default</source>
+        <translation>Vorgabe</translation>
+    </message>
+    <message>
+        <source>unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>connection: %1 (%2)</source>
+        <translation>Verbindung: %1 (%2)</translation>
+    </message>
+    <message>
+        <source>group</source>
+        <translation>Gruppe</translation>
+    </message>
+    <message>
+        <source>address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <source>parameters</source>
+        <translation>Parameter</translation>
     </message>
 </context>
 <context>

@@ -248,6 +248,96 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::CliRunner</name>
+    <message>
+        <source>all sets</source>
+        <translation>all sets</translation>
+    </message>
+    <message numerus="yes">
+        <source>set(s) %1</source>
+        <translation>
+            <numerusform>set %1</numerusform>
+            <numerusform>sets %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>cannot connect to %1: %2</source>
+        <translation>cannot connect to %1: %2</translation>
+    </message>
+    <message>
+        <source>DIN66019 carries parameter values only; use --protocol din66019ii for info and scan</source>
+        <translation>DIN66019 carries parameter values only; use --protocol din66019ii for info and scan</translation>
+    </message>
+    <message>
+        <source>%1 (DIN66019 has no group names: give the address, e.g. 0x0203)</source>
+        <translation>%1 (DIN66019 has no group names: give the address, e.g. 0x0203)</translation>
+    </message>
+    <message>
+        <source>%1 = %2 (raw)</source>
+        <translation>%1 = %2 (raw)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a raw 16-bit value (DIN66019 writes raw values)</source>
+        <translation>&apos;%1&apos; is not a raw 16-bit value (DIN66019 writes raw values)</translation>
+    </message>
+    <message>
+        <source>%1: written, but reading it back failed: %2</source>
+        <translation>%1: written, but reading it back failed: %2</translation>
+    </message>
+    <message>
+        <source>metadata from the cache of this kind of drive (%1); --no-cache reads it from the drive</source>
+        <translation>metadata from the cache of this kind of drive (%1); --no-cache reads it from the drive</translation>
+    </message>
+    <message>
+        <source>could not read the groups: %1</source>
+        <translation>could not read the groups: %1</translation>
+    </message>
+    <message>
+        <source>scan incomplete: %1</source>
+        <translation>scan incomplete: %1</translation>
+    </message>
+    <message>
+        <source>the drive has no parameter %1</source>
+        <translation>the drive has no parameter %1</translation>
+    </message>
+    <message>
+        <source>set %1</source>
+        <translation>set %1</translation>
+    </message>
+    <message>
+        <source>active set</source>
+        <translation>active set</translation>
+    </message>
+    <message>
+        <source>%1  %2 = %3  (raw %4, %5)</source>
+        <translation>%1  %2 = %3  (raw %4, %5)</translation>
+    </message>
+    <message>
+        <source>%1 is read-only; nothing was written</source>
+        <translation>%1 is read-only; nothing was written</translation>
+    </message>
+    <message>
+        <source>%1: %2; nothing was written</source>
+        <translation>%1: %2; nothing was written</translation>
+    </message>
+    <message>
+        <source>the active set holds %1</source>
+        <translation>the active set holds %1</translation>
+    </message>
+    <message>
+        <source>set %1 holds %2</source>
+        <translation>set %1 holds %2</translation>
+    </message>
+    <message>
+        <source>%1: not written to %2: %3</source>
+        <translation>%1: not written to %2: %3</translation>
+    </message>
+    <message>
+        <source>%1: written %2, but %3</source>
+        <translation>%1: written %2, but %3</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::ClientWorker</name>
     <message>
         <source>arrived before the open request was sent, ignored: %1</source>
@@ -2458,6 +2548,71 @@ The DriveDesk parameter editor. Without --connect it opens the connection dialog
     <message>
         <source>properties 2: free bit %1 set</source>
         <translation>properties 2: free bit %1 set</translation>
+    </message>
+</context>
+<context>
+    <name>ParameterTable</name>
+    <message numerus="yes">
+        <source>%n group(s)</source>
+        <translation>
+            <numerusform>%n group</numerusform>
+            <numerusform>%n groups</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s)</source>
+        <translation>
+            <numerusform>%n parameter</numerusform>
+            <numerusform>%n parameters</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 (sets 0-7)</source>
+        <translation>%1 (sets 0-7)</translation>
+    </message>
+    <message>
+        <source>parameter</source>
+        <translation>parameter</translation>
+    </message>
+    <message>
+        <source>name</source>
+        <translation>name</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>value</translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation>min</translation>
+    </message>
+    <message>
+        <source>max</source>
+        <translation>max</translation>
+    </message>
+    <message>
+        <source>default</source>
+        <translation>default</translation>
+    </message>
+    <message>
+        <source>unit</source>
+        <translation>unit</translation>
+    </message>
+    <message>
+        <source>connection: %1 (%2)</source>
+        <translation>connection: %1 (%2)</translation>
+    </message>
+    <message>
+        <source>group</source>
+        <translation>group</translation>
+    </message>
+    <message>
+        <source>address</source>
+        <translation>address</translation>
+    </message>
+    <message>
+        <source>parameters</source>
+        <translation>parameters</translation>
     </message>
 </context>
 <context>
