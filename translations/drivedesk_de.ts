@@ -122,10 +122,6 @@
         <translation>unbekannte Verbindung „%1“: erwartet wird tcp:HOST:PORT, serial:GERÄT oder sim</translation>
     </message>
     <message>
-        <source> drive %1</source>
-        <translation> Umrichter %1</translation>
-    </message>
-    <message>
         <source>simulated %1 drive</source>
         <translation>simulierter %1-Umrichter</translation>
     </message>
@@ -140,6 +136,10 @@
     <message>
         <source>&quot;%1&quot; is not a TCP port (0..65535, 0 picks a free one)</source>
         <translation>„%1“ ist kein TCP-Port (0..65535, 0 wählt einen freien)</translation>
+    </message>
+    <message>
+        <source>%1 drive %2</source>
+        <translation>%1 Umrichter %2</translation>
     </message>
 </context>
 <context>
@@ -1175,20 +1175,6 @@
         <source>Nothing was read from the drive: %1.</source>
         <translation>Vom Umrichter wurde nichts gelesen: %1.</translation>
     </message>
-    <message numerus="yes">
-        <source>Read %n parameter(s)</source>
-        <translation>
-            <numerusform>Gelesen: %n Parameter</numerusform>
-            <numerusform>Gelesen: %n Parameter</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source> in %n group(s).</source>
-        <translation>
-            <numerusform> in %n Gruppe.</numerusform>
-            <numerusform> in %n Gruppen.</numerusform>
-        </translation>
-    </message>
     <message>
         <source>Nothing was read: %1. Press Refresh (%2) to read the drive.</source>
         <translation>Nichts gelesen: %1. Aktualisieren (%2) drücken, um den Umrichter einzulesen.</translation>
@@ -1476,6 +1462,20 @@
         <source>The groups, names, limits and texts come from the metadata cache of this kind of drive; the values were read from the drive. Drive &gt; Read Metadata Again reads everything.</source>
         <translation>Gruppen, Namen, Grenzen und Texte stammen aus dem Metadaten-Cache dieser Umrichterart; die Werte wurden vom Umrichter gelesen. Umrichter &gt; Metadaten neu lesen liest alles.</translation>
     </message>
+    <message numerus="yes">
+        <source>Read %n parameter(s).</source>
+        <translation>
+            <numerusform>%n Parameter gelesen.</numerusform>
+            <numerusform>%n Parameter gelesen.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>The drive has %n group(s).</source>
+        <translation>
+            <numerusform>Der Umrichter hat %n Gruppe.</numerusform>
+            <numerusform>Der Umrichter hat %n Gruppen.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::NoticeBar</name>
@@ -1515,23 +1515,26 @@
         <translation>Diese Gruppe enthält keine Parameter.</translation>
     </message>
     <message>
-        <source>: none shown</source>
-        <translation>: keiner angezeigt</translation>
-    </message>
-    <message numerus="yes">
-        <source>: %n parameter(s)</source>
-        <translation>
-            <numerusform>: %n Parameter</numerusform>
-            <numerusform>: %n Parameter</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source> (filtered)</source>
-        <translation> (gefiltert)</translation>
-    </message>
-    <message>
         <source>Favourite</source>
         <translation>Favorit</translation>
+    </message>
+    <message>
+        <source>%1: none shown</source>
+        <translation>%1: keiner angezeigt</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n parameter(s) (filtered)</source>
+        <translation>
+            <numerusform>%1: %n Parameter (gefiltert)</numerusform>
+            <numerusform>%1: %n Parameter (gefiltert)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n parameter(s)</source>
+        <translation>
+            <numerusform>%1: %n Parameter</numerusform>
+            <numerusform>%1: %n Parameter</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1733,8 +1736,8 @@
 <context>
     <name>DriveDesk::RecentConnections</name>
     <message>
-        <source>address %1</source>
-        <translation>Adresse %1</translation>
+        <source>%1, address %2</source>
+        <translation>%1, Adresse %2</translation>
     </message>
 </context>
 <context>
@@ -1839,6 +1842,17 @@
     <message>
         <source>parity error on a received character</source>
         <translation>Paritätsfehler in einem empfangenen Zeichen</translation>
+    </message>
+    <message>
+        <source>simulated drive</source>
+        <translation>simulierter Umrichter</translation>
+    </message>
+    <message numerus="yes">
+        <source>simulated drive(s) %1</source>
+        <translation>
+            <numerusform>simulierter Umrichter %1</numerusform>
+            <numerusform>simulierte Umrichter %1</numerusform>
+        </translation>
     </message>
 </context>
 <context>

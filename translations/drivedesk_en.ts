@@ -122,10 +122,6 @@
         <translation>unknown connection &quot;%1&quot;: expected tcp:HOST:PORT, serial:DEVICE or sim</translation>
     </message>
     <message>
-        <source> drive %1</source>
-        <translation> drive %1</translation>
-    </message>
-    <message>
         <source>simulated %1 drive</source>
         <translation>simulated %1 drive</translation>
     </message>
@@ -140,6 +136,10 @@
     <message>
         <source>&quot;%1&quot; is not a TCP port (0..65535, 0 picks a free one)</source>
         <translation>&quot;%1&quot; is not a TCP port (0..65535, 0 picks a free one)</translation>
+    </message>
+    <message>
+        <source>%1 drive %2</source>
+        <translation>%1 drive %2</translation>
     </message>
 </context>
 <context>
@@ -1175,20 +1175,6 @@
         <source>Nothing was read from the drive: %1.</source>
         <translation>Nothing was read from the drive: %1.</translation>
     </message>
-    <message numerus="yes">
-        <source>Read %n parameter(s)</source>
-        <translation>
-            <numerusform>Read %n parameter</numerusform>
-            <numerusform>Read %n parameters</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source> in %n group(s).</source>
-        <translation>
-            <numerusform> in %n group.</numerusform>
-            <numerusform> in %n groups.</numerusform>
-        </translation>
-    </message>
     <message>
         <source>Nothing was read: %1. Press Refresh (%2) to read the drive.</source>
         <translation>Nothing was read: %1. Press Refresh (%2) to read the drive.</translation>
@@ -1476,6 +1462,20 @@
         <source>The groups, names, limits and texts come from the metadata cache of this kind of drive; the values were read from the drive. Drive &gt; Read Metadata Again reads everything.</source>
         <translation>The groups, names, limits and texts come from the metadata cache of this kind of drive; the values were read from the drive. Drive &gt; Read Metadata Again reads everything.</translation>
     </message>
+    <message numerus="yes">
+        <source>Read %n parameter(s).</source>
+        <translation>
+            <numerusform>Read %n parameter.</numerusform>
+            <numerusform>Read %n parameters.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>The drive has %n group(s).</source>
+        <translation>
+            <numerusform>The drive has %n group.</numerusform>
+            <numerusform>The drive has %n groups.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::NoticeBar</name>
@@ -1515,23 +1515,26 @@
         <translation>This group holds no parameters.</translation>
     </message>
     <message>
-        <source>: none shown</source>
-        <translation>: none shown</translation>
-    </message>
-    <message numerus="yes">
-        <source>: %n parameter(s)</source>
-        <translation>
-            <numerusform>: %n parameter</numerusform>
-            <numerusform>: %n parameters</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source> (filtered)</source>
-        <translation> (filtered)</translation>
-    </message>
-    <message>
         <source>Favourite</source>
         <translation>Favourite</translation>
+    </message>
+    <message>
+        <source>%1: none shown</source>
+        <translation>%1: none shown</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n parameter(s) (filtered)</source>
+        <translation>
+            <numerusform>%1: %n parameter (filtered)</numerusform>
+            <numerusform>%1: %n parameters (filtered)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n parameter(s)</source>
+        <translation>
+            <numerusform>%1: %n parameter</numerusform>
+            <numerusform>%1: %n parameters</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1733,8 +1736,8 @@
 <context>
     <name>DriveDesk::RecentConnections</name>
     <message>
-        <source>address %1</source>
-        <translation>address %1</translation>
+        <source>%1, address %2</source>
+        <translation>%1, address %2</translation>
     </message>
 </context>
 <context>
@@ -1839,6 +1842,17 @@
     <message>
         <source>parity error on a received character</source>
         <translation>parity error on a received character</translation>
+    </message>
+    <message>
+        <source>simulated drive</source>
+        <translation>simulated drive</translation>
+    </message>
+    <message numerus="yes">
+        <source>simulated drive(s) %1</source>
+        <translation>
+            <numerusform>simulated drive %1</numerusform>
+            <numerusform>simulated drives %1</numerusform>
+        </translation>
     </message>
 </context>
 <context>

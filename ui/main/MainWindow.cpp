@@ -272,8 +272,9 @@ void MainWindow::onScanFinished(const QString &problem)
         int parameters = 0;
         for (int group = 0; group < m_model->rowCount(); ++group)
             parameters += m_model->rowCount(m_model->index(group, 0));
-        showMessage(tr("Read %n parameter(s)", nullptr, parameters)
-                    + tr(" in %n group(s).", nullptr, m_model->rowCount()));
+        const int groups = m_model->rowCount();
+        showMessage(tr("Read %n parameter(s).", nullptr, parameters) + QLatin1Char(' ')
+                    + tr("The drive has %n group(s).", nullptr, groups));
     } else if (m_model->rowCount() == 0) {
         m_notice->showInformation(
             tr("Nothing was read: %1. Press Refresh (%2) to read the drive.")
