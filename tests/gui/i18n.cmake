@@ -3,4 +3,5 @@
 drivedesk_add_test(NAME tst_translations LABEL gui
     SOURCES gui/tst_translations.cpp LIBS drivedesk_ui drivedesk_translations)
 target_compile_definitions(tst_translations PRIVATE
+    DRIVEDESK_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     DRIVEDESK_TRANSLATIONS_DIR="${PROJECT_SOURCE_DIR}/translations")
