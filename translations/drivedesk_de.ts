@@ -2,6 +2,73 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de" sourcelanguage="en">
 <context>
+    <name>Acknowledge</name>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>not ready</source>
+        <translation>nicht bereit</translation>
+    </message>
+    <message>
+        <source>address or password invalid</source>
+        <translation>Adresse oder Passwort ungültig</translation>
+    </message>
+    <message>
+        <source>data invalid</source>
+        <translation>Daten ungültig</translation>
+    </message>
+    <message>
+        <source>parameter write protected</source>
+        <translation>Parameter schreibgeschützt</translation>
+    </message>
+    <message>
+        <source>BCC error</source>
+        <translation>BCC-Fehler</translation>
+    </message>
+    <message>
+        <source>inverter busy</source>
+        <translation>Umrichter beschäftigt</translation>
+    </message>
+    <message>
+        <source>service not available</source>
+        <translation>Dienst nicht verfügbar</translation>
+    </message>
+    <message>
+        <source>password invalid</source>
+        <translation>Passwort ungültig</translation>
+    </message>
+    <message>
+        <source>telegram framing error: wrong count of characters</source>
+        <translation>Telegramm-Rahmenfehler: falsche Zeichenanzahl</translation>
+    </message>
+    <message>
+        <source>transmission error: overrun, framing or parity error</source>
+        <translation>Übertragungsfehler: Überlauf-, Rahmen- oder Paritätsfehler</translation>
+    </message>
+    <message>
+        <source>set selection invalid</source>
+        <translation>Satzkennung ungültig</translation>
+    </message>
+    <message>
+        <source>language selection invalid</source>
+        <translation>Sprachkennung ungültig</translation>
+    </message>
+    <message>
+        <source>address invalid</source>
+        <translation>Adresse ungültig</translation>
+    </message>
+    <message>
+        <source>operation not possible</source>
+        <translation>Operation nicht möglich</translation>
+    </message>
+    <message>
+        <source>unknown acknowledge 15</source>
+        <translation>unbekannte Quittung 15</translation>
+    </message>
+</context>
+<context>
     <name>ConnectionOptions</name>
     <message>
         <source>--%1 %2: expected a number from %3 to %4</source>
@@ -55,10 +122,6 @@
         <translation>unbekannte Verbindung „%1“: erwartet wird tcp:HOST:PORT, serial:GERÄT oder sim</translation>
     </message>
     <message>
-        <source> drive %1</source>
-        <translation> Umrichter %1</translation>
-    </message>
-    <message>
         <source>simulated %1 drive</source>
         <translation>simulierter %1-Umrichter</translation>
     </message>
@@ -73,6 +136,10 @@
     <message>
         <source>&quot;%1&quot; is not a TCP port (0..65535, 0 picks a free one)</source>
         <translation>„%1“ ist kein TCP-Port (0..65535, 0 wählt einen freien)</translation>
+    </message>
+    <message>
+        <source>%1 drive %2</source>
+        <translation>%1 Umrichter %2</translation>
     </message>
 </context>
 <context>
@@ -181,6 +248,96 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::CliRunner</name>
+    <message>
+        <source>all sets</source>
+        <translation>alle Sätze</translation>
+    </message>
+    <message numerus="yes">
+        <source>set(s) %1</source>
+        <translation>
+            <numerusform>Satz %1</numerusform>
+            <numerusform>Sätze %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>cannot connect to %1: %2</source>
+        <translation>keine Verbindung zu %1 möglich: %2</translation>
+    </message>
+    <message>
+        <source>DIN66019 carries parameter values only; use --protocol din66019ii for info and scan</source>
+        <translation>DIN66019 überträgt nur Parameterwerte; für info und scan --protocol din66019ii angeben</translation>
+    </message>
+    <message>
+        <source>%1 (DIN66019 has no group names: give the address, e.g. 0x0203)</source>
+        <translation>%1 (DIN66019 kennt keine Gruppennamen: die Adresse angeben, z. B. 0x0203)</translation>
+    </message>
+    <message>
+        <source>%1 = %2 (raw)</source>
+        <translation>%1 = %2 (Rohwert)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a raw 16-bit value (DIN66019 writes raw values)</source>
+        <translation>„%1“ ist kein 16-Bit-Rohwert (DIN66019 schreibt Rohwerte)</translation>
+    </message>
+    <message>
+        <source>%1: written, but reading it back failed: %2</source>
+        <translation>%1: geschrieben, aber das Zurücklesen ist fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>metadata from the cache of this kind of drive (%1); --no-cache reads it from the drive</source>
+        <translation>Metadaten aus dem Cache dieser Umrichterart (%1); --no-cache liest sie vom Umrichter</translation>
+    </message>
+    <message>
+        <source>could not read the groups: %1</source>
+        <translation>die Gruppen konnten nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>scan incomplete: %1</source>
+        <translation>Einlesen unvollständig: %1</translation>
+    </message>
+    <message>
+        <source>the drive has no parameter %1</source>
+        <translation>der Umrichter hat keinen Parameter %1</translation>
+    </message>
+    <message>
+        <source>set %1</source>
+        <translation>Satz %1</translation>
+    </message>
+    <message>
+        <source>active set</source>
+        <translation>aktiver Satz</translation>
+    </message>
+    <message>
+        <source>%1  %2 = %3  (raw %4, %5)</source>
+        <translation>%1  %2 = %3  (Rohwert %4, %5)</translation>
+    </message>
+    <message>
+        <source>%1 is read-only; nothing was written</source>
+        <translation>%1 ist schreibgeschützt; nichts wurde geschrieben</translation>
+    </message>
+    <message>
+        <source>%1: %2; nothing was written</source>
+        <translation>%1: %2; nichts wurde geschrieben</translation>
+    </message>
+    <message>
+        <source>the active set holds %1</source>
+        <translation>der aktive Satz enthält %1</translation>
+    </message>
+    <message>
+        <source>set %1 holds %2</source>
+        <translation>Satz %1 enthält %2</translation>
+    </message>
+    <message>
+        <source>%1: not written to %2: %3</source>
+        <translation>%1: %2 nicht geschrieben: %3</translation>
+    </message>
+    <message>
+        <source>%1: written %2, but %3</source>
+        <translation>%1: %2 geschrieben, aber %3</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::ClientWorker</name>
     <message>
         <source>arrived before the open request was sent, ignored: %1</source>
@@ -264,6 +421,52 @@
     <message>
         <source>%1: this program cannot open such a connection</source>
         <translation>%1: dieses Programm kann eine solche Verbindung nicht öffnen</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n timeout(s)</source>
+        <translation>
+            <numerusform>%n Zeitüberschreitung</numerusform>
+            <numerusform>%n Zeitüberschreitungen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n answer(s) with a wrong BCC</source>
+        <translation>
+            <numerusform>%n Antwort mit falschem BCC</numerusform>
+            <numerusform>%n Antworten mit falschem BCC</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n line error(s)</source>
+        <translation>
+            <numerusform>%n Leitungsfehler</numerusform>
+            <numerusform>%n Leitungsfehler</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n unreadable answer(s)</source>
+        <translation>
+            <numerusform>%n unlesbare Antwort</numerusform>
+            <numerusform>%n unlesbare Antworten</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n answer(s) that did not match the request</source>
+        <translation>
+            <numerusform>%n Antwort, die nicht zur Anfrage passte</numerusform>
+            <numerusform>%n Antworten, die nicht zur Anfrage passten</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n transient refusal(s) (%1)</source>
+        <translation>
+            <numerusform>%n vorübergehende Ablehnung (%1)</numerusform>
+            <numerusform>%n vorübergehende Ablehnungen (%1)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>timeout %1 ms</source>
+        <translation>Wartezeit %1 ms</translation>
     </message>
 </context>
 <context>
@@ -972,20 +1175,6 @@
         <source>Nothing was read from the drive: %1.</source>
         <translation>Vom Umrichter wurde nichts gelesen: %1.</translation>
     </message>
-    <message numerus="yes">
-        <source>Read %n parameter(s)</source>
-        <translation>
-            <numerusform>Gelesen: %n Parameter</numerusform>
-            <numerusform>Gelesen: %n Parameter</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source> in %n group(s).</source>
-        <translation>
-            <numerusform> in %n Gruppe.</numerusform>
-            <numerusform> in %n Gruppen.</numerusform>
-        </translation>
-    </message>
     <message>
         <source>Nothing was read: %1. Press Refresh (%2) to read the drive.</source>
         <translation>Nichts gelesen: %1. Aktualisieren (%2) drücken, um den Umrichter einzulesen.</translation>
@@ -1273,6 +1462,20 @@
         <source>The groups, names, limits and texts come from the metadata cache of this kind of drive; the values were read from the drive. Drive &gt; Read Metadata Again reads everything.</source>
         <translation>Gruppen, Namen, Grenzen und Texte stammen aus dem Metadaten-Cache dieser Umrichterart; die Werte wurden vom Umrichter gelesen. Umrichter &gt; Metadaten neu lesen liest alles.</translation>
     </message>
+    <message numerus="yes">
+        <source>Read %n parameter(s).</source>
+        <translation>
+            <numerusform>%n Parameter gelesen.</numerusform>
+            <numerusform>%n Parameter gelesen.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>The drive has %n group(s).</source>
+        <translation>
+            <numerusform>Der Umrichter hat %n Gruppe.</numerusform>
+            <numerusform>Der Umrichter hat %n Gruppen.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::NoticeBar</name>
@@ -1312,23 +1515,26 @@
         <translation>Diese Gruppe enthält keine Parameter.</translation>
     </message>
     <message>
-        <source>: none shown</source>
-        <translation>: keiner angezeigt</translation>
-    </message>
-    <message numerus="yes">
-        <source>: %n parameter(s)</source>
-        <translation>
-            <numerusform>: %n Parameter</numerusform>
-            <numerusform>: %n Parameter</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source> (filtered)</source>
-        <translation> (gefiltert)</translation>
-    </message>
-    <message>
         <source>Favourite</source>
         <translation>Favorit</translation>
+    </message>
+    <message>
+        <source>%1: none shown</source>
+        <translation>%1: keiner angezeigt</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n parameter(s) (filtered)</source>
+        <translation>
+            <numerusform>%1: %n Parameter (gefiltert)</numerusform>
+            <numerusform>%1: %n Parameter (gefiltert)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n parameter(s)</source>
+        <translation>
+            <numerusform>%1: %n Parameter</numerusform>
+            <numerusform>%1: %n Parameter</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1530,8 +1736,8 @@
 <context>
     <name>DriveDesk::RecentConnections</name>
     <message>
-        <source>address %1</source>
-        <translation>Adresse %1</translation>
+        <source>%1, address %2</source>
+        <translation>%1, Adresse %2</translation>
     </message>
 </context>
 <context>
@@ -1636,6 +1842,17 @@
     <message>
         <source>parity error on a received character</source>
         <translation>Paritätsfehler in einem empfangenen Zeichen</translation>
+    </message>
+    <message>
+        <source>simulated drive</source>
+        <translation>simulierter Umrichter</translation>
+    </message>
+    <message numerus="yes">
+        <source>simulated drive(s) %1</source>
+        <translation>
+            <numerusform>simulierter Umrichter %1</numerusform>
+            <numerusform>simulierte Umrichter %1</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1811,6 +2028,10 @@ Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
         <source>this drive has no parameter %1</source>
         <translation>dieser Umrichter hat keinen Parameter %1</translation>
     </message>
+    <message>
+        <source>the connection to the drive was closed</source>
+        <translation>die Verbindung zum Umrichter wurde geschlossen</translation>
+    </message>
 </context>
 <context>
     <name>DriveIdentity</name>
@@ -1841,6 +2062,25 @@ Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
     <message>
         <source>Type %1, software %2, serial number %3</source>
         <translation>Typ %1, Software %2, Seriennummer %3</translation>
+    </message>
+</context>
+<context>
+    <name>GroupProperties</name>
+    <message>
+        <source>password level: %1</source>
+        <translation>Passwortlevel: %1</translation>
+    </message>
+    <message>
+        <source>visible on the display</source>
+        <translation>sichtbar auf der Anzeige</translation>
+    </message>
+    <message>
+        <source>visible in COMBIVIS</source>
+        <translation>sichtbar über COMBIVIS</translation>
+    </message>
+    <message>
+        <source>free bit %1 set</source>
+        <translation>freies Bit %1 gesetzt</translation>
     </message>
 </context>
 <context>
@@ -2084,6 +2324,347 @@ Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
     </message>
 </context>
 <context>
+    <name>ParameterProperties</name>
+    <message>
+        <source>stored as byte</source>
+        <translation>gespeichert als Byte</translation>
+    </message>
+    <message>
+        <source>stored as word</source>
+        <translation>gespeichert als Wort</translation>
+    </message>
+    <message>
+        <source>stored as long</source>
+        <translation>gespeichert als Long</translation>
+    </message>
+    <message>
+        <source>storage width 3 (not used)</source>
+        <translation>Speicherbreite 3 (nicht genutzt)</translation>
+    </message>
+    <message>
+        <source>scaling result: byte</source>
+        <translation>Normierungsergebnis: Byte</translation>
+    </message>
+    <message>
+        <source>scaling result: word</source>
+        <translation>Normierungsergebnis: Wort</translation>
+    </message>
+    <message>
+        <source>scaling result: long</source>
+        <translation>Normierungsergebnis: Long</translation>
+    </message>
+    <message>
+        <source>scaling result: none</source>
+        <translation>Normierungsergebnis: keines</translation>
+    </message>
+    <message>
+        <source>lower limit variable at power on</source>
+        <translation>Untergrenze variabel bei Power On</translation>
+    </message>
+    <message>
+        <source>lower limit always variable</source>
+        <translation>Untergrenze immer variabel</translation>
+    </message>
+    <message>
+        <source>lower limit type 3 (not used)</source>
+        <translation>Untergrenze Typ 3 (nicht genutzt)</translation>
+    </message>
+    <message>
+        <source>upper limit variable at power on</source>
+        <translation>Obergrenze variabel bei Power On</translation>
+    </message>
+    <message>
+        <source>upper limit always variable</source>
+        <translation>Obergrenze immer variabel</translation>
+    </message>
+    <message>
+        <source>upper limit type 3 (not used)</source>
+        <translation>Obergrenze Typ 3 (nicht genutzt)</translation>
+    </message>
+    <message>
+        <source>no enter</source>
+        <translation>kein Enter</translation>
+    </message>
+    <message>
+        <source>enter with dot</source>
+        <translation>Enter mit Punkt</translation>
+    </message>
+    <message>
+        <source>enter without dot</source>
+        <translation>Enter ohne Punkt</translation>
+    </message>
+    <message>
+        <source>enter mode 3 (not used)</source>
+        <translation>Enter-Modus 3 (nicht genutzt)</translation>
+    </message>
+    <message>
+        <source>no display filtering</source>
+        <translation>keine Beruhigung</translation>
+    </message>
+    <message>
+        <source>display filtering: time slot</source>
+        <translation>Anzeigeberuhigung: Zeitraster</translation>
+    </message>
+    <message>
+        <source>display filtering: filter</source>
+        <translation>Anzeigeberuhigung: Filter</translation>
+    </message>
+    <message>
+        <source>display filtering 3 (not used)</source>
+        <translation>Anzeigeberuhigung 3 (nicht genutzt)</translation>
+    </message>
+    <message>
+        <source>signed</source>
+        <translation>mit Vorzeichen</translation>
+    </message>
+    <message>
+        <source>set-programmable</source>
+        <translation>satzprogrammierbar</translation>
+    </message>
+    <message>
+        <source>writable while the active set is displayed</source>
+        <translation>schreibbar bei Anzeige des aktuellen Satzes</translation>
+    </message>
+    <message>
+        <source>scaled in the background</source>
+        <translation>Normierung im Hintergrund</translation>
+    </message>
+    <message>
+        <source>variable default value</source>
+        <translation>Defaultwert variabel</translation>
+    </message>
+    <message>
+        <source>default loaded only for a new device</source>
+        <translation>Defaultwert nur bei neuem Gerät laden</translation>
+    </message>
+    <message>
+        <source>not permitted as process data or for surveillance</source>
+        <translation>nicht als Prozessdatum oder Überwachungsparameter zugelassen</translation>
+    </message>
+    <message>
+        <source>encoder parameter</source>
+        <translation>Encoder-Parameter</translation>
+    </message>
+    <message>
+        <source>system parameter</source>
+        <translation>Systemparameter</translation>
+    </message>
+    <message>
+        <source>variable display scaling</source>
+        <translation>variable Anzeigenormierung</translation>
+    </message>
+    <message>
+        <source>visible on the display</source>
+        <translation>sichtbar auf der Anzeige</translation>
+    </message>
+    <message>
+        <source>writable on the display</source>
+        <translation>schreibbar auf der Anzeige</translation>
+    </message>
+    <message>
+        <source>visible in COMBIVIS</source>
+        <translation>sichtbar über COMBIVIS</translation>
+    </message>
+    <message>
+        <source>writable via COMBIVIS</source>
+        <translation>schreibbar über COMBIVIS</translation>
+    </message>
+    <message>
+        <source>rotating count</source>
+        <translation>rotierende Zählweise</translation>
+    </message>
+    <message>
+        <source>changed by the inverter</source>
+        <translation>wird vom Umrichter geändert</translation>
+    </message>
+    <message>
+        <source>value without plaintext not displayed</source>
+        <translation>Wert ohne Klartext wird nicht angezeigt</translation>
+    </message>
+    <message>
+        <source>configuration flag set (indirect configuration parameters, offline time base µs)</source>
+        <translation>Konfigurationsflag gesetzt (indirekt adressierte Konfiguration, Offline-Zeitbasis µs)</translation>
+    </message>
+    <message>
+        <source>write always: written by upload and download</source>
+        <translation>Write Always: bei Up- und Download geschrieben</translation>
+    </message>
+    <message>
+        <source>write only: not read by upload, written by download</source>
+        <translation>Write Only: beim Upload nicht gelesen, beim Download geschrieben</translation>
+    </message>
+    <message>
+        <source>excluded from the complete parameter list</source>
+        <translation>nicht in der kompletten Parameterliste</translation>
+    </message>
+    <message>
+        <source>not permitted as CP parameter</source>
+        <translation>nicht als CP-Parameter zugelassen</translation>
+    </message>
+    <message>
+        <source>decimal value of plaintexts suppressed</source>
+        <translation>Dezimalwert des Klartextes unterdrückt</translation>
+    </message>
+    <message>
+        <source>read-only for up/download lists: not written by download</source>
+        <translation>Read Only für Up-/Download-Listen: beim Download nicht geschrieben</translation>
+    </message>
+    <message>
+        <source>protected</source>
+        <translation>geschützt</translation>
+    </message>
+    <message>
+        <source>writable only at nop or error</source>
+        <translation>nur schreibbar bei nop oder Fehler</translation>
+    </message>
+    <message>
+        <source>default not loaded while invisible</source>
+        <translation>Defaultwert bei Unsichtbarkeit nicht geladen</translation>
+    </message>
+    <message>
+        <source>shows the state at &apos;NOP&apos; and &apos;LS&apos;</source>
+        <translation>zeigt bei &apos;NOP&apos; und &apos;LS&apos; den Status</translation>
+    </message>
+    <message>
+        <source>indirectly addressed</source>
+        <translation>indirekt adressiert</translation>
+    </message>
+    <message>
+        <source>not set-programmable for &apos;foc synchron&apos;</source>
+        <translation>nicht satzprogrammierbar für &apos;foc synchron&apos;</translation>
+    </message>
+    <message>
+        <source>read level: %1</source>
+        <translation>Passwortlevel Lesen: %1</translation>
+    </message>
+    <message>
+        <source>write level: %1</source>
+        <translation>Passwortlevel Schreiben: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>visible for inverter type(s) %1</source>
+        <translation>
+            <numerusform>sichtbar für Umrichtertyp %1</numerusform>
+            <numerusform>sichtbar für Umrichtertypen %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>writable for inverter type(s) %1</source>
+        <translation>
+            <numerusform>schreibbar für Umrichtertyp %1</numerusform>
+            <numerusform>schreibbar für Umrichtertypen %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>read-only via COMBIVIS</source>
+        <translation>über COMBIVIS nur lesbar</translation>
+    </message>
+    <message>
+        <source>properties 2: free bit %1 set</source>
+        <translation>Eigenschaften 2: freies Bit %1 gesetzt</translation>
+    </message>
+</context>
+<context>
+    <name>ParameterTable</name>
+    <message numerus="yes">
+        <source>%n group(s)</source>
+        <translation>
+            <numerusform>%n Gruppe</numerusform>
+            <numerusform>%n Gruppen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s)</source>
+        <translation>
+            <numerusform>%n Parameter</numerusform>
+            <numerusform>%n Parameter</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 (sets 0-7)</source>
+        <translation>%1 (Sätze 0-7)</translation>
+    </message>
+    <message>
+        <source>parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation>min</translation>
+    </message>
+    <message>
+        <source>max</source>
+        <translation>max</translation>
+    </message>
+    <message>
+        <source>default</source>
+        <translation>Vorgabe</translation>
+    </message>
+    <message>
+        <source>unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>connection: %1 (%2)</source>
+        <translation>Verbindung: %1 (%2)</translation>
+    </message>
+    <message>
+        <source>group</source>
+        <translation>Gruppe</translation>
+    </message>
+    <message>
+        <source>address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <source>parameters</source>
+        <translation>Parameter</translation>
+    </message>
+</context>
+<context>
+    <name>PasswordLevel</name>
+    <message>
+        <source>CP read only</source>
+        <translation>CP nur lesen</translation>
+    </message>
+    <message>
+        <source>CP read/write</source>
+        <translation>CP lesen/schreiben</translation>
+    </message>
+    <message>
+        <source>CP service</source>
+        <translation>CP Service</translation>
+    </message>
+    <message>
+        <source>Application</source>
+        <translation>Applikation</translation>
+    </message>
+    <message>
+        <source>Drive mode</source>
+        <translation>Drive-Mode</translation>
+    </message>
+    <message>
+        <source>unused</source>
+        <translation>nicht genutzt</translation>
+    </message>
+    <message>
+        <source>Security</source>
+        <translation>Security</translation>
+    </message>
+    <message>
+        <source>Supervisor</source>
+        <translation>Supervisor</translation>
+    </message>
+</context>
+<context>
     <name>Plaintexts</name>
     <message>
         <source>definition %1</source>
@@ -2124,6 +2705,55 @@ Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
     <message>
         <source>&apos;%1&apos; is a text of several definitions: give one text for each definition, in order (%2)</source>
         <translation>„%1“ ist ein Text mehrerer Definitionen: je Definition einen Text angeben, in dieser Reihenfolge (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>Reply</name>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message numerus="yes">
+        <source>drive refused: %1 (after %n attempt(s))</source>
+        <translation>
+            <numerusform>Umrichter lehnt ab: %1 (nach %n Versuch)</numerusform>
+            <numerusform>Umrichter lehnt ab: %1 (nach %n Versuchen)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>drive refused: %1</source>
+        <translation>Umrichter lehnt ab: %1</translation>
+    </message>
+    <message>
+        <source>no valid answer from the drive</source>
+        <translation>keine gültige Antwort vom Umrichter</translation>
+    </message>
+    <message numerus="yes">
+        <source>no valid answer from the drive after %n attempt(s)</source>
+        <translation>
+            <numerusform>keine gültige Antwort vom Umrichter nach %n Versuch</numerusform>
+            <numerusform>keine gültige Antwort vom Umrichter nach %n Versuchen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the connection to the drive was lost</source>
+        <translation>die Verbindung zum Umrichter ist abgebrochen</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>not connected to a drive</source>
+        <translation>nicht mit einem Umrichter verbunden</translation>
+    </message>
+    <message>
+        <source>this request cannot be sent</source>
+        <translation>diese Anfrage kann nicht gesendet werden</translation>
+    </message>
+    <message>
+        <source>sent to a group of drives or to all drives, which never answer: carried out, not confirmed</source>
+        <translation>an eine Gruppe oder an alle Umrichter gesendet, die nie antworten: ausgeführt, nicht bestätigt</translation>
     </message>
 </context>
 <context>

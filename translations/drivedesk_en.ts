@@ -2,6 +2,73 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en" sourcelanguage="en">
 <context>
+    <name>Acknowledge</name>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>not ready</source>
+        <translation>not ready</translation>
+    </message>
+    <message>
+        <source>address or password invalid</source>
+        <translation>address or password invalid</translation>
+    </message>
+    <message>
+        <source>data invalid</source>
+        <translation>data invalid</translation>
+    </message>
+    <message>
+        <source>parameter write protected</source>
+        <translation>parameter write protected</translation>
+    </message>
+    <message>
+        <source>BCC error</source>
+        <translation>BCC error</translation>
+    </message>
+    <message>
+        <source>inverter busy</source>
+        <translation>inverter busy</translation>
+    </message>
+    <message>
+        <source>service not available</source>
+        <translation>service not available</translation>
+    </message>
+    <message>
+        <source>password invalid</source>
+        <translation>password invalid</translation>
+    </message>
+    <message>
+        <source>telegram framing error: wrong count of characters</source>
+        <translation>telegram framing error: wrong count of characters</translation>
+    </message>
+    <message>
+        <source>transmission error: overrun, framing or parity error</source>
+        <translation>transmission error: overrun, framing or parity error</translation>
+    </message>
+    <message>
+        <source>set selection invalid</source>
+        <translation>set selection invalid</translation>
+    </message>
+    <message>
+        <source>language selection invalid</source>
+        <translation>language selection invalid</translation>
+    </message>
+    <message>
+        <source>address invalid</source>
+        <translation>address invalid</translation>
+    </message>
+    <message>
+        <source>operation not possible</source>
+        <translation>operation not possible</translation>
+    </message>
+    <message>
+        <source>unknown acknowledge 15</source>
+        <translation>unknown acknowledge 15</translation>
+    </message>
+</context>
+<context>
     <name>ConnectionOptions</name>
     <message>
         <source>--%1 %2: expected a number from %3 to %4</source>
@@ -55,10 +122,6 @@
         <translation>unknown connection &quot;%1&quot;: expected tcp:HOST:PORT, serial:DEVICE or sim</translation>
     </message>
     <message>
-        <source> drive %1</source>
-        <translation> drive %1</translation>
-    </message>
-    <message>
         <source>simulated %1 drive</source>
         <translation>simulated %1 drive</translation>
     </message>
@@ -73,6 +136,10 @@
     <message>
         <source>&quot;%1&quot; is not a TCP port (0..65535, 0 picks a free one)</source>
         <translation>&quot;%1&quot; is not a TCP port (0..65535, 0 picks a free one)</translation>
+    </message>
+    <message>
+        <source>%1 drive %2</source>
+        <translation>%1 drive %2</translation>
     </message>
 </context>
 <context>
@@ -181,6 +248,96 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::CliRunner</name>
+    <message>
+        <source>all sets</source>
+        <translation>all sets</translation>
+    </message>
+    <message numerus="yes">
+        <source>set(s) %1</source>
+        <translation>
+            <numerusform>set %1</numerusform>
+            <numerusform>sets %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>cannot connect to %1: %2</source>
+        <translation>cannot connect to %1: %2</translation>
+    </message>
+    <message>
+        <source>DIN66019 carries parameter values only; use --protocol din66019ii for info and scan</source>
+        <translation>DIN66019 carries parameter values only; use --protocol din66019ii for info and scan</translation>
+    </message>
+    <message>
+        <source>%1 (DIN66019 has no group names: give the address, e.g. 0x0203)</source>
+        <translation>%1 (DIN66019 has no group names: give the address, e.g. 0x0203)</translation>
+    </message>
+    <message>
+        <source>%1 = %2 (raw)</source>
+        <translation>%1 = %2 (raw)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a raw 16-bit value (DIN66019 writes raw values)</source>
+        <translation>&apos;%1&apos; is not a raw 16-bit value (DIN66019 writes raw values)</translation>
+    </message>
+    <message>
+        <source>%1: written, but reading it back failed: %2</source>
+        <translation>%1: written, but reading it back failed: %2</translation>
+    </message>
+    <message>
+        <source>metadata from the cache of this kind of drive (%1); --no-cache reads it from the drive</source>
+        <translation>metadata from the cache of this kind of drive (%1); --no-cache reads it from the drive</translation>
+    </message>
+    <message>
+        <source>could not read the groups: %1</source>
+        <translation>could not read the groups: %1</translation>
+    </message>
+    <message>
+        <source>scan incomplete: %1</source>
+        <translation>scan incomplete: %1</translation>
+    </message>
+    <message>
+        <source>the drive has no parameter %1</source>
+        <translation>the drive has no parameter %1</translation>
+    </message>
+    <message>
+        <source>set %1</source>
+        <translation>set %1</translation>
+    </message>
+    <message>
+        <source>active set</source>
+        <translation>active set</translation>
+    </message>
+    <message>
+        <source>%1  %2 = %3  (raw %4, %5)</source>
+        <translation>%1  %2 = %3  (raw %4, %5)</translation>
+    </message>
+    <message>
+        <source>%1 is read-only; nothing was written</source>
+        <translation>%1 is read-only; nothing was written</translation>
+    </message>
+    <message>
+        <source>%1: %2; nothing was written</source>
+        <translation>%1: %2; nothing was written</translation>
+    </message>
+    <message>
+        <source>the active set holds %1</source>
+        <translation>the active set holds %1</translation>
+    </message>
+    <message>
+        <source>set %1 holds %2</source>
+        <translation>set %1 holds %2</translation>
+    </message>
+    <message>
+        <source>%1: not written to %2: %3</source>
+        <translation>%1: not written to %2: %3</translation>
+    </message>
+    <message>
+        <source>%1: written %2, but %3</source>
+        <translation>%1: written %2, but %3</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::ClientWorker</name>
     <message>
         <source>arrived before the open request was sent, ignored: %1</source>
@@ -264,6 +421,52 @@
     <message>
         <source>%1: this program cannot open such a connection</source>
         <translation>%1: this program cannot open such a connection</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n timeout(s)</source>
+        <translation>
+            <numerusform>%n timeout</numerusform>
+            <numerusform>%n timeouts</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n answer(s) with a wrong BCC</source>
+        <translation>
+            <numerusform>%n answer with a wrong BCC</numerusform>
+            <numerusform>%n answers with a wrong BCC</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n line error(s)</source>
+        <translation>
+            <numerusform>%n line error</numerusform>
+            <numerusform>%n line errors</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n unreadable answer(s)</source>
+        <translation>
+            <numerusform>%n unreadable answer</numerusform>
+            <numerusform>%n unreadable answers</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n answer(s) that did not match the request</source>
+        <translation>
+            <numerusform>%n answer that did not match the request</numerusform>
+            <numerusform>%n answers that did not match the request</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n transient refusal(s) (%1)</source>
+        <translation>
+            <numerusform>%n transient refusal (%1)</numerusform>
+            <numerusform>%n transient refusals (%1)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>timeout %1 ms</source>
+        <translation>timeout %1 ms</translation>
     </message>
 </context>
 <context>
@@ -972,20 +1175,6 @@
         <source>Nothing was read from the drive: %1.</source>
         <translation>Nothing was read from the drive: %1.</translation>
     </message>
-    <message numerus="yes">
-        <source>Read %n parameter(s)</source>
-        <translation>
-            <numerusform>Read %n parameter</numerusform>
-            <numerusform>Read %n parameters</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source> in %n group(s).</source>
-        <translation>
-            <numerusform> in %n group.</numerusform>
-            <numerusform> in %n groups.</numerusform>
-        </translation>
-    </message>
     <message>
         <source>Nothing was read: %1. Press Refresh (%2) to read the drive.</source>
         <translation>Nothing was read: %1. Press Refresh (%2) to read the drive.</translation>
@@ -1273,6 +1462,20 @@
         <source>The groups, names, limits and texts come from the metadata cache of this kind of drive; the values were read from the drive. Drive &gt; Read Metadata Again reads everything.</source>
         <translation>The groups, names, limits and texts come from the metadata cache of this kind of drive; the values were read from the drive. Drive &gt; Read Metadata Again reads everything.</translation>
     </message>
+    <message numerus="yes">
+        <source>Read %n parameter(s).</source>
+        <translation>
+            <numerusform>Read %n parameter.</numerusform>
+            <numerusform>Read %n parameters.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>The drive has %n group(s).</source>
+        <translation>
+            <numerusform>The drive has %n group.</numerusform>
+            <numerusform>The drive has %n groups.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::NoticeBar</name>
@@ -1312,23 +1515,26 @@
         <translation>This group holds no parameters.</translation>
     </message>
     <message>
-        <source>: none shown</source>
-        <translation>: none shown</translation>
-    </message>
-    <message numerus="yes">
-        <source>: %n parameter(s)</source>
-        <translation>
-            <numerusform>: %n parameter</numerusform>
-            <numerusform>: %n parameters</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source> (filtered)</source>
-        <translation> (filtered)</translation>
-    </message>
-    <message>
         <source>Favourite</source>
         <translation>Favourite</translation>
+    </message>
+    <message>
+        <source>%1: none shown</source>
+        <translation>%1: none shown</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n parameter(s) (filtered)</source>
+        <translation>
+            <numerusform>%1: %n parameter (filtered)</numerusform>
+            <numerusform>%1: %n parameters (filtered)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n parameter(s)</source>
+        <translation>
+            <numerusform>%1: %n parameter</numerusform>
+            <numerusform>%1: %n parameters</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1530,8 +1736,8 @@
 <context>
     <name>DriveDesk::RecentConnections</name>
     <message>
-        <source>address %1</source>
-        <translation>address %1</translation>
+        <source>%1, address %2</source>
+        <translation>%1, address %2</translation>
     </message>
 </context>
 <context>
@@ -1636,6 +1842,17 @@
     <message>
         <source>parity error on a received character</source>
         <translation>parity error on a received character</translation>
+    </message>
+    <message>
+        <source>simulated drive</source>
+        <translation>simulated drive</translation>
+    </message>
+    <message numerus="yes">
+        <source>simulated drive(s) %1</source>
+        <translation>
+            <numerusform>simulated drive %1</numerusform>
+            <numerusform>simulated drives %1</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1811,6 +2028,10 @@ The DriveDesk parameter editor. Without --connect it opens the connection dialog
         <source>this drive has no parameter %1</source>
         <translation>this drive has no parameter %1</translation>
     </message>
+    <message>
+        <source>the connection to the drive was closed</source>
+        <translation>the connection to the drive was closed</translation>
+    </message>
 </context>
 <context>
     <name>DriveIdentity</name>
@@ -1841,6 +2062,25 @@ The DriveDesk parameter editor. Without --connect it opens the connection dialog
     <message>
         <source>Type %1, software %2, serial number %3</source>
         <translation>Type %1, software %2, serial number %3</translation>
+    </message>
+</context>
+<context>
+    <name>GroupProperties</name>
+    <message>
+        <source>password level: %1</source>
+        <translation>password level: %1</translation>
+    </message>
+    <message>
+        <source>visible on the display</source>
+        <translation>visible on the display</translation>
+    </message>
+    <message>
+        <source>visible in COMBIVIS</source>
+        <translation>visible in COMBIVIS</translation>
+    </message>
+    <message>
+        <source>free bit %1 set</source>
+        <translation>free bit %1 set</translation>
     </message>
 </context>
 <context>
@@ -2084,6 +2324,347 @@ The DriveDesk parameter editor. Without --connect it opens the connection dialog
     </message>
 </context>
 <context>
+    <name>ParameterProperties</name>
+    <message>
+        <source>stored as byte</source>
+        <translation>stored as byte</translation>
+    </message>
+    <message>
+        <source>stored as word</source>
+        <translation>stored as word</translation>
+    </message>
+    <message>
+        <source>stored as long</source>
+        <translation>stored as long</translation>
+    </message>
+    <message>
+        <source>storage width 3 (not used)</source>
+        <translation>storage width 3 (not used)</translation>
+    </message>
+    <message>
+        <source>scaling result: byte</source>
+        <translation>scaling result: byte</translation>
+    </message>
+    <message>
+        <source>scaling result: word</source>
+        <translation>scaling result: word</translation>
+    </message>
+    <message>
+        <source>scaling result: long</source>
+        <translation>scaling result: long</translation>
+    </message>
+    <message>
+        <source>scaling result: none</source>
+        <translation>scaling result: none</translation>
+    </message>
+    <message>
+        <source>lower limit variable at power on</source>
+        <translation>lower limit variable at power on</translation>
+    </message>
+    <message>
+        <source>lower limit always variable</source>
+        <translation>lower limit always variable</translation>
+    </message>
+    <message>
+        <source>lower limit type 3 (not used)</source>
+        <translation>lower limit type 3 (not used)</translation>
+    </message>
+    <message>
+        <source>upper limit variable at power on</source>
+        <translation>upper limit variable at power on</translation>
+    </message>
+    <message>
+        <source>upper limit always variable</source>
+        <translation>upper limit always variable</translation>
+    </message>
+    <message>
+        <source>upper limit type 3 (not used)</source>
+        <translation>upper limit type 3 (not used)</translation>
+    </message>
+    <message>
+        <source>no enter</source>
+        <translation>no enter</translation>
+    </message>
+    <message>
+        <source>enter with dot</source>
+        <translation>enter with dot</translation>
+    </message>
+    <message>
+        <source>enter without dot</source>
+        <translation>enter without dot</translation>
+    </message>
+    <message>
+        <source>enter mode 3 (not used)</source>
+        <translation>enter mode 3 (not used)</translation>
+    </message>
+    <message>
+        <source>no display filtering</source>
+        <translation>no display filtering</translation>
+    </message>
+    <message>
+        <source>display filtering: time slot</source>
+        <translation>display filtering: time slot</translation>
+    </message>
+    <message>
+        <source>display filtering: filter</source>
+        <translation>display filtering: filter</translation>
+    </message>
+    <message>
+        <source>display filtering 3 (not used)</source>
+        <translation>display filtering 3 (not used)</translation>
+    </message>
+    <message>
+        <source>signed</source>
+        <translation>signed</translation>
+    </message>
+    <message>
+        <source>set-programmable</source>
+        <translation>set-programmable</translation>
+    </message>
+    <message>
+        <source>writable while the active set is displayed</source>
+        <translation>writable while the active set is displayed</translation>
+    </message>
+    <message>
+        <source>scaled in the background</source>
+        <translation>scaled in the background</translation>
+    </message>
+    <message>
+        <source>variable default value</source>
+        <translation>variable default value</translation>
+    </message>
+    <message>
+        <source>default loaded only for a new device</source>
+        <translation>default loaded only for a new device</translation>
+    </message>
+    <message>
+        <source>not permitted as process data or for surveillance</source>
+        <translation>not permitted as process data or for surveillance</translation>
+    </message>
+    <message>
+        <source>encoder parameter</source>
+        <translation>encoder parameter</translation>
+    </message>
+    <message>
+        <source>system parameter</source>
+        <translation>system parameter</translation>
+    </message>
+    <message>
+        <source>variable display scaling</source>
+        <translation>variable display scaling</translation>
+    </message>
+    <message>
+        <source>visible on the display</source>
+        <translation>visible on the display</translation>
+    </message>
+    <message>
+        <source>writable on the display</source>
+        <translation>writable on the display</translation>
+    </message>
+    <message>
+        <source>visible in COMBIVIS</source>
+        <translation>visible in COMBIVIS</translation>
+    </message>
+    <message>
+        <source>writable via COMBIVIS</source>
+        <translation>writable via COMBIVIS</translation>
+    </message>
+    <message>
+        <source>rotating count</source>
+        <translation>rotating count</translation>
+    </message>
+    <message>
+        <source>changed by the inverter</source>
+        <translation>changed by the inverter</translation>
+    </message>
+    <message>
+        <source>value without plaintext not displayed</source>
+        <translation>value without plaintext not displayed</translation>
+    </message>
+    <message>
+        <source>configuration flag set (indirect configuration parameters, offline time base µs)</source>
+        <translation>configuration flag set (indirect configuration parameters, offline time base µs)</translation>
+    </message>
+    <message>
+        <source>write always: written by upload and download</source>
+        <translation>write always: written by upload and download</translation>
+    </message>
+    <message>
+        <source>write only: not read by upload, written by download</source>
+        <translation>write only: not read by upload, written by download</translation>
+    </message>
+    <message>
+        <source>excluded from the complete parameter list</source>
+        <translation>excluded from the complete parameter list</translation>
+    </message>
+    <message>
+        <source>not permitted as CP parameter</source>
+        <translation>not permitted as CP parameter</translation>
+    </message>
+    <message>
+        <source>decimal value of plaintexts suppressed</source>
+        <translation>decimal value of plaintexts suppressed</translation>
+    </message>
+    <message>
+        <source>read-only for up/download lists: not written by download</source>
+        <translation>read-only for up/download lists: not written by download</translation>
+    </message>
+    <message>
+        <source>protected</source>
+        <translation>protected</translation>
+    </message>
+    <message>
+        <source>writable only at nop or error</source>
+        <translation>writable only at nop or error</translation>
+    </message>
+    <message>
+        <source>default not loaded while invisible</source>
+        <translation>default not loaded while invisible</translation>
+    </message>
+    <message>
+        <source>shows the state at &apos;NOP&apos; and &apos;LS&apos;</source>
+        <translation>shows the state at &apos;NOP&apos; and &apos;LS&apos;</translation>
+    </message>
+    <message>
+        <source>indirectly addressed</source>
+        <translation>indirectly addressed</translation>
+    </message>
+    <message>
+        <source>not set-programmable for &apos;foc synchron&apos;</source>
+        <translation>not set-programmable for &apos;foc synchron&apos;</translation>
+    </message>
+    <message>
+        <source>read level: %1</source>
+        <translation>read level: %1</translation>
+    </message>
+    <message>
+        <source>write level: %1</source>
+        <translation>write level: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>visible for inverter type(s) %1</source>
+        <translation>
+            <numerusform>visible for inverter type %1</numerusform>
+            <numerusform>visible for inverter types %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>writable for inverter type(s) %1</source>
+        <translation>
+            <numerusform>writable for inverter type %1</numerusform>
+            <numerusform>writable for inverter types %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>read-only via COMBIVIS</source>
+        <translation>read-only via COMBIVIS</translation>
+    </message>
+    <message>
+        <source>properties 2: free bit %1 set</source>
+        <translation>properties 2: free bit %1 set</translation>
+    </message>
+</context>
+<context>
+    <name>ParameterTable</name>
+    <message numerus="yes">
+        <source>%n group(s)</source>
+        <translation>
+            <numerusform>%n group</numerusform>
+            <numerusform>%n groups</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s)</source>
+        <translation>
+            <numerusform>%n parameter</numerusform>
+            <numerusform>%n parameters</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 (sets 0-7)</source>
+        <translation>%1 (sets 0-7)</translation>
+    </message>
+    <message>
+        <source>parameter</source>
+        <translation>parameter</translation>
+    </message>
+    <message>
+        <source>name</source>
+        <translation>name</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>value</translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation>min</translation>
+    </message>
+    <message>
+        <source>max</source>
+        <translation>max</translation>
+    </message>
+    <message>
+        <source>default</source>
+        <translation>default</translation>
+    </message>
+    <message>
+        <source>unit</source>
+        <translation>unit</translation>
+    </message>
+    <message>
+        <source>connection: %1 (%2)</source>
+        <translation>connection: %1 (%2)</translation>
+    </message>
+    <message>
+        <source>group</source>
+        <translation>group</translation>
+    </message>
+    <message>
+        <source>address</source>
+        <translation>address</translation>
+    </message>
+    <message>
+        <source>parameters</source>
+        <translation>parameters</translation>
+    </message>
+</context>
+<context>
+    <name>PasswordLevel</name>
+    <message>
+        <source>CP read only</source>
+        <translation>CP read only</translation>
+    </message>
+    <message>
+        <source>CP read/write</source>
+        <translation>CP read/write</translation>
+    </message>
+    <message>
+        <source>CP service</source>
+        <translation>CP service</translation>
+    </message>
+    <message>
+        <source>Application</source>
+        <translation>Application</translation>
+    </message>
+    <message>
+        <source>Drive mode</source>
+        <translation>Drive mode</translation>
+    </message>
+    <message>
+        <source>unused</source>
+        <translation>unused</translation>
+    </message>
+    <message>
+        <source>Security</source>
+        <translation>Security</translation>
+    </message>
+    <message>
+        <source>Supervisor</source>
+        <translation>Supervisor</translation>
+    </message>
+</context>
+<context>
     <name>Plaintexts</name>
     <message>
         <source>definition %1</source>
@@ -2124,6 +2705,55 @@ The DriveDesk parameter editor. Without --connect it opens the connection dialog
     <message>
         <source>&apos;%1&apos; is a text of several definitions: give one text for each definition, in order (%2)</source>
         <translation>&apos;%1&apos; is a text of several definitions: give one text for each definition, in order (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>Reply</name>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message numerus="yes">
+        <source>drive refused: %1 (after %n attempt(s))</source>
+        <translation>
+            <numerusform>drive refused: %1 (after %n attempt)</numerusform>
+            <numerusform>drive refused: %1 (after %n attempts)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>drive refused: %1</source>
+        <translation>drive refused: %1</translation>
+    </message>
+    <message>
+        <source>no valid answer from the drive</source>
+        <translation>no valid answer from the drive</translation>
+    </message>
+    <message numerus="yes">
+        <source>no valid answer from the drive after %n attempt(s)</source>
+        <translation>
+            <numerusform>no valid answer from the drive after %n attempt</numerusform>
+            <numerusform>no valid answer from the drive after %n attempts</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the connection to the drive was lost</source>
+        <translation>the connection to the drive was lost</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>cancelled</translation>
+    </message>
+    <message>
+        <source>not connected to a drive</source>
+        <translation>not connected to a drive</translation>
+    </message>
+    <message>
+        <source>this request cannot be sent</source>
+        <translation>this request cannot be sent</translation>
+    </message>
+    <message>
+        <source>sent to a group of drives or to all drives, which never answer: carried out, not confirmed</source>
+        <translation>sent to a group of drives or to all drives, which never answer: carried out, not confirmed</translation>
     </message>
 </context>
 <context>

@@ -1,4 +1,5 @@
 // drivedesk-cli: DriveDesk on the command line.
+#include "Translations.h"
 #include "cli/CliRunner.h"
 #include "cli/CommandLine.h"
 
@@ -25,6 +26,8 @@ int main(int argc, char **argv)
         return 2;
     }
 
+    // The drive's texts and the messages speak one language, as in the window.
+    DriveDesk::installTranslations(DriveDesk::languageCode(request->connection.language));
     DriveDesk::CliRunner runner(*request);
     QObject::connect(&runner, &DriveDesk::CliRunner::finished, &app, &QCoreApplication::exit,
                      Qt::QueuedConnection);

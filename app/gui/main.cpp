@@ -1,13 +1,12 @@
 // drivedesk: the parameter editor's window, connected to the drive the command line names or
 // opening the connection dialog.
+#include "Translations.h"
 #include "main/MainWindow.h"
 #include "main/StartupOptions.h"
 
 #include <QApplication>
-#include <QLibraryInfo>
 #include <QLocale>
 #include <QTimer>
-#include <QTranslator>
 
 #include <cstdio>
 
@@ -30,18 +29,9 @@ int main(int argc, char **argv)
     }
 
     const DriveDesk::Language language = options.uiLanguage();
-    const bool german = language == DriveDesk::Language::German;
-    // Qt's own dialogs and buttons, then ours; English has a catalogue too, for its plurals.
-    QTranslator qtTranslator;
-    if (german
-        && qtTranslator.load(QLocale(QLocale::German), QStringLiteral("qtbase"),
-                             QStringLiteral("_"), QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
-        QApplication::installTranslator(&qtTranslator);
-    QTranslator translator;
-    if (translator.load(german ? QStringLiteral(":/i18n/drivedesk_de.qm")
-                               : QStringLiteral(":/i18n/drivedesk_en.qm")))
-        QApplication::installTranslator(&translator);
-    QLocale::setDefault(QLocale(german ? QLocale::German : QLocale::English));
+    DriveDesk::installTranslations(DriveDesk::languageCode(language));
+    QLocale::setDefault(
+        QLocale(language == DriveDesk::Language::German ? QLocale::German : QLocale::English));
 
     DriveDesk::MainWindow window(language);
     window.show();

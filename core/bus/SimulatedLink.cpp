@@ -74,13 +74,12 @@ QString SimulatedLink::description() const
 {
     const SimulationOptions &options = m_bus->options();
     if (m_bus->protocol() == Protocol::Hsp5)
-        return QStringLiteral("simulated drive");
+        return tr("simulated drive");
     QStringList addresses;
     for (int address : options.driveAddresses)
         addresses.append(QString::number(address));
-    return addresses.size() == 1
-               ? QStringLiteral("simulated drive %1").arg(addresses.constFirst())
-               : QStringLiteral("simulated drives %1").arg(addresses.join(QStringLiteral(", ")));
+    const int count = int(addresses.size());
+    return tr("simulated drive(s) %1", nullptr, count).arg(addresses.join(QStringLiteral(", ")));
 }
 
 } // namespace DriveDesk

@@ -1,6 +1,5 @@
 #include "CliRunner.h"
 
-
 #include "bus/LinkFactory.h"
 #include "cli/ParameterTable.h"
 #include "parameters/DriveIdentity.h"
@@ -18,21 +17,18 @@
 
 namespace DriveDesk {
 
-namespace {
-
-QString setListText(quint8 mask)
+QString CliRunner::setListText(quint8 mask)
 {
     if (mask == 0xFF)
-        return QStringLiteral("all sets");
+        return tr("all sets");
     QStringList sets;
     for (int s = 0; s < kParameterSets; ++s) {
         if (mask & (1u << s))
             sets << QString::number(s);
     }
-    return (sets.size() == 1 ? QStringLiteral("set ") : QStringLiteral("sets ")) + sets.join(QLatin1Char(','));
+    const int count = int(sets.size());
+    return tr("set(s) %1", nullptr, count).arg(sets.join(QLatin1Char(',')));
 }
-
-} // namespace
 
 CliRunner::CliRunner(CliRequest request, QObject *parent)
     : QObject(parent)
@@ -50,7 +46,7 @@ void CliRunner::start()
     m_client = std::make_unique<DriveClient>(m_request.connection, everyLink(), options);
     connect(m_client.get(), &DriveClient::connected, this, &CliRunner::runCommand);
     connect(m_client.get(), &DriveClient::connectionFailed, this, [this](const QString &reason) {
-        fail(3, QStringLiteral("cannot connect to %1: %2")
+        fail(3, tr("cannot connect to %1: %2")
                     .arg(m_request.connection.displayName(), reason));
     });
     m_client->connectToDrive();
@@ -72,21 +68,21 @@ void CliRunner::runCommand()
 void CliRunner::runLegacy()
 {
     if (m_request.command == CliRequest::Command::Info || m_request.command == CliRequest::Command::Scan) {
-        return fail(2, QStringLiteral("DIN66019 carries parameter values only; use --protocol din66019ii "
-                                      "for info and scan"));
+        return fail(2, tr("DIN66019 carries parameter values only; use --protocol din66019ii "
+                          "for info and scan"));
     }
     QString error;
     const auto address = ParameterId::parse(m_request.parameter, QList<GroupAddress>{}, &error);
     if (!address) {
-        return fail(2, QStringLiteral("%1 (DIN66019 has no group names: give the address, e.g. 0x0203)")
+        return fail(2, tr("%1 (DIN66019 has no group names: give the address, e.g. 0x0203)")
                            .arg(error));
     }
     const QString id = ParameterId::hexAddress(*address);
     if (m_request.command == CliRequest::Command::Read) {
         m_client->readValueStandard(*address, 0).then(this, [this, id](const Reply &r) {
             if (!r.ok())
-                return fail(1, QStringLiteral("%1: %2").arg(id, r.message(language())));
-            m_out << QStringLiteral("%1 = %2 (raw)\n").arg(id).arg(r.data<ParameterValue>()->value);
+                return fail(1, QStringLiteral("%1: %2").arg(id, r.message()));
+            m_out << tr("%1 = %2 (raw)").arg(id).arg(r.data<ParameterValue>()->value) << '\n';
             done();
         });
         return;
@@ -94,15 +90,15 @@ void CliRunner::runLegacy()
     bool ok = false;
     const int raw = m_request.value.toInt(&ok, 0);
     if (!ok || raw < -32768 || raw > 65535)
-        return fail(2, QStringLiteral("'%1' is not a raw 16-bit value (DIN66019 writes raw values)").arg(m_request.value));
+        return fail(2, tr("'%1' is not a raw 16-bit value (DIN66019 writes raw values)").arg(m_request.value));
     m_client->writeValueStandard(*address, raw, 0).then(this, [this, id, address = *address](const Reply &r) {
         if (!r.ok())
-            return fail(1, QStringLiteral("%1: %2").arg(id, r.message(language())));
+            return fail(1, QStringLiteral("%1: %2").arg(id, r.message()));
         m_client->readValueStandard(address, 0).then(this, [this, id](const Reply &back) {
             if (!back.ok())
-                return fail(1, QStringLiteral("%1: written, but reading it back failed: %2")
-                                   .arg(id, back.message(language())));
-            m_out << QStringLiteral("%1 = %2 (raw)\n").arg(id).arg(back.data<ParameterValue>()->value);
+                return fail(1, tr("%1: written, but reading it back failed: %2")
+                                   .arg(id, back.message()));
+            m_out << tr("%1 = %2 (raw)").arg(id).arg(back.data<ParameterValue>()->value) << '\n';
             done();
         });
     });
@@ -133,11 +129,12 @@ void CliRunner::scan(ScanOptions options, std::function<void(const DriveDescript
                     m_err << warning << '\n';
                 if (description.metadataFromCache && !m_request.quiet && !m_cacheNoted) {
                     m_cacheNoted = true; // once, however many scans a command makes
-                    m_err << QStringLiteral("metadata from the cache of this kind of drive (%1); "
-                                            "--no-cache reads it from the drive\n")
+                    m_err << tr("metadata from the cache of this kind of drive (%1); "
+                                "--no-cache reads it from the drive")
                                  .arg(options.cacheDirectory.isEmpty()
                                           ? MetadataCache::defaultDirectory()
-                                          : options.cacheDirectory);
+                                          : options.cacheDirectory)
+                          << '\n';
                 }
                 next(description);
             });
@@ -152,7 +149,7 @@ void CliRunner::runInfo()
     groupsOnly.plaintexts = false;
     scan(groupsOnly, [this](const DriveDescription &drive) {
         if (!drive.incompleteReason.isEmpty())
-            return fail(1, QStringLiteral("could not read the groups: ") + drive.incompleteReason);
+            return fail(1, tr("could not read the groups: %1").arg(drive.incompleteReason));
         // Then the groups that hold the identification parameters, with their values.
         ScanOptions system;
         for (const GroupDescription &group : drive.groups) {
@@ -164,11 +161,11 @@ void CliRunner::runInfo()
             }
         }
         if (system.groupPages.isEmpty()) {
-            m_out << ParameterTable::info(drive, {}, language());
+            m_out << ParameterTable::info(drive, {});
             return done();
         }
         scan(system, [this, drive](const DriveDescription &systemGroup) {
-            m_out << ParameterTable::info(drive, systemGroup, language());
+            m_out << ParameterTable::info(drive, systemGroup);
             if (!systemGroup.incompleteReason.isEmpty())
                 return fail(1, systemGroup.incompleteReason);
             done();
@@ -184,10 +181,10 @@ void CliRunner::runScan()
         if (m_request.format == CliRequest::Format::Json)
             m_out << QString::fromUtf8(ParameterDocument::toJson(drive));
         else
-            m_out << ParameterTable::scan(drive, m_request.values, language());
+            m_out << ParameterTable::scan(drive, m_request.values);
         m_out.flush();
         if (!drive.incompleteReason.isEmpty())
-            return fail(1, QStringLiteral("scan incomplete: ") + drive.incompleteReason);
+            return fail(1, tr("scan incomplete: %1").arg(drive.incompleteReason));
         done();
     });
 }
@@ -199,7 +196,7 @@ void CliRunner::lookUpParameter(
     groupsOnly.parameters = false;
     scan(groupsOnly, [this, next = std::move(next)](const DriveDescription &drive) {
         if (!drive.incompleteReason.isEmpty())
-            return fail(1, QStringLiteral("could not read the groups: ") + drive.incompleteReason);
+            return fail(1, tr("could not read the groups: %1").arg(drive.incompleteReason));
         QString error;
         const auto address = ParameterId::parse(m_request.parameter, drive, &error);
         if (!address)
@@ -213,7 +210,7 @@ void CliRunner::lookUpParameter(
             if (!found.incompleteReason.isEmpty())
                 return fail(1, found.incompleteReason);
             if (!parameter || found.groups.isEmpty())
-                return fail(2, QStringLiteral("the drive has no parameter %1").arg(m_request.parameter));
+                return fail(2, tr("the drive has no parameter %1").arg(m_request.parameter));
             if (!parameter->error.isEmpty())
                 return fail(1, QStringLiteral("%1: %2").arg(m_request.parameter, parameter->error));
             next(found.groups.constFirst(), *parameter);
@@ -228,16 +225,16 @@ void CliRunner::runRead()
         QFuture<Reply> reply = m_request.set
                                    ? m_client->readValue(parameter.address, quint8(1u << *m_request.set))
                                    : m_client->readValueStandard(parameter.address, 0);
-        const QString where = m_request.set ? QStringLiteral("set %1").arg(*m_request.set)
-                                            : QStringLiteral("active set");
+        const QString where = m_request.set ? tr("set %1").arg(*m_request.set) : tr("active set");
         reply.then(this, [this, id, where, parameter](const Reply &r) {
             if (!r.ok())
-                return fail(1, QStringLiteral("%1: %2").arg(id, r.message(language())));
+                return fail(1, QStringLiteral("%1: %2").arg(id, r.message()));
             const qint32 raw = r.data<ParameterValue>()->value;
-            m_out << QStringLiteral("%1  %2 = %3  (raw %4, %5)\n")
+            m_out << tr("%1  %2 = %3  (raw %4, %5)")
                          .arg(id, parameter.name, valueText(parameter, raw))
                          .arg(raw)
-                         .arg(where);
+                         .arg(where)
+                  << '\n';
             done();
         });
     });
@@ -248,7 +245,7 @@ void CliRunner::runWrite()
     lookUpParameter([this](const GroupDescription &group, const ParameterDescription &parameter) {
         const QString id = parameterId(group.id, parameter.number());
         if (ParameterProperties(parameter.properties1, parameter.properties2).isReadOnly())
-            return fail(2, QStringLiteral("%1 is read-only; nothing was written").arg(id));
+            return fail(2, tr("%1 is read-only; nothing was written").arg(id));
         // The window's rule: a plaintext or a number in display units (or a raw integer with
         // --raw), refused when it cannot be held exactly or lies outside the limits.
         const ParameterFormat display(parameter);
@@ -256,7 +253,7 @@ void CliRunner::runWrite()
         QString error;
         const std::optional<qint32> raw = format.parse(m_request.value, &error);
         if (!raw)
-            return fail(2, QStringLiteral("%1: %2; nothing was written").arg(id, error));
+            return fail(2, tr("%1: %2; nothing was written").arg(id, error));
         ValueChange change;
         change.address = parameter.address;
         change.setProgrammable = parameter.isSetProgrammable();
@@ -275,7 +272,7 @@ void CliRunner::report(const QString &id, const ParameterDescription &parameter,
     if (!outcome.anyAcknowledged())
         return fail(1, QStringLiteral("%1: %2").arg(id, outcome.error));
     if (!outcome.readBackError.isEmpty()) {
-        return fail(1, QStringLiteral("%1: written, but reading it back failed: %2")
+        return fail(1, tr("%1: written, but reading it back failed: %2")
                            .arg(id, outcome.readBackError));
     }
     QStringList shown;
@@ -286,23 +283,22 @@ void CliRunner::report(const QString &id, const ParameterDescription &parameter,
             continue;
         shown << valueText(parameter, *held);
         if (*held != raw) {
-            differing << QStringLiteral("%1 holds %2")
-                             .arg(outcome.activeSetAcknowledged ? QStringLiteral("the active set")
-                                                                : setListText(quint8(1u << set)),
-                                  valueText(parameter, *held));
+            differing << (outcome.activeSetAcknowledged
+                              ? tr("the active set holds %1").arg(valueText(parameter, *held))
+                              : tr("set %1 holds %2").arg(set).arg(valueText(parameter, *held)));
         }
     }
     shown.removeDuplicates();
     const quint8 mask = outcome.acknowledgedMask;
     m_out << QStringLiteral("%1  %2 = %3  (%4)\n")
                  .arg(id, parameter.name, shown.join(QStringLiteral(" / ")),
-                      mask ? setListText(mask) : QStringLiteral("active set"));
+                      mask ? setListText(mask) : tr("active set"));
     if (!outcome.error.isEmpty()) {
-        return fail(1, QStringLiteral("%1: not written to %2: %3")
+        return fail(1, tr("%1: not written to %2: %3")
                            .arg(id, setListText(outcome.refusedMask), outcome.error));
     }
     if (!differing.isEmpty()) {
-        return fail(1, QStringLiteral("%1: written %2, but %3")
+        return fail(1, tr("%1: written %2, but %3")
                            .arg(id, valueText(parameter, raw), differing.join(QStringLiteral(", "))));
     }
     done();

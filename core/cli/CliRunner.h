@@ -46,7 +46,8 @@ private:
     void fail(int exitCode, const QString &message);
     void done();
     QString valueText(const ParameterDescription &parameter, qint32 raw) const;
-    Language language() const { return m_request.connection.language; }
+    // "set 2", "sets 0,2,3" or "all sets".
+    static QString setListText(quint8 mask);
 
     CliRequest m_request;
     std::unique_ptr<DriveClient> m_client;

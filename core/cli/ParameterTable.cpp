@@ -1,17 +1,31 @@
 #include "ParameterTable.h"
 
-
 #include "parameters/DisplayScaling.h"
 #include "parameters/DriveIdentity.h"
 #include "parameters/ParameterFormat.h"
 #include "parameters/ParameterId.h"
 #include "parameters/Plaintexts.h"
 
+#include <QCoreApplication>
 #include <QStringList>
 
 namespace DriveDesk::ParameterTable {
 
 namespace {
+
+// The translation context of the reports: ParameterTable is a namespace.
+class TableText
+{
+    Q_DECLARE_TR_FUNCTIONS(ParameterTable)
+};
+
+// The last line of both reports: two counts side by side, each translated with its plural.
+QString counts(qsizetype groups, int parameters)
+{
+    const int groupCount = int(groups);
+    return TableText::tr("%n group(s)", nullptr, groupCount) + QStringLiteral(", ")
+        + TableText::tr("%n parameter(s)", nullptr, parameters) + QLatin1Char('\n');
+}
 
 // Columns padded to their widest cell; the last column is not padded.
 QString align(const QList<QStringList> &rows)
@@ -48,7 +62,7 @@ QString valuesText(const ParameterDescription &parameter)
     QStringList unique = perSet;
     unique.removeDuplicates();
     if (unique.size() == 1)
-        return unique.constFirst() + QStringLiteral(" (sets 0-7)");
+        return TableText::tr("%1 (sets 0-7)").arg(unique.constFirst());
     QStringList labelled;
     for (qsizetype s = 0; s < perSet.size(); ++s)
         labelled << QStringLiteral("%1:%2").arg(s).arg(perSet[s]);
@@ -62,20 +76,17 @@ QString valueText(const ParameterDescription &parameter, qint32 raw, bool withUn
     return ParameterFormat(parameter).text(raw, withUnit);
 }
 
-QString scan(const DriveDescription &drive, bool withValues, Language language)
+QString scan(const DriveDescription &drive, bool withValues)
 {
-    const bool german = language == Language::German;
     QString text;
     for (const GroupDescription &group : drive.groups) {
         text += QStringLiteral("%1  %2\n").arg(group.id, group.name);
         QList<QStringList> rows;
-        QStringList header{german ? QStringLiteral("  Parameter") : QStringLiteral("  parameter"),
-                           german ? QStringLiteral("Name") : QStringLiteral("name")};
+        QStringList header{QStringLiteral("  ") + TableText::tr("parameter"), TableText::tr("name")};
         if (withValues)
-            header << (german ? QStringLiteral("Wert") : QStringLiteral("value"));
-        header << QStringLiteral("min") << QStringLiteral("max")
-               << (german ? QStringLiteral("Vorgabe") : QStringLiteral("default"))
-               << (german ? QStringLiteral("Einheit") : QStringLiteral("unit"));
+            header << TableText::tr("value");
+        header << TableText::tr("min") << TableText::tr("max") << TableText::tr("default")
+               << TableText::tr("unit");
         rows << header;
         for (const ParameterDescription &p : group.parameters) {
             const DisplayScaling scaling(p.scaling);
@@ -90,18 +101,13 @@ QString scan(const DriveDescription &drive, bool withValues, Language language)
         }
         text += align(rows) + QLatin1Char('\n');
     }
-    text += german ? QStringLiteral("%1 Gruppen, %2 Parameter\n").arg(drive.groups.size()).arg(drive.parameterCount())
-                   : QStringLiteral("%1 groups, %2 parameters\n").arg(drive.groups.size()).arg(drive.parameterCount());
-    return text;
+    return text + counts(drive.groups.size(), drive.parameterCount());
 }
 
-QString info(const DriveDescription &drive, const DriveDescription &system, Language language)
+QString info(const DriveDescription &drive, const DriveDescription &system)
 {
-    const bool german = language == Language::German;
-    QString text;
-    text += QStringLiteral("%1: %2 (%3)\n")
-                .arg(german ? QStringLiteral("Verbindung") : QStringLiteral("connection"),
-                     drive.connection, drive.protocol);
+    QString text = TableText::tr("connection: %1 (%2)").arg(drive.connection, drive.protocol)
+        + QLatin1Char('\n');
     // What the drive is, from its identification parameters (and service 13 where the
     // protocol carries it): the same lines as the window's drive information.
     QList<QStringList> identity;
@@ -110,10 +116,8 @@ QString info(const DriveDescription &drive, const DriveDescription &system, Lang
     text += align(identity);
     text += QLatin1Char('\n');
     QList<QStringList> rows;
-    rows << QStringList{german ? QStringLiteral("Gruppe") : QStringLiteral("group"),
-                        german ? QStringLiteral("Adresse") : QStringLiteral("address"),
-                        german ? QStringLiteral("Parameter") : QStringLiteral("parameters"),
-                        german ? QStringLiteral("Name") : QStringLiteral("name")};
+    rows << QStringList{TableText::tr("group"), TableText::tr("address"),
+                        TableText::tr("parameters"), TableText::tr("name")};
     int total = 0;
     for (const GroupDescription &g : drive.groups) {
         rows << QStringList{g.id, ParameterId::hexAddress(g.address),
@@ -121,9 +125,7 @@ QString info(const DriveDescription &drive, const DriveDescription &system, Lang
         total += g.parameterCount;
     }
     text += align(rows);
-    text += german ? QStringLiteral("%1 Gruppen, %2 Parameter\n").arg(drive.groups.size()).arg(total)
-                   : QStringLiteral("%1 groups, %2 parameters\n").arg(drive.groups.size()).arg(total);
-    return text;
+    return text + counts(drive.groups.size(), total);
 }
 
 } // namespace DriveDesk::ParameterTable

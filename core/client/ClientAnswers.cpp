@@ -18,11 +18,6 @@ constexpr int kBusyBackoffMs = 5;
 // A partial telegram older than this, when an answer timed out, is a remnant: drop it.
 constexpr int kIdleGapMs = 10;
 
-QString counted(int count, const char *one, const char *many)
-{
-    return QStringLiteral("%1 %2").arg(count).arg(QLatin1String(count == 1 ? one : many));
-}
-
 } // namespace
 
 void ClientWorker::onReceived(const QByteArray &bytes)
@@ -353,25 +348,23 @@ QString ClientWorker::transportDetail(const PendingRequest &request, Reply::Stat
 {
     QStringList parts;
     if (request.timeouts > 0)
-        parts << counted(request.timeouts, "timeout", "timeouts");
+        parts << tr("%n timeout(s)", nullptr, request.timeouts);
     if (request.checksumErrors > 0)
-        parts << counted(request.checksumErrors, "answer with a wrong BCC",
-                         "answers with a wrong BCC");
+        parts << tr("%n answer(s) with a wrong BCC", nullptr, request.checksumErrors);
     if (request.lineErrors > 0)
-        parts << counted(request.lineErrors, "line error", "line errors");
+        parts << tr("%n line error(s)", nullptr, request.lineErrors);
     if (request.otherDecodeErrors > 0)
-        parts << counted(request.otherDecodeErrors, "unreadable answer", "unreadable answers");
+        parts << tr("%n unreadable answer(s)", nullptr, request.otherDecodeErrors);
     if (request.mismatches > 0)
-        parts << counted(request.mismatches, "answer that did not match the request",
-                         "answers that did not match the request");
+        parts << tr("%n answer(s) that did not match the request", nullptr, request.mismatches);
     if (request.transientAcks > 0) {
-        parts << QStringLiteral("%1 (%2)")
-                     .arg(counted(request.transientAcks, "transient refusal", "transient refusals"),
-                          ackText(request.lastTransientAck));
+        parts << tr("%n transient refusal(s) (%1)", nullptr, request.transientAcks)
+                     .arg(ackText(request.lastTransientAck));
     }
+    // A list of counts, not a sentence: the separators need no translation.
     QString text = parts.join(QStringLiteral(", "));
     if (status == Reply::Status::Timeout) {
-        const QString timeout = QStringLiteral("timeout %1 ms").arg(request.timeoutMs);
+        const QString timeout = tr("timeout %1 ms").arg(request.timeoutMs);
         text = text.isEmpty() ? timeout : QStringLiteral("%1; %2").arg(text, timeout);
     }
     return text;

@@ -141,7 +141,7 @@ void DriveScanner::onReplied(const Reply &reply, const QString &what, const Hand
         return;
     case Reply::Status::LinkLost:
     case Reply::Status::NotConnected:
-        finish(reply.message(m_language));
+        finish(reply.message());
         return;
     default:
         break;
@@ -202,8 +202,7 @@ void DriveScanner::onGroupProperties(quint8 page, const Reply &reply)
         // A refusal, whatever its ack, means there is no group on this page; anything else
         // leaves it unknown.
         if (reply.status != Reply::Status::Refused)
-            m_state.problems.append(
-                tr("group page %1h: %2").arg(hexByte(page), reply.message(m_language)));
+            m_state.problems.append(tr("group page %1h: %2").arg(hexByte(page), reply.message()));
         return;
     }
     ScanGroup &group = m_state.groups[page];
@@ -356,8 +355,8 @@ QString DriveScanner::failure(const QString &label, const Reply &reply) const
 {
     // An Ok reply without the expected payload is a decoding fault, not the drive's word.
     const QString service = serviceName(reply.request.service);
-    const QString reason = reply.ok() ? tr("the answer carries no %1").arg(service)
-                                      : reply.message(m_language);
+    const QString reason
+        = reply.ok() ? tr("the answer carries no %1").arg(service) : reply.message();
     return QStringLiteral("%1: %2").arg(label, reason);
 }
 

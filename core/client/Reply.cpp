@@ -1,8 +1,16 @@
 #include "Reply.h"
 
+#include <QCoreApplication>
+
 namespace DriveDesk {
 
 namespace {
+
+// The translation context of the messages: Reply is a plain value type.
+class ReplyText
+{
+    Q_DECLARE_TR_FUNCTIONS(Reply)
+};
 
 QString withDetail(const QString &sentence, const QString &detail)
 {
@@ -11,79 +19,37 @@ QString withDetail(const QString &sentence, const QString &detail)
     return QStringLiteral("%1 (%2)").arg(sentence, detail);
 }
 
-QString englishMessage(const Reply &reply)
-{
-    switch (reply.status) {
-    case Reply::Status::Ok:
-        return QStringLiteral("OK");
-    case Reply::Status::Refused:
-        if (reply.attempts > 1 && isTransient(reply.ack())) {
-            return QStringLiteral("drive refused: %1 (after %2 attempts)")
-                .arg(ackText(reply.ack(), Language::English))
-                .arg(reply.attempts);
-        }
-        return QStringLiteral("drive refused: %1").arg(ackText(reply.ack(), Language::English));
-    case Reply::Status::Timeout:
-        return withDetail(reply.attempts == 1
-                              ? QStringLiteral("no valid answer from the drive")
-                              : QStringLiteral("no valid answer from the drive after %1 attempts")
-                                    .arg(reply.attempts),
-                          reply.detail);
-    case Reply::Status::LinkLost:
-        return withDetail(QStringLiteral("the connection to the drive was lost"), reply.detail);
-    case Reply::Status::Cancelled:
-        return withDetail(QStringLiteral("cancelled"), reply.detail);
-    case Reply::Status::NotConnected:
-        return withDetail(QStringLiteral("not connected to a drive"), reply.detail);
-    case Reply::Status::Unsupported:
-        return withDetail(QStringLiteral("this request cannot be sent"), reply.detail);
-    case Reply::Status::NoReply:
-        return QStringLiteral("sent to a group of drives or to all drives, which never answer: "
-                              "carried out, not confirmed");
-    }
-    return statusName(reply.status);
-}
-
-QString germanMessage(const Reply &reply)
-{
-    switch (reply.status) {
-    case Reply::Status::Ok:
-        return QStringLiteral("OK");
-    case Reply::Status::Refused:
-        if (reply.attempts > 1 && isTransient(reply.ack())) {
-            return QStringLiteral("Umrichter lehnt ab: %1 (nach %2 Versuchen)")
-                .arg(ackText(reply.ack(), Language::German))
-                .arg(reply.attempts);
-        }
-        return QStringLiteral("Umrichter lehnt ab: %1").arg(ackText(reply.ack(), Language::German));
-    case Reply::Status::Timeout:
-        return withDetail(reply.attempts == 1
-                              ? QStringLiteral("keine gültige Antwort vom Umrichter")
-                              : QStringLiteral("keine gültige Antwort vom Umrichter nach %1 "
-                                               "Versuchen")
-                                    .arg(reply.attempts),
-                          reply.detail);
-    case Reply::Status::LinkLost:
-        return withDetail(QStringLiteral("die Verbindung zum Umrichter ist abgebrochen"),
-                          reply.detail);
-    case Reply::Status::Cancelled:
-        return withDetail(QStringLiteral("abgebrochen"), reply.detail);
-    case Reply::Status::NotConnected:
-        return withDetail(QStringLiteral("nicht mit einem Umrichter verbunden"), reply.detail);
-    case Reply::Status::Unsupported:
-        return withDetail(QStringLiteral("diese Anfrage kann nicht gesendet werden"), reply.detail);
-    case Reply::Status::NoReply:
-        return QStringLiteral("an eine Gruppe oder an alle Umrichter gesendet, die nie antworten: "
-                              "ausgeführt, nicht bestätigt");
-    }
-    return statusName(reply.status);
-}
-
 } // namespace
 
-QString Reply::message(Language language) const
+QString Reply::message() const
 {
-    return language == Language::German ? germanMessage(*this) : englishMessage(*this);
+    switch (status) {
+    case Status::Ok:
+        return ReplyText::tr("OK");
+    case Status::Refused:
+        if (attempts > 1 && isTransient(ack()))
+            return ReplyText::tr("drive refused: %1 (after %n attempt(s))", nullptr, attempts)
+                .arg(ackText(ack()));
+        return ReplyText::tr("drive refused: %1").arg(ackText(ack()));
+    case Status::Timeout:
+        return withDetail(attempts == 1
+                              ? ReplyText::tr("no valid answer from the drive")
+                              : ReplyText::tr("no valid answer from the drive after %n attempt(s)",
+                                              nullptr, attempts),
+                          detail);
+    case Status::LinkLost:
+        return withDetail(ReplyText::tr("the connection to the drive was lost"), detail);
+    case Status::Cancelled:
+        return withDetail(ReplyText::tr("cancelled"), detail);
+    case Status::NotConnected:
+        return withDetail(ReplyText::tr("not connected to a drive"), detail);
+    case Status::Unsupported:
+        return withDetail(ReplyText::tr("this request cannot be sent"), detail);
+    case Status::NoReply:
+        return ReplyText::tr("sent to a group of drives or to all drives, which never answer: "
+                             "carried out, not confirmed");
+    }
+    return statusName(status);
 }
 
 QString statusName(Reply::Status status)

@@ -39,9 +39,9 @@ struct Reply {
         return status == Status::LinkLost || status == Status::NotConnected
             || status == Status::Cancelled;
     }
-    // A sentence for a user: "drive refused: data invalid", "no answer from the drive after 4
-    // attempts (timeout 60 ms)".
-    QString message(Language language = Language::English) const;
+    // A sentence for a user in the installed language: "drive refused: data invalid", "no valid
+    // answer from the drive after 4 attempts (4 timeouts; timeout 60 ms)".
+    QString message() const;
 };
 
 QString statusName(Reply::Status status);

@@ -112,7 +112,7 @@ QString ConnectionSettings::displayName() const
 {
     QString what = protocolTitle(protocol);
     if (isDin(protocol) && kind != Kind::Simulated)
-        what += ConnectionSettingsText::tr(" drive %1").arg(driveAddress);
+        what = ConnectionSettingsText::tr("%1 drive %2").arg(what).arg(driveAddress);
     switch (kind) {
     case Kind::Simulated:
         return ConnectionSettingsText::tr("simulated %1 drive").arg(what);

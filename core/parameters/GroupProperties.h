@@ -2,6 +2,7 @@
 
 #include "PasswordLevel.h"
 
+#include <QCoreApplication>
 #include <QStringList>
 
 namespace DriveDesk {
@@ -9,6 +10,7 @@ namespace DriveDesk {
 // Reads the bit-coded properties of a parameter group (service 10, seed 002 2.12.1).
 class GroupProperties
 {
+    Q_DECLARE_TR_FUNCTIONS(GroupProperties)
 public:
     GroupProperties() = default;
     explicit GroupProperties(quint16 properties)
@@ -21,7 +23,7 @@ public:
     bool isVisibleInCombivis() const { return m_properties & (1u << 4); }
 
     // The password level, then every set flag (free bits 5-15 included), in words.
-    QStringList describe(Language language = Language::English) const;
+    QStringList describe() const;
 
 private:
     quint16 m_properties = 0;

@@ -6,119 +6,108 @@ namespace DriveDesk {
 
 namespace {
 
-struct Words
-{
-    const char *english;
-    const char *german;
-};
-
 struct Flag
 {
     int bit;
-    Words words;
+    const char *text;
 };
 
-QString say(const Words &words, Language language)
-{
-    return QString::fromUtf8(language == Language::German ? words.german : words.english);
-}
-
-constexpr std::array<Words, 4> kWidths { {
-    { "stored as byte", "gespeichert als Byte" },
-    { "stored as word", "gespeichert als Wort" },
-    { "stored as long", "gespeichert als Long" },
-    { "storage width 3 (not used)", "Speicherbreite 3 (nicht genutzt)" },
+constexpr std::array<const char *, 4> kWidths { {
+    QT_TRANSLATE_NOOP("ParameterProperties", "stored as byte"),
+    QT_TRANSLATE_NOOP("ParameterProperties", "stored as word"),
+    QT_TRANSLATE_NOOP("ParameterProperties", "stored as long"),
+    QT_TRANSLATE_NOOP("ParameterProperties", "storage width 3 (not used)"),
 } };
 
-constexpr std::array<Words, 4> kScalingResults { {
-    { "scaling result: byte", "Normierungsergebnis: Byte" },
-    { "scaling result: word", "Normierungsergebnis: Wort" },
-    { "scaling result: long", "Normierungsergebnis: Long" },
-    { "scaling result: none", "Normierungsergebnis: keines" },
+constexpr std::array<const char *, 4> kScalingResults { {
+    QT_TRANSLATE_NOOP("ParameterProperties", "scaling result: byte"),
+    QT_TRANSLATE_NOOP("ParameterProperties", "scaling result: word"),
+    QT_TRANSLATE_NOOP("ParameterProperties", "scaling result: long"),
+    QT_TRANSLATE_NOOP("ParameterProperties", "scaling result: none"),
 } };
 
-constexpr std::array<Words, 4> kLimitTypes { {
-    { "constant", "konstant" },
-    { "variable at power on", "variabel bei Power On" },
-    { "always variable", "immer variabel" },
-    { "type 3 (not used)", "Typ 3 (nicht genutzt)" },
+// The limit types other than constant, each as the whole line for the lower and the upper limit.
+constexpr std::array<const char *, 3> kLowerLimits { {
+    QT_TRANSLATE_NOOP("ParameterProperties", "lower limit variable at power on"),
+    QT_TRANSLATE_NOOP("ParameterProperties", "lower limit always variable"),
+    QT_TRANSLATE_NOOP("ParameterProperties", "lower limit type 3 (not used)"),
 } };
 
-constexpr std::array<Words, 4> kEnterModes { {
-    { "no enter", "kein Enter" },
-    { "enter with dot", "Enter mit Punkt" },
-    { "enter without dot", "Enter ohne Punkt" },
-    { "enter mode 3 (not used)", "Enter-Modus 3 (nicht genutzt)" },
+constexpr std::array<const char *, 3> kUpperLimits { {
+    QT_TRANSLATE_NOOP("ParameterProperties", "upper limit variable at power on"),
+    QT_TRANSLATE_NOOP("ParameterProperties", "upper limit always variable"),
+    QT_TRANSLATE_NOOP("ParameterProperties", "upper limit type 3 (not used)"),
 } };
 
-constexpr std::array<Words, 4> kFilterings { {
-    { "no display filtering", "keine Beruhigung" },
-    { "display filtering: time slot", "Anzeigeberuhigung: Zeitraster" },
-    { "display filtering: filter", "Anzeigeberuhigung: Filter" },
-    { "display filtering 3 (not used)", "Anzeigeberuhigung 3 (nicht genutzt)" },
+constexpr std::array<const char *, 4> kEnterModes { {
+    QT_TRANSLATE_NOOP("ParameterProperties", "no enter"),
+    QT_TRANSLATE_NOOP("ParameterProperties", "enter with dot"),
+    QT_TRANSLATE_NOOP("ParameterProperties", "enter without dot"),
+    QT_TRANSLATE_NOOP("ParameterProperties", "enter mode 3 (not used)"),
+} };
+
+constexpr std::array<const char *, 4> kFilterings { {
+    QT_TRANSLATE_NOOP("ParameterProperties", "no display filtering"),
+    QT_TRANSLATE_NOOP("ParameterProperties", "display filtering: time slot"),
+    QT_TRANSLATE_NOOP("ParameterProperties", "display filtering: filter"),
+    QT_TRANSLATE_NOOP("ParameterProperties", "display filtering 3 (not used)"),
 } };
 
 // Single bits of properties 1 worth naming when set (the fields are named separately).
 constexpr std::array<Flag, 10> kFlags1 { {
-    { 10, { "signed", "mit Vorzeichen" } },
-    { 11, { "set-programmable", "satzprogrammierbar" } },
-    { 16,
-      { "writable while the active set is displayed",
-        "schreibbar bei Anzeige des aktuellen Satzes" } },
-    { 17, { "scaled in the background", "Normierung im Hintergrund" } },
-    { 18, { "variable default value", "Defaultwert variabel" } },
-    { 19, { "default loaded only for a new device", "Defaultwert nur bei neuem Gerät laden" } },
+    { 10, QT_TRANSLATE_NOOP("ParameterProperties", "signed") },
+    { 11, QT_TRANSLATE_NOOP("ParameterProperties", "set-programmable") },
+    { 16, QT_TRANSLATE_NOOP("ParameterProperties", "writable while the active set is displayed") },
+    { 17, QT_TRANSLATE_NOOP("ParameterProperties", "scaled in the background") },
+    { 18, QT_TRANSLATE_NOOP("ParameterProperties", "variable default value") },
+    { 19, QT_TRANSLATE_NOOP("ParameterProperties", "default loaded only for a new device") },
     { 28,
-      { "not permitted as process data or for surveillance",
-        "nicht als Prozessdatum oder Überwachungsparameter zugelassen" } },
-    { 29, { "encoder parameter", "Encoder-Parameter" } },
-    { 30, { "system parameter", "Systemparameter" } },
-    { 31, { "variable display scaling", "variable Anzeigenormierung" } },
+      QT_TRANSLATE_NOOP("ParameterProperties",
+                        "not permitted as process data or for surveillance") },
+    { 29, QT_TRANSLATE_NOOP("ParameterProperties", "encoder parameter") },
+    { 30, QT_TRANSLATE_NOOP("ParameterProperties", "system parameter") },
+    { 31, QT_TRANSLATE_NOOP("ParameterProperties", "variable display scaling") },
 } };
 
 constexpr std::array<Flag, 20> kFlags2 { {
-    { 0, { "visible on the display", "sichtbar auf der Anzeige" } },
-    { 1, { "writable on the display", "schreibbar auf der Anzeige" } },
-    { 2, { "visible in COMBIVIS", "sichtbar über COMBIVIS" } },
-    { 3, { "writable via COMBIVIS", "schreibbar über COMBIVIS" } },
-    { 8, { "rotating count", "rotierende Zählweise" } },
-    { 9, { "changed by the inverter", "wird vom Umrichter geändert" } },
-    { 10, { "value without plaintext not displayed", "Wert ohne Klartext wird nicht angezeigt" } },
+    { 0, QT_TRANSLATE_NOOP("ParameterProperties", "visible on the display") },
+    { 1, QT_TRANSLATE_NOOP("ParameterProperties", "writable on the display") },
+    { 2, QT_TRANSLATE_NOOP("ParameterProperties", "visible in COMBIVIS") },
+    { 3, QT_TRANSLATE_NOOP("ParameterProperties", "writable via COMBIVIS") },
+    { 8, QT_TRANSLATE_NOOP("ParameterProperties", "rotating count") },
+    { 9, QT_TRANSLATE_NOOP("ParameterProperties", "changed by the inverter") },
+    { 10, QT_TRANSLATE_NOOP("ParameterProperties", "value without plaintext not displayed") },
     { 11,
-      { "configuration flag set (indirect configuration parameters, offline time base µs)",
-        "Konfigurationsflag gesetzt (indirekt adressierte Konfiguration, Offline-Zeitbasis µs)" } },
+      QT_TRANSLATE_NOOP(
+          "ParameterProperties",
+          "configuration flag set (indirect configuration parameters, offline time base µs)") },
     { 12,
-      { "write always: written by upload and download",
-        "Write Always: bei Up- und Download geschrieben" } },
+      QT_TRANSLATE_NOOP("ParameterProperties", "write always: written by upload and download") },
     { 13,
-      { "write only: not read by upload, written by download",
-        "Write Only: beim Upload nicht gelesen, beim Download geschrieben" } },
-    { 14,
-      { "excluded from the complete parameter list", "nicht in der kompletten Parameterliste" } },
-    { 15, { "not permitted as CP parameter", "nicht als CP-Parameter zugelassen" } },
-    { 16, { "decimal value of plaintexts suppressed", "Dezimalwert des Klartextes unterdrückt" } },
+      QT_TRANSLATE_NOOP("ParameterProperties",
+                        "write only: not read by upload, written by download") },
+    { 14, QT_TRANSLATE_NOOP("ParameterProperties", "excluded from the complete parameter list") },
+    { 15, QT_TRANSLATE_NOOP("ParameterProperties", "not permitted as CP parameter") },
+    { 16, QT_TRANSLATE_NOOP("ParameterProperties", "decimal value of plaintexts suppressed") },
     { 17,
-      { "read-only for up/download lists: not written by download",
-        "Read Only für Up-/Download-Listen: beim Download nicht geschrieben" } },
-    { 18, { "protected", "geschützt" } },
-    { 19, { "writable only at nop or error", "nur schreibbar bei nop oder Fehler" } },
-    { 20,
-      { "default not loaded while invisible", "Defaultwert bei Unsichtbarkeit nicht geladen" } },
-    { 21, { "shows the state at 'NOP' and 'LS'", "zeigt bei 'NOP' und 'LS' den Status" } },
-    { 22, { "indirectly addressed", "indirekt adressiert" } },
-    { 23,
-      { "not set-programmable for 'foc synchron'",
-        "nicht satzprogrammierbar für 'foc synchron'" } },
+      QT_TRANSLATE_NOOP("ParameterProperties",
+                        "read-only for up/download lists: not written by download") },
+    { 18, QT_TRANSLATE_NOOP("ParameterProperties", "protected") },
+    { 19, QT_TRANSLATE_NOOP("ParameterProperties", "writable only at nop or error") },
+    { 20, QT_TRANSLATE_NOOP("ParameterProperties", "default not loaded while invisible") },
+    { 21, QT_TRANSLATE_NOOP("ParameterProperties", "shows the state at 'NOP' and 'LS'") },
+    { 22, QT_TRANSLATE_NOOP("ParameterProperties", "indirectly addressed") },
+    { 23, QT_TRANSLATE_NOOP("ParameterProperties", "not set-programmable for 'foc synchron'") },
 } };
 
-QString inverterTypes(quint32 bits)
+QStringList inverterTypes(quint32 bits)
 {
     QStringList types;
     for (int type = 0; type < ParameterProperties::kInverterTypes; ++type) {
         if (bits & (1u << type))
             types << QString::number(type);
     }
-    return types.join(QStringLiteral(", "));
+    return types;
 }
 
 } // namespace
@@ -133,58 +122,46 @@ bool ParameterProperties::isWritableForInverterType(int type) const
     return type >= 0 && type < kInverterTypes && bit1(24 + type);
 }
 
-QStringList ParameterProperties::describe(Language language) const
+QStringList ParameterProperties::describe() const
 {
-    const bool german = language == Language::German;
     QStringList lines;
-    lines << (german ? QStringLiteral("Passwortlevel Lesen: %1") : QStringLiteral("read level: %1"))
-                 .arg(passwordLevelName(readLevel(), language));
-    lines << (german ? QStringLiteral("Passwortlevel Schreiben: %1")
-                     : QStringLiteral("write level: %1"))
-                 .arg(passwordLevelName(writeLevel(), language));
-    lines << say(kWidths[std::size_t(width())], language);
-    lines << say(kScalingResults[std::size_t(scalingResult())], language);
-    if (lowerLimitType() != LimitType::Constant) {
-        lines << (german ? QStringLiteral("Untergrenze %1") : QStringLiteral("lower limit %1"))
-                     .arg(say(kLimitTypes[std::size_t(lowerLimitType())], language));
+    lines << tr("read level: %1").arg(passwordLevelName(readLevel()));
+    lines << tr("write level: %1").arg(passwordLevelName(writeLevel()));
+    lines << tr(kWidths[std::size_t(width())]);
+    lines << tr(kScalingResults[std::size_t(scalingResult())]);
+    if (lowerLimitType() != LimitType::Constant)
+        lines << tr(kLowerLimits[std::size_t(lowerLimitType()) - 1]);
+    if (upperLimitType() != LimitType::Constant)
+        lines << tr(kUpperLimits[std::size_t(upperLimitType()) - 1]);
+    if (const QStringList visible = inverterTypes(field1(20, 4)); !visible.isEmpty()) {
+        const int count = int(visible.size());
+        lines << tr("visible for inverter type(s) %1", nullptr, count)
+                     .arg(visible.join(QStringLiteral(", ")));
     }
-    if (upperLimitType() != LimitType::Constant) {
-        lines << (german ? QStringLiteral("Obergrenze %1") : QStringLiteral("upper limit %1"))
-                     .arg(say(kLimitTypes[std::size_t(upperLimitType())], language));
-    }
-    if (const quint32 visible = field1(20, 4)) {
-        lines << (german ? QStringLiteral("sichtbar für Umrichtertyp %1")
-                         : QStringLiteral("visible for inverter type %1"))
-                     .arg(inverterTypes(visible));
-    }
-    if (const quint32 writable = field1(24, 4)) {
-        lines << (german ? QStringLiteral("schreibbar für Umrichtertyp %1")
-                         : QStringLiteral("writable for inverter type %1"))
-                     .arg(inverterTypes(writable));
+    if (const QStringList writable = inverterTypes(field1(24, 4)); !writable.isEmpty()) {
+        const int count = int(writable.size());
+        lines << tr("writable for inverter type(s) %1", nullptr, count)
+                     .arg(writable.join(QStringLiteral(", ")));
     }
     for (const Flag &flag : kFlags1) {
         if (bit1(flag.bit))
-            lines << say(flag.words, language);
+            lines << tr(flag.text);
     }
 
     if (isReadOnly())
-        lines << (german ? QStringLiteral("über COMBIVIS nur lesbar")
-                         : QStringLiteral("read-only via COMBIVIS"));
+        lines << tr("read-only via COMBIVIS");
     if (enterMode() != EnterMode::None)
-        lines << say(kEnterModes[std::size_t(enterMode())], language);
+        lines << tr(kEnterModes[std::size_t(enterMode())]);
     if (displayFiltering() != DisplayFiltering::None)
-        lines << say(kFilterings[std::size_t(displayFiltering())], language);
+        lines << tr(kFilterings[std::size_t(displayFiltering())]);
     for (const Flag &flag : kFlags2) {
         if (bit2(flag.bit))
-            lines << say(flag.words, language);
+            lines << tr(flag.text);
     }
     // The free bits are named too: a drive that sets them means something by it.
     for (int bit = 24; bit < 32; ++bit) {
-        if (bit2(bit)) {
-            lines << (german ? QStringLiteral("Eigenschaften 2: freies Bit %1 gesetzt")
-                             : QStringLiteral("properties 2: free bit %1 set"))
-                         .arg(bit);
-        }
+        if (bit2(bit))
+            lines << tr("properties 2: free bit %1 set").arg(bit);
     }
     return lines;
 }

@@ -2,6 +2,7 @@
 
 #include "PasswordLevel.h"
 
+#include <QCoreApplication>
 #include <QStringList>
 
 namespace DriveDesk {
@@ -9,6 +10,7 @@ namespace DriveDesk {
 // Reads the bit-coded properties 1 and 2 of a parameter (service 4, seed 002 2.6.1 and 2.6.2).
 class ParameterProperties
 {
+    Q_DECLARE_TR_FUNCTIONS(ParameterProperties)
 public:
     enum class Width : quint8 { Byte = 0, Word = 1, Long = 2, Unused = 3 };
     enum class ScalingResult : quint8 { Byte = 0, Word = 1, Long = 2, None = 3 };
@@ -86,7 +88,7 @@ public:
     bool isReadOnly() const { return !isWritableInCombivis(); }
 
     // The password levels and the storage, then every set flag, in words.
-    QStringList describe(Language language = Language::English) const;
+    QStringList describe() const;
 
 private:
     quint32 field1(int shift, int bits) const

@@ -1,35 +1,30 @@
 #include "PasswordLevel.h"
 
+#include <QCoreApplication>
+
 #include <array>
 
 namespace DriveDesk {
 
 namespace {
 
-struct LevelNames
-{
-    const char *english;
-    const char *german;
-};
-
-// The seed names the levels in English in both columns; the German words are ours.
-constexpr std::array<LevelNames, 8> kNames { {
-    { "CP read only", "CP nur lesen" },
-    { "CP read/write", "CP lesen/schreiben" },
-    { "CP service", "CP Service" },
-    { "Application", "Applikation" },
-    { "Drive mode", "Drive-Mode" },
-    { "unused", "nicht genutzt" },
-    { "Security", "Security" },
-    { "Supervisor", "Supervisor" },
+// The seed names the levels in English in both columns; the German words are the catalogue's.
+constexpr std::array<const char *, 8> kNames { {
+    QT_TRANSLATE_NOOP("PasswordLevel", "CP read only"),
+    QT_TRANSLATE_NOOP("PasswordLevel", "CP read/write"),
+    QT_TRANSLATE_NOOP("PasswordLevel", "CP service"),
+    QT_TRANSLATE_NOOP("PasswordLevel", "Application"),
+    QT_TRANSLATE_NOOP("PasswordLevel", "Drive mode"),
+    QT_TRANSLATE_NOOP("PasswordLevel", "unused"),
+    QT_TRANSLATE_NOOP("PasswordLevel", "Security"),
+    QT_TRANSLATE_NOOP("PasswordLevel", "Supervisor"),
 } };
 
 } // namespace
 
-QString passwordLevelName(PasswordLevel level, Language language)
+QString passwordLevelName(PasswordLevel level)
 {
-    const LevelNames &names = kNames[std::size_t(level) & 0x07];
-    return QString::fromUtf8(language == Language::German ? names.german : names.english);
+    return QCoreApplication::translate("PasswordLevel", kNames[std::size_t(level) & 0x07]);
 }
 
 qint32 passwordReadValue(PasswordLevel level)

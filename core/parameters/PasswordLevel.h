@@ -1,7 +1,5 @@
 #pragma once
 
-#include "protocol/Language.h"
-
 #include <QString>
 
 #include <optional>
@@ -21,7 +19,7 @@ enum class PasswordLevel : quint8 {
     Supervisor = 7,
 };
 
-QString passwordLevelName(PasswordLevel level, Language language = Language::English);
+QString passwordLevelName(PasswordLevel level);
 
 // The password parameter ud.01: it reads the level in force, a password written to it changes
 // the level.

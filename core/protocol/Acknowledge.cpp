@@ -1,45 +1,40 @@
 #include "Acknowledge.h"
 
+#include <QCoreApplication>
+
 #include <array>
 
 namespace DriveDesk {
 
 namespace {
 
-struct AckTexts {
-    const char *english;
-    const char *german;
-};
-
-// Seed 002, chapter 1.2 gives both columns.
-constexpr std::array<AckTexts, 16> kTexts{{
-    {"OK", "OK"},
-    {"not ready", "nicht bereit"},
-    {"address or password invalid", "Adresse oder Passwort ungültig"},
-    {"data invalid", "Daten ungültig"},
-    {"parameter write protected", "Parameter schreibgeschützt"},
-    {"BCC error", "BCC-Fehler"},
-    {"inverter busy", "Umrichter beschäftigt"},
-    {"service not available", "Dienst nicht verfügbar"},
-    {"password invalid", "Passwort ungültig"},
-    {"telegram framing error: wrong count of characters",
-     "Telegramm-Rahmenfehler: falsche Zeichenanzahl"},
-    {"transmission error: overrun, framing or parity error",
-     "Übertragungsfehler: Überlauf-, Rahmen- oder Paritätsfehler"},
-    {"set selection invalid", "Satzkennung ungültig"},
-    {"language selection invalid", "Sprachkennung ungültig"},
-    {"address invalid", "Adresse ungültig"},
-    {"operation not possible", "Operation nicht möglich"},
-    {"unknown acknowledge 15", "unbekannte Quittung 15"},
+// Seed 002, chapter 1.2 names each code in English and German; the German column is the
+// catalogue's translation.
+constexpr std::array<const char *, 16> kTexts{{
+    QT_TRANSLATE_NOOP("Acknowledge", "OK"),
+    QT_TRANSLATE_NOOP("Acknowledge", "not ready"),
+    QT_TRANSLATE_NOOP("Acknowledge", "address or password invalid"),
+    QT_TRANSLATE_NOOP("Acknowledge", "data invalid"),
+    QT_TRANSLATE_NOOP("Acknowledge", "parameter write protected"),
+    QT_TRANSLATE_NOOP("Acknowledge", "BCC error"),
+    QT_TRANSLATE_NOOP("Acknowledge", "inverter busy"),
+    QT_TRANSLATE_NOOP("Acknowledge", "service not available"),
+    QT_TRANSLATE_NOOP("Acknowledge", "password invalid"),
+    QT_TRANSLATE_NOOP("Acknowledge", "telegram framing error: wrong count of characters"),
+    QT_TRANSLATE_NOOP("Acknowledge", "transmission error: overrun, framing or parity error"),
+    QT_TRANSLATE_NOOP("Acknowledge", "set selection invalid"),
+    QT_TRANSLATE_NOOP("Acknowledge", "language selection invalid"),
+    QT_TRANSLATE_NOOP("Acknowledge", "address invalid"),
+    QT_TRANSLATE_NOOP("Acknowledge", "operation not possible"),
+    QT_TRANSLATE_NOOP("Acknowledge", "unknown acknowledge 15"),
 }};
 
 } // namespace
 
-QString ackText(Ack ack, Language language)
+QString ackText(Ack ack)
 {
     const auto index = static_cast<std::size_t>(ack) & 0x0F;
-    const AckTexts &texts = kTexts[index];
-    return QString::fromUtf8(language == Language::German ? texts.german : texts.english);
+    return QCoreApplication::translate("Acknowledge", kTexts[index]);
 }
 
 bool isTransient(Ack ack)

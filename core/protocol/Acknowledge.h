@@ -1,7 +1,5 @@
 #pragma once
 
-#include "Language.h"
-
 #include <QString>
 
 namespace DriveDesk {
@@ -26,8 +24,8 @@ enum class Ack : quint8 {
     Free = 15,
 };
 
-// The drive's reason in words, in English or German, as the service description gives it.
-QString ackText(Ack ack, Language language = Language::English);
+// The drive's reason in words, as the service description gives it, in the user's language.
+QString ackText(Ack ack);
 
 // Whether repeating the same request may succeed (busy, BCC and transmission errors).
 bool isTransient(Ack ack);

@@ -6,7 +6,8 @@
 
 namespace DriveDesk {
 
-// The language id the services carry (names, plaintexts): 0 English, 1 German.
+// The language id the services carry (names, plaintexts): 0 English, 1 German. The drive's own
+// texts come in it; DriveDesk's texts follow the installed translator instead.
 enum class Language : quint8 { English = 0, German = 1 };
 
 // "en" and "de": how the command lines and the settings name a language.

@@ -5,7 +5,7 @@ drivedesk_add_test(NAME tst_simulatedbus LABELS unit
     LIBS drivedesk_bus)
 drivedesk_add_test(NAME tst_simulatedlink LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_simulatedlink.cpp ${CMAKE_CURRENT_LIST_DIR}/BusTestSupport.h
-    LIBS drivedesk_bus)
+    LIBS drivedesk_bus drivedesk_translations)
 drivedesk_add_test(NAME tst_simulatorserver LABELS unit integration
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_simulatorserver.cpp ${CMAKE_CURRENT_LIST_DIR}/BusTestSupport.h
     LIBS drivedesk_bus)

@@ -4,6 +4,7 @@
 #include "bus/SimulatedLink.h"
 #include "link/SerialLink.h"
 #include "link/TcpLink.h"
+#include "Translations.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -30,6 +31,9 @@ class TestSimulatedLink : public QObject
 {
     Q_OBJECT
 private slots:
+    // English as the programs show it: with its catalogue, which holds the plural forms.
+    void initTestCase() { QVERIFY(installTranslations(QStringLiteral("en"))); }
+
     void opensFromTheEventLoop()
     {
         SimulatedLink link(simulated(Protocol::Hsp5));

@@ -224,6 +224,32 @@ private slots:
                              QStringLiteral("1")});
         QCOMPARE(run.exitCode, 1);
         QVERIFY2(run.err.contains(QStringLiteral("address or password invalid")), qPrintable(run.err));
+
+        // In German the whole message is German: the catalogue, not the drive, says it.
+        const Run german = sim({QStringLiteral("--language"), QStringLiteral("de"), QStringLiteral("write"),
+                                QStringLiteral("cn.00"), QStringLiteral("--raw"), QStringLiteral("1")});
+        QCOMPARE(german.exitCode, 1);
+        QVERIFY2(german.err.contains(QStringLiteral("Umrichter lehnt ab: Adresse oder Passwort ungültig")),
+                 qPrintable(german.err));
+        QVERIFY2(!german.err.contains(QStringLiteral("refused")), qPrintable(german.err));
+    }
+
+    void germanReportsReadAsGerman()
+    {
+        const Run info = sim({QStringLiteral("--language"), QStringLiteral("de"), QStringLiteral("info")});
+        QVERIFY2(info.exitCode == 0, qPrintable(explain(info)));
+        QVERIFY2(info.out.contains(QStringLiteral("Verbindung: ")), qPrintable(info.out));
+        QVERIFY2(info.out.contains(QRegularExpression(QStringLiteral("^Gruppe\\s+Adresse\\s+Parameter\\s+Name$"),
+                                                      QRegularExpression::MultilineOption)),
+                 qPrintable(info.out));
+        QVERIFY2(info.out.contains(QRegularExpression(QStringLiteral("\\d+ Gruppen, \\d+ Parameter\\n$"))),
+                 qPrintable(info.out));
+
+        const Run write = sim({QStringLiteral("--language"), QStringLiteral("de"), QStringLiteral("write"),
+                               QStringLiteral("op.28"), QStringLiteral("12.5"), QStringLiteral("--sets"),
+                               QStringLiteral("2")});
+        QVERIFY2(write.exitCode == 0, qPrintable(explain(write)));
+        QVERIFY2(write.out.contains(QStringLiteral("(Satz 2)")), qPrintable(write.out));
     }
 
     void readOnlyIsRefusedBeforeAnythingIsSent()

@@ -1,7 +1,7 @@
 # The client: reply texts and checks (unit), and the real client against the simulated drive
 # in process, over TCP and over pseudo-terminals (integration).
 drivedesk_add_test(NAME tst_reply LABELS unit
-    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_reply.cpp LIBS drivedesk_client)
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_reply.cpp LIBS drivedesk_client drivedesk_translations)
 drivedesk_add_test(NAME tst_replycheck LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_replycheck.cpp LIBS drivedesk_client)
 
@@ -9,7 +9,7 @@ foreach(name clientservices clientdin clientpipeline clientfaults clienttranspor
         clientseedonly clientcache)
     drivedesk_add_test(NAME tst_${name} LABELS unit integration TIMEOUT 300
         SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_${name}.cpp ${CMAKE_CURRENT_LIST_DIR}/ClientTestSupport.h
-        LIBS drivedesk_client drivedesk_bus)
+        LIBS drivedesk_client drivedesk_bus drivedesk_translations)
 endforeach()
 
 include(${CMAKE_CURRENT_LIST_DIR}/scanner.cmake)

@@ -1,4 +1,5 @@
 #include "ClientTestSupport.h"
+#include "Translations.h"
 
 #include <QTest>
 
@@ -33,6 +34,9 @@ class TestClientDin : public QObject
 {
     Q_OBJECT
 private slots:
+    // English as the programs show it: with its catalogue, which holds the plural forms.
+    void initTestCase() { QVERIFY(installTranslations(QStringLiteral("en"))); }
+
     void selectionIsSentOnlyWhenItMayBeGone()
     {
         Session s(simulated(Protocol::Din66019II, bus({1, 2})));

@@ -1,4 +1,5 @@
 #include "ClientTestSupport.h"
+#include "Translations.h"
 
 #include <QTest>
 
@@ -74,6 +75,9 @@ class TestClientPipeline : public QObject
 {
     Q_OBJECT
 private slots:
+    // English as the programs show it: with its catalogue, which holds the plural forms.
+    void initTestCase() { QVERIFY(installTranslations(QStringLiteral("en"))); }
+
     void fourRequestsInFlightAreAllMatchedCorrectly()
     {
         Session s(simulated(Protocol::Hsp5, fast()));

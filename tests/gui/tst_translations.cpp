@@ -1,11 +1,16 @@
 #include "bus/LinkFactory.h"
+#include "client/Reply.h"
 #include "edit/EditController.h"
 #include "link/ConnectionSettings.h"
 #include "model/ParameterModel.h"
 #include "monitor/TrafficFormat.h"
+#include "parameters/GroupProperties.h"
 #include "parameters/ParameterDocument.h"
+#include "parameters/ParameterProperties.h"
 #include "parameters/ParameterId.h"
+#include "Translations.h"
 
+#include <QDirIterator>
 #include <QFile>
 #include <QRegularExpression>
 #include <QSet>
@@ -138,8 +143,9 @@ QString catalogueFile(const char *name)
 
 } // namespace
 
-// The German and English catalogues: drivedesk's resource path loads them, the window's and the
-// core's texts come out German, counts take the right form, and no entry is left unfinished.
+// The German and English catalogues: installTranslations() loads them as both front ends do, the
+// window's and the core's texts come out German, counts take the right form, and no entry is
+// left unfinished.
 class TestTranslations : public QObject
 {
     Q_OBJECT
@@ -149,10 +155,9 @@ private slots:
         QVERIFY(m_german.load(QStringLiteral(":/i18n/drivedesk_de.qm")));
         QVERIFY(m_german.language().startsWith(QLatin1String("de")));
         QVERIFY(m_english.load(QStringLiteral(":/i18n/drivedesk_en.qm")));
-        QVERIFY(QCoreApplication::installTranslator(&m_german));
+        QVERIFY(!installTranslations(QStringLiteral("xx")));
+        QVERIFY(installTranslations(QStringLiteral("de")));
     }
-
-    void cleanupTestCase() { QCoreApplication::removeTranslator(&m_german); }
 
     void monitorColumnsAreGerman()
     {
@@ -206,6 +211,30 @@ private slots:
         QCOMPARE(error, QStringLiteral("drive: fehlt"));
     }
 
+    // The drive's refusals, the client's errors and the names of levels and properties: German
+    // from the catalogue, the same for the window and the command line.
+    void driveAndClientTextsAreGerman()
+    {
+        Reply refused;
+        refused.status = Reply::Status::Refused;
+        refused.response.ack = Ack::AddressOrPasswordInvalid;
+        refused.attempts = 1;
+        QCOMPARE(refused.message(),
+                 QStringLiteral("Umrichter lehnt ab: Adresse oder Passwort ungültig"));
+
+        Reply timeout;
+        timeout.status = Reply::Status::Timeout;
+        timeout.attempts = 3;
+        QCOMPARE(timeout.message(),
+                 QStringLiteral("keine gültige Antwort vom Umrichter nach 3 Versuchen"));
+
+        QCOMPARE(passwordLevelName(PasswordLevel::DriveMode), QStringLiteral("Drive-Mode"));
+        QCOMPARE(GroupProperties(0x0010).describe().last(),
+                 QStringLiteral("sichtbar über COMBIVIS"));
+        QVERIFY(ParameterProperties(0, 0).describe().contains(
+            QStringLiteral("über COMBIVIS nur lesbar")));
+    }
+
     void countsTakeTheirForm()
     {
         const auto german = [this](const char *context, const char *source, int n) {
@@ -229,6 +258,14 @@ private slots:
         QCOMPARE(english("ParameterDocument", "%n entries; expected 1 (or 8, one for each set)", 0),
                  QStringLiteral("%n entries; expected 1 (or 8, one for each set)"));
         QCOMPARE(english("DriveDesk::TrafficModel", "%n byte(s)", 1), QStringLiteral("%n byte"));
+
+        QCOMPARE(german("ParameterTable", "%n group(s)", 1), QStringLiteral("%n Gruppe"));
+        QCOMPARE(german("ParameterTable", "%n group(s)", 16), QStringLiteral("%n Gruppen"));
+        QCOMPARE(english("ParameterTable", "%n group(s)", 1), QStringLiteral("%n group"));
+        QCOMPARE(german("DriveDesk::ClientWorker", "%n timeout(s)", 2),
+                 QStringLiteral("%n Zeitüberschreitungen"));
+        QCOMPARE(english("DriveDesk::CliRunner", "set(s) %1", 1), QStringLiteral("set %1"));
+        QCOMPARE(english("DriveDesk::CliRunner", "set(s) %1", 3), QStringLiteral("sets %1"));
     }
 
     void cataloguesAreComplete_data()
@@ -256,6 +293,25 @@ private slots:
                                 .arg(entry.context, entry.source, found.join(QStringLiteral("; ")));
         }
         QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
+    }
+
+    // German belongs in the catalogue: a program source with an umlaut holds a text it misses.
+    void noGermanInTheProgramSources()
+    {
+        static const QRegularExpression umlaut(QStringLiteral("[äöüßÄÖÜ]"));
+        QStringList found;
+        for (const char *folder : { "core", "ui", "app" }) {
+            QDirIterator it(QStringLiteral(DRIVEDESK_SOURCE_DIR "/") + QLatin1String(folder),
+                            { QStringLiteral("*.cpp"), QStringLiteral("*.h") }, QDir::Files,
+                            QDirIterator::Subdirectories);
+            while (it.hasNext()) {
+                QFile file(it.next());
+                QVERIFY2(file.open(QIODevice::ReadOnly), qPrintable(file.fileName()));
+                if (QString::fromUtf8(file.readAll()).contains(umlaut))
+                    found << file.fileName();
+            }
+        }
+        QVERIFY2(found.isEmpty(), qPrintable(found.join(QLatin1Char('\n'))));
     }
 
     void bothCataloguesHoldTheSameTexts()

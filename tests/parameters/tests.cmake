@@ -3,7 +3,7 @@
 drivedesk_add_test(NAME tst_displayscaling LABELS unit
     SOURCES parameters/tst_displayscaling.cpp LIBS drivedesk_parameters)
 drivedesk_add_test(NAME tst_parameterproperties LABELS unit
-    SOURCES parameters/tst_parameterproperties.cpp LIBS drivedesk_parameters)
+    SOURCES parameters/tst_parameterproperties.cpp LIBS drivedesk_parameters drivedesk_translations)
 drivedesk_add_test(NAME tst_plaintexts LABELS unit
     SOURCES parameters/tst_plaintexts.cpp LIBS drivedesk_parameters)
 drivedesk_add_test(NAME tst_parameterid LABELS unit

@@ -1,7 +1,9 @@
+#include "Translations.h"
 #include "parameters/GroupProperties.h"
 #include "parameters/ParameterProperties.h"
 
 #include <QTest>
+#include <QTranslator>
 
 using namespace DriveDesk;
 
@@ -19,6 +21,9 @@ class TestParameterProperties : public QObject
 {
     Q_OBJECT
 private slots:
+    // English as the programs show it: with its catalogue, which holds the plural forms.
+    void initTestCase() { QVERIFY(installTranslations(QStringLiteral("en"))); }
+
     void passwordLevelsHaveNamesAndReadValues()
     {
         const QStringList english { QStringLiteral("CP read only"), QStringLiteral("CP read/write"),
@@ -28,14 +33,16 @@ private slots:
         for (int level = 0; level < 8; ++level) {
             const auto password = PasswordLevel(level);
             QCOMPARE(passwordLevelName(password), english.at(level));
-            QVERIFY(!passwordLevelName(password, Language::German).isEmpty());
             QCOMPARE(passwordReadValue(password), -1 - level);
             QCOMPARE(passwordLevelFromReadValue(-1 - level), password);
         }
-        QCOMPARE(passwordLevelName(PasswordLevel::CpReadOnly, Language::German),
-                 QStringLiteral("CP nur lesen"));
-        QCOMPARE(passwordLevelName(PasswordLevel::Application, Language::German),
-                 QStringLiteral("Applikation"));
+        {
+            QTranslator german; // removes itself from the application when it goes
+            QVERIFY(german.load(QStringLiteral(":/i18n/drivedesk_de.qm")));
+            QVERIFY(QCoreApplication::installTranslator(&german));
+            QCOMPARE(passwordLevelName(PasswordLevel::CpReadOnly), QStringLiteral("CP nur lesen"));
+            QCOMPARE(passwordLevelName(PasswordLevel::Application), QStringLiteral("Applikation"));
+        }
         QCOMPARE(passwordReadValue(PasswordLevel::Supervisor), -8);
         QVERIFY(!passwordLevelFromReadValue(0));
         QVERIFY(!passwordLevelFromReadValue(-9));
@@ -157,7 +164,10 @@ private slots:
         QVERIFY(!lines.contains(QStringLiteral("read-only via COMBIVIS")));
         QVERIFY(!lines.contains(QStringLiteral("protected")));
 
-        const QStringList german = p.describe(Language::German);
+        QTranslator catalogue;
+        QVERIFY(catalogue.load(QStringLiteral(":/i18n/drivedesk_de.qm")));
+        QVERIFY(QCoreApplication::installTranslator(&catalogue));
+        const QStringList german = p.describe();
         QVERIFY(german.contains(QStringLiteral("satzprogrammierbar")));
         QVERIFY(german.contains(QStringLiteral("Passwortlevel Lesen: CP lesen/schreiben")));
         QCOMPARE(german.size(), lines.size());
@@ -170,7 +180,7 @@ private slots:
         QCOMPARE(lines.removeDuplicates(), 0);
         QVERIFY(lines.contains(QStringLiteral("read level: Supervisor")));
         QVERIFY(lines.contains(QStringLiteral("storage width 3 (not used)")));
-        QVERIFY(lines.contains(QStringLiteral("visible for inverter type 0, 1, 2, 3")));
+        QVERIFY(lines.contains(QStringLiteral("visible for inverter types 0, 1, 2, 3")));
         QVERIFY(lines.contains(QStringLiteral("protected")));
         QVERIFY(lines.contains(QStringLiteral("properties 2: free bit 31 set")));
         QVERIFY(
@@ -187,7 +197,10 @@ private slots:
                  (QStringList { QStringLiteral("password level: Security"),
                                 QStringLiteral("visible in COMBIVIS") }));
         QVERIFY(GroupProperties(quint16(bit(3))).isVisibleOnDisplay());
-        QCOMPARE(GroupProperties(quint16(bit(3) | bit(9))).describe(Language::German),
+        QTranslator german;
+        QVERIFY(german.load(QStringLiteral(":/i18n/drivedesk_de.qm")));
+        QVERIFY(QCoreApplication::installTranslator(&german));
+        QCOMPARE(GroupProperties(quint16(bit(3) | bit(9))).describe(),
                  (QStringList { QStringLiteral("Passwortlevel: CP nur lesen"),
                                 QStringLiteral("sichtbar auf der Anzeige"),
                                 QStringLiteral("freies Bit 9 gesetzt") }));

@@ -100,7 +100,7 @@ void AccessController::modelDataChanged(const QModelIndex &topLeft, const QModel
 
 QString AccessController::levelName(PasswordLevel level) const
 {
-    return passwordLevelName(level, m_client->settings().language);
+    return passwordLevelName(level);
 }
 
 } // namespace DriveDesk

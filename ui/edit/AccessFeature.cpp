@@ -43,7 +43,7 @@ void AccessFeature::attach(DriveSession *session)
     connect(session->accessController(), &AccessController::levelChanged, this,
             [this](PasswordLevel level) {
                 m_levelLabel->setText(tr("Password level: %1")
-                                          .arg(passwordLevelName(level, frame().language())));
+                                          .arg(passwordLevelName(level)));
             });
 }
 
@@ -59,8 +59,7 @@ void AccessFeature::enterPassword()
     const AccessController *access = frame().session()->accessController();
     auto *dialog = new PasswordDialog(frame().frameWidget());
     dialog->setLevel(access->isLevelKnown() ? std::optional<PasswordLevel>(access->level())
-                                            : std::nullopt,
-                     frame().language());
+                                            : std::nullopt);
     connect(dialog, &QDialog::accepted, this, [this, dialog] {
         if (frame().isReady() && dialog->password())
             frame().session()->accessController()->enterPassword(*dialog->password());

@@ -37,9 +37,9 @@ PasswordDialog::PasswordDialog(QWidget *parent)
     m_password->setFocus();
 }
 
-void PasswordDialog::setLevel(std::optional<PasswordLevel> level, Language language)
+void PasswordDialog::setLevel(std::optional<PasswordLevel> level)
 {
-    m_level->setText(level ? tr("%1 (%2)").arg(passwordLevelName(*level, language)).arg(int(*level))
+    m_level->setText(level ? tr("%1 (%2)").arg(passwordLevelName(*level)).arg(int(*level))
                            : tr("not read yet"));
 }
 

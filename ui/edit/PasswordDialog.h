@@ -23,7 +23,7 @@ public:
     explicit PasswordDialog(QWidget *parent = nullptr);
 
     // Nothing: the level has not been read yet.
-    void setLevel(std::optional<PasswordLevel> level, Language language = Language::English);
+    void setLevel(std::optional<PasswordLevel> level);
     // The number typed; nothing while the field holds none.
     std::optional<int> password() const;
 

@@ -49,7 +49,6 @@ public:
     QUndoStack *undoStack() const override { return m_undoStack; }
     DriveSession *session() const override { return m_session; }
     bool isReady() const override;
-    Language language() const override { return m_language; }
     void showMessage(const QString &text) override;
     void updateActions() override;
 

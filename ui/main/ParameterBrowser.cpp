@@ -285,11 +285,11 @@ void ParameterBrowser::followFilter()
         m_empty->setText(m_filter->isFiltering()
                              ? tr("No parameter here matches the search and the filters.")
                              : tr("This group holds no parameters."));
-        text += tr(": none shown");
+        text = tr("%1: none shown").arg(text);
+    } else if (m_filter->isFiltering()) {
+        text = tr("%1: %n parameter(s) (filtered)", nullptr, shown).arg(text);
     } else {
-        text += tr(": %n parameter(s)", nullptr, shown);
-        if (m_filter->isFiltering())
-            text += tr(" (filtered)");
+        text = tr("%1: %n parameter(s)", nullptr, shown).arg(text);
     }
     m_scope->setText(text);
     m_stack->setCurrentWidget(empty || m_model->rowCount() == 0 ? static_cast<QWidget *>(m_empty)

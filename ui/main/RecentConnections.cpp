@@ -97,13 +97,12 @@ bool RecentConnections::sameConnection(const ConnectionSettings &a, const Connec
 
 QString RecentConnections::describe(const ConnectionSettings &settings)
 {
-    QString text = settings.displayName();
     // The simulated drive on a DIN bus answers at one address: name it.
     if (settings.kind == ConnectionSettings::Kind::Simulated && settings.protocol != Protocol::Hsp5)
-        text += QStringLiteral(", ")
-            + QCoreApplication::translate("DriveDesk::RecentConnections", "address %1")
-                  .arg(settings.driveAddress);
-    return text;
+        return QCoreApplication::translate("DriveDesk::RecentConnections", "%1, address %2")
+            .arg(settings.displayName())
+            .arg(settings.driveAddress);
+    return settings.displayName();
 }
 
 } // namespace DriveDesk

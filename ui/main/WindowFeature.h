@@ -1,7 +1,5 @@
 #pragma once
 
-#include "protocol/Language.h"
-
 #include <QObject>
 
 class QAction;
@@ -39,8 +37,6 @@ public:
     virtual DriveSession *session() const = 0;
     // Connected and read: values may be edited.
     virtual bool isReady() const = 0;
-    // The UI's language, in which the drive's own texts are read too.
-    virtual Language language() const = 0;
 
     virtual void showMessage(const QString &text) = 0;
     // Something an action depends on changed: every feature's actions enable as they apply.

@@ -164,8 +164,7 @@ bool ParameterModel::requestWrite(quint16 address, quint8 setMask, qint32 raw, Q
     if (isAboveLevel(*row)) {
         const PasswordLevel needed
             = std::max(row->properties().readLevel(), row->properties().writeLevel());
-        return fail(tr("%1 needs password level %2")
-                        .arg(row->id(), passwordLevelName(needed, Language(m_drive.language))));
+        return fail(tr("%1 needs password level %2").arg(row->id(), passwordLevelName(needed)));
     }
     if (setMask == 0)
         return fail(tr("%1: no set chosen").arg(row->id()));

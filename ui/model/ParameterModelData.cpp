@@ -182,7 +182,7 @@ QVariant ParameterModel::toolTip(const ParameterRow &row, int column) const
             return tr("%1: %2").arg(ParameterId::hexAddress(row.address()), description.error);
         return ParameterId::hexAddress(row.address());
     case AccessColumn:
-        return row.properties().describe(Language(m_drive.language)).join(QLatin1Char('\n'));
+        return row.properties().describe().join(QLatin1Char('\n'));
     default:
         return {};
     }
@@ -195,13 +195,11 @@ QString ParameterModel::valueText(const ParameterRow &row, qint32 raw) const
 
 QString ParameterModel::accessText(const ParameterRow &row) const
 {
-    const Language language = Language(m_drive.language);
     const ParameterProperties &properties = row.properties();
-    const QString read = passwordLevelName(properties.readLevel(), language);
+    const QString read = passwordLevelName(properties.readLevel());
     if (properties.isReadOnly())
         return tr("read-only (read: %1)").arg(read);
-    return tr("read: %1, write: %2")
-        .arg(read, passwordLevelName(properties.writeLevel(), language));
+    return tr("read: %1, write: %2").arg(read, passwordLevelName(properties.writeLevel()));
 }
 
 bool ParameterModel::setData(const QModelIndex &index, const QVariant &value, int role)
