@@ -237,6 +237,25 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::AccessFeature</name>
+    <message>
+        <source>&amp;Password...</source>
+        <translation>&amp;Passwort …</translation>
+    </message>
+    <message>
+        <source>Enter a password to open a higher password level</source>
+        <translation>Ein Passwort eingeben, um eine höhere Passwortebene freizugeben</translation>
+    </message>
+    <message>
+        <source>The password level in force on the drive (ud.01)</source>
+        <translation>Die am Umrichter gültige Passwortebene (ud.01)</translation>
+    </message>
+    <message>
+        <source>Password level: %1</source>
+        <translation>Passwortebene: %1</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::BitFieldEditor</name>
     <message>
         <source>Definition %1</source>
@@ -947,6 +966,104 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::EditingFeature</name>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Rückgängig</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Wiederherstellen</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Rückgängig: %1</translation>
+    </message>
+    <message>
+        <source>Undo %1</source>
+        <translation>Rückgängig: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Wiederherstellen: %1</translation>
+    </message>
+    <message>
+        <source>Redo %1</source>
+        <translation>Wiederherstellen: %1</translation>
+    </message>
+    <message>
+        <source>Reset to &amp;Default</source>
+        <translation>Auf &amp;Vorgabewert zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Set the selected values to the drive&apos;s default</source>
+        <translation>Die gewählten Werte auf den Vorgabewert des Umrichters setzen</translation>
+    </message>
+    <message>
+        <source>&amp;Write to Sets...</source>
+        <translation>&amp;In Sätze schreiben …</translation>
+    </message>
+    <message>
+        <source>Write a value to several parameter sets at once</source>
+        <translation>Einen Wert in mehrere Parametersätze zugleich schreiben</translation>
+    </message>
+    <message>
+        <source>&amp;Copy Set...</source>
+        <translation>Satz &amp;kopieren …</translation>
+    </message>
+    <message>
+        <source>Copy every set-programmable value from one set to another</source>
+        <translation>Alle satzprogrammierbaren Werte von einem Satz in einen anderen kopieren</translation>
+    </message>
+    <message numerus="yes">
+        <source>Not reset, read-only or above the password level in force: %1 and %n more</source>
+        <translation>
+            <numerusform>Nicht zurückgesetzt, schreibgeschützt oder über der gültigen Passwortebene: %1 und %n weiterer</numerusform>
+            <numerusform>Nicht zurückgesetzt, schreibgeschützt oder über der gültigen Passwortebene: %1 und %n weitere</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Not reset, read-only or above the password level in force: %1</source>
+        <translation>Nicht zurückgesetzt, schreibgeschützt oder über der gültigen Passwortebene: %1</translation>
+    </message>
+    <message>
+        <source>%1 is not set-programmable: it holds one value for every set.</source>
+        <translation>%1 ist nicht satzprogrammierbar: er hat einen Wert für alle Sätze.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be changed: it is read-only or above the password level in force.</source>
+        <translation>%1 kann nicht geändert werden: er ist schreibgeschützt oder liegt über der gültigen Passwortebene.</translation>
+    </message>
+    <message>
+        <source>%1 has no value read in set %2 to write.</source>
+        <translation>Für %1 ist in Satz %2 kein gelesener Wert zum Schreiben vorhanden.</translation>
+    </message>
+    <message>
+        <source>Write to Sets</source>
+        <translation>In Sätze schreiben</translation>
+    </message>
+    <message>
+        <source>Write %1 to %2 in:</source>
+        <translation>%1 in %2 schreiben, in:</translation>
+    </message>
+    <message>
+        <source>Copy Set</source>
+        <translation>Satz kopieren</translation>
+    </message>
+    <message>
+        <source>Copy every set-programmable value you may change from one set to another:</source>
+        <translation>Alle satzprogrammierbaren Werte, die Sie ändern dürfen, von einem Satz in einen anderen kopieren:</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::FilterBar</name>
     <message>
         <source>Search every group by id, name or value</source>
@@ -1200,10 +1317,6 @@
         <translation>Verbindung nicht möglich (%1): %2</translation>
     </message>
     <message>
-        <source>Password level: %1</source>
-        <translation>Passwortebene: %1</translation>
-    </message>
-    <message>
         <source>?</source>
         <translation>?</translation>
     </message>
@@ -1218,14 +1331,6 @@
     <message>
         <source>Disconnected from %1. What was read stays shown.</source>
         <translation>Getrennt (%1). Das Gelesene bleibt sichtbar.</translation>
-    </message>
-    <message>
-        <source>%1 ms</source>
-        <translation>%1 ms</translation>
-    </message>
-    <message>
-        <source>%1 s</source>
-        <translation>%1 s</translation>
     </message>
     <message>
         <source>&amp;Connect...</source>
@@ -1256,88 +1361,8 @@
         <translation>Alle Werte erneut vom Umrichter lesen</translation>
     </message>
     <message>
-        <source>&amp;Poll Live Values</source>
-        <translation>&amp;Istwerte zyklisch lesen</translation>
-    </message>
-    <message>
-        <source>Read the run display (ru) again and again</source>
-        <translation>Die Betriebsanzeige (ru) fortlaufend lesen</translation>
-    </message>
-    <message>
-        <source>Every %1</source>
-        <translation>Alle %1</translation>
-    </message>
-    <message>
-        <source>&amp;Undo</source>
-        <translation>&amp;Rückgängig</translation>
-    </message>
-    <message>
-        <source>&amp;Redo</source>
-        <translation>&amp;Wiederherstellen</translation>
-    </message>
-    <message>
-        <source>Undo</source>
-        <translation>Rückgängig</translation>
-    </message>
-    <message>
-        <source>Redo</source>
-        <translation>Wiederherstellen</translation>
-    </message>
-    <message>
-        <source>&amp;Undo %1</source>
-        <translation>&amp;Rückgängig: %1</translation>
-    </message>
-    <message>
-        <source>Undo %1</source>
-        <translation>Rückgängig: %1</translation>
-    </message>
-    <message>
-        <source>&amp;Redo %1</source>
-        <translation>&amp;Wiederherstellen: %1</translation>
-    </message>
-    <message>
-        <source>Redo %1</source>
-        <translation>Wiederherstellen: %1</translation>
-    </message>
-    <message>
-        <source>Reset to &amp;Default</source>
-        <translation>Auf &amp;Vorgabewert zurücksetzen</translation>
-    </message>
-    <message>
-        <source>Set the selected values to the drive&apos;s default</source>
-        <translation>Die gewählten Werte auf den Vorgabewert des Umrichters setzen</translation>
-    </message>
-    <message>
-        <source>&amp;Write to Sets...</source>
-        <translation>&amp;In Sätze schreiben …</translation>
-    </message>
-    <message>
-        <source>Write a value to several parameter sets at once</source>
-        <translation>Einen Wert in mehrere Parametersätze zugleich schreiben</translation>
-    </message>
-    <message>
-        <source>&amp;Copy Set...</source>
-        <translation>Satz &amp;kopieren …</translation>
-    </message>
-    <message>
-        <source>Copy every set-programmable value from one set to another</source>
-        <translation>Alle satzprogrammierbaren Werte von einem Satz in einen anderen kopieren</translation>
-    </message>
-    <message>
-        <source>&amp;Password...</source>
-        <translation>&amp;Passwort …</translation>
-    </message>
-    <message>
-        <source>Enter a password to open a higher password level</source>
-        <translation>Ein Passwort eingeben, um eine höhere Passwortebene freizugeben</translation>
-    </message>
-    <message>
         <source>Drive &amp;Information...</source>
         <translation>&amp;Umrichterinformationen …</translation>
-    </message>
-    <message>
-        <source>&amp;Telegram Monitor</source>
-        <translation>&amp;Telegramm-Monitor</translation>
     </message>
     <message>
         <source>&amp;Quit</source>
@@ -1350,10 +1375,6 @@
     <message>
         <source>&amp;Drive</source>
         <translation>&amp;Umrichter</translation>
-    </message>
-    <message>
-        <source>Polling &amp;Interval</source>
-        <translation>&amp;Leseintervall</translation>
     </message>
     <message>
         <source>&amp;Edit</source>
@@ -1380,55 +1401,8 @@
         <translation>Hauptwerkzeugleiste</translation>
     </message>
     <message>
-        <source>How often the live values are read</source>
-        <translation>Wie oft die Istwerte gelesen werden</translation>
-    </message>
-    <message>
-        <source>The password level in force on the drive (ud.01)</source>
-        <translation>Die am Umrichter gültige Passwortebene (ud.01)</translation>
-    </message>
-    <message>
         <source>Fr.02: the set the drive works with. Fr.09: the set that indirect addressing reaches.</source>
         <translation>Fr.02: der Satz, mit dem der Umrichter arbeitet. Fr.09: der Satz, den die indirekte Adressierung erreicht.</translation>
-    </message>
-    <message numerus="yes">
-        <source> and %n more</source>
-        <translation>
-            <numerusform> und %n weiterer</numerusform>
-            <numerusform> und %n weitere</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Not reset, read-only or above the password level in force: %1</source>
-        <translation>Nicht zurückgesetzt, schreibgeschützt oder über der gültigen Passwortebene: %1</translation>
-    </message>
-    <message>
-        <source>%1 is not set-programmable: it holds one value for every set.</source>
-        <translation>%1 ist nicht satzprogrammierbar: er hat einen Wert für alle Sätze.</translation>
-    </message>
-    <message>
-        <source>%1 cannot be changed: it is read-only or above the password level in force.</source>
-        <translation>%1 kann nicht geändert werden: er ist schreibgeschützt oder liegt über der gültigen Passwortebene.</translation>
-    </message>
-    <message>
-        <source>%1 has no value read in set %2 to write.</source>
-        <translation>Für %1 ist in Satz %2 kein gelesener Wert zum Schreiben vorhanden.</translation>
-    </message>
-    <message>
-        <source>Write to Sets</source>
-        <translation>In Sätze schreiben</translation>
-    </message>
-    <message>
-        <source>Write %1 to %2 in:</source>
-        <translation>%1 in %2 schreiben, in:</translation>
-    </message>
-    <message>
-        <source>Copy Set</source>
-        <translation>Satz kopieren</translation>
-    </message>
-    <message>
-        <source>Copy every set-programmable value you may change from one set to another:</source>
-        <translation>Alle satzprogrammierbaren Werte, die Sie ändern dürfen, von einem Satz in einen anderen kopieren:</translation>
     </message>
     <message>
         <source>Language</source>
@@ -1475,6 +1449,13 @@
             <numerusform>Der Umrichter hat %n Gruppe.</numerusform>
             <numerusform>Der Umrichter hat %n Gruppen.</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::MonitorFeature</name>
+    <message>
+        <source>&amp;Telegram Monitor</source>
+        <translation>&amp;Telegramm-Monitor</translation>
     </message>
 </context>
 <context>
@@ -1712,6 +1693,37 @@
             <numerusform>Zyklisches Lesen: %n Wert konnte nicht gelesen werden (erster: %1: %2)</numerusform>
             <numerusform>Zyklisches Lesen: %n Werte konnten nicht gelesen werden (erster: %1: %2)</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::PollingFeature</name>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>&amp;Poll Live Values</source>
+        <translation>&amp;Istwerte zyklisch lesen</translation>
+    </message>
+    <message>
+        <source>Read the run display (ru) again and again</source>
+        <translation>Die Betriebsanzeige (ru) fortlaufend lesen</translation>
+    </message>
+    <message>
+        <source>Every %1</source>
+        <translation>Alle %1</translation>
+    </message>
+    <message>
+        <source>How often the live values are read</source>
+        <translation>Wie oft die Istwerte gelesen werden</translation>
+    </message>
+    <message>
+        <source>Polling &amp;Interval</source>
+        <translation>&amp;Leseintervall</translation>
     </message>
 </context>
 <context>

@@ -237,6 +237,25 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::AccessFeature</name>
+    <message>
+        <source>&amp;Password...</source>
+        <translation>&amp;Password...</translation>
+    </message>
+    <message>
+        <source>Enter a password to open a higher password level</source>
+        <translation>Enter a password to open a higher password level</translation>
+    </message>
+    <message>
+        <source>The password level in force on the drive (ud.01)</source>
+        <translation>The password level in force on the drive (ud.01)</translation>
+    </message>
+    <message>
+        <source>Password level: %1</source>
+        <translation>Password level: %1</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::BitFieldEditor</name>
     <message>
         <source>Definition %1</source>
@@ -947,6 +966,104 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::EditingFeature</name>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Undo</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Redo</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Undo</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Redo</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Undo %1</translation>
+    </message>
+    <message>
+        <source>Undo %1</source>
+        <translation>Undo %1</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Redo %1</translation>
+    </message>
+    <message>
+        <source>Redo %1</source>
+        <translation>Redo %1</translation>
+    </message>
+    <message>
+        <source>Reset to &amp;Default</source>
+        <translation>Reset to &amp;Default</translation>
+    </message>
+    <message>
+        <source>Set the selected values to the drive&apos;s default</source>
+        <translation>Set the selected values to the drive&apos;s default</translation>
+    </message>
+    <message>
+        <source>&amp;Write to Sets...</source>
+        <translation>&amp;Write to Sets...</translation>
+    </message>
+    <message>
+        <source>Write a value to several parameter sets at once</source>
+        <translation>Write a value to several parameter sets at once</translation>
+    </message>
+    <message>
+        <source>&amp;Copy Set...</source>
+        <translation>&amp;Copy Set...</translation>
+    </message>
+    <message>
+        <source>Copy every set-programmable value from one set to another</source>
+        <translation>Copy every set-programmable value from one set to another</translation>
+    </message>
+    <message numerus="yes">
+        <source>Not reset, read-only or above the password level in force: %1 and %n more</source>
+        <translation>
+            <numerusform>Not reset, read-only or above the password level in force: %1 and %n more</numerusform>
+            <numerusform>Not reset, read-only or above the password level in force: %1 and %n more</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Not reset, read-only or above the password level in force: %1</source>
+        <translation>Not reset, read-only or above the password level in force: %1</translation>
+    </message>
+    <message>
+        <source>%1 is not set-programmable: it holds one value for every set.</source>
+        <translation>%1 is not set-programmable: it holds one value for every set.</translation>
+    </message>
+    <message>
+        <source>%1 cannot be changed: it is read-only or above the password level in force.</source>
+        <translation>%1 cannot be changed: it is read-only or above the password level in force.</translation>
+    </message>
+    <message>
+        <source>%1 has no value read in set %2 to write.</source>
+        <translation>%1 has no value read in set %2 to write.</translation>
+    </message>
+    <message>
+        <source>Write to Sets</source>
+        <translation>Write to Sets</translation>
+    </message>
+    <message>
+        <source>Write %1 to %2 in:</source>
+        <translation>Write %1 to %2 in:</translation>
+    </message>
+    <message>
+        <source>Copy Set</source>
+        <translation>Copy Set</translation>
+    </message>
+    <message>
+        <source>Copy every set-programmable value you may change from one set to another:</source>
+        <translation>Copy every set-programmable value you may change from one set to another:</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::FilterBar</name>
     <message>
         <source>Search every group by id, name or value</source>
@@ -1200,10 +1317,6 @@
         <translation>Could not connect to %1: %2</translation>
     </message>
     <message>
-        <source>Password level: %1</source>
-        <translation>Password level: %1</translation>
-    </message>
-    <message>
         <source>?</source>
         <translation>?</translation>
     </message>
@@ -1218,14 +1331,6 @@
     <message>
         <source>Disconnected from %1. What was read stays shown.</source>
         <translation>Disconnected from %1. What was read stays shown.</translation>
-    </message>
-    <message>
-        <source>%1 ms</source>
-        <translation>%1 ms</translation>
-    </message>
-    <message>
-        <source>%1 s</source>
-        <translation>%1 s</translation>
     </message>
     <message>
         <source>&amp;Connect...</source>
@@ -1256,88 +1361,8 @@
         <translation>Read every value from the drive again</translation>
     </message>
     <message>
-        <source>&amp;Poll Live Values</source>
-        <translation>&amp;Poll Live Values</translation>
-    </message>
-    <message>
-        <source>Read the run display (ru) again and again</source>
-        <translation>Read the run display (ru) again and again</translation>
-    </message>
-    <message>
-        <source>Every %1</source>
-        <translation>Every %1</translation>
-    </message>
-    <message>
-        <source>&amp;Undo</source>
-        <translation>&amp;Undo</translation>
-    </message>
-    <message>
-        <source>&amp;Redo</source>
-        <translation>&amp;Redo</translation>
-    </message>
-    <message>
-        <source>Undo</source>
-        <translation>Undo</translation>
-    </message>
-    <message>
-        <source>Redo</source>
-        <translation>Redo</translation>
-    </message>
-    <message>
-        <source>&amp;Undo %1</source>
-        <translation>&amp;Undo %1</translation>
-    </message>
-    <message>
-        <source>Undo %1</source>
-        <translation>Undo %1</translation>
-    </message>
-    <message>
-        <source>&amp;Redo %1</source>
-        <translation>&amp;Redo %1</translation>
-    </message>
-    <message>
-        <source>Redo %1</source>
-        <translation>Redo %1</translation>
-    </message>
-    <message>
-        <source>Reset to &amp;Default</source>
-        <translation>Reset to &amp;Default</translation>
-    </message>
-    <message>
-        <source>Set the selected values to the drive&apos;s default</source>
-        <translation>Set the selected values to the drive&apos;s default</translation>
-    </message>
-    <message>
-        <source>&amp;Write to Sets...</source>
-        <translation>&amp;Write to Sets...</translation>
-    </message>
-    <message>
-        <source>Write a value to several parameter sets at once</source>
-        <translation>Write a value to several parameter sets at once</translation>
-    </message>
-    <message>
-        <source>&amp;Copy Set...</source>
-        <translation>&amp;Copy Set...</translation>
-    </message>
-    <message>
-        <source>Copy every set-programmable value from one set to another</source>
-        <translation>Copy every set-programmable value from one set to another</translation>
-    </message>
-    <message>
-        <source>&amp;Password...</source>
-        <translation>&amp;Password...</translation>
-    </message>
-    <message>
-        <source>Enter a password to open a higher password level</source>
-        <translation>Enter a password to open a higher password level</translation>
-    </message>
-    <message>
         <source>Drive &amp;Information...</source>
         <translation>Drive &amp;Information...</translation>
-    </message>
-    <message>
-        <source>&amp;Telegram Monitor</source>
-        <translation>&amp;Telegram Monitor</translation>
     </message>
     <message>
         <source>&amp;Quit</source>
@@ -1350,10 +1375,6 @@
     <message>
         <source>&amp;Drive</source>
         <translation>&amp;Drive</translation>
-    </message>
-    <message>
-        <source>Polling &amp;Interval</source>
-        <translation>Polling &amp;Interval</translation>
     </message>
     <message>
         <source>&amp;Edit</source>
@@ -1380,55 +1401,8 @@
         <translation>Main Toolbar</translation>
     </message>
     <message>
-        <source>How often the live values are read</source>
-        <translation>How often the live values are read</translation>
-    </message>
-    <message>
-        <source>The password level in force on the drive (ud.01)</source>
-        <translation>The password level in force on the drive (ud.01)</translation>
-    </message>
-    <message>
         <source>Fr.02: the set the drive works with. Fr.09: the set that indirect addressing reaches.</source>
         <translation>Fr.02: the set the drive works with. Fr.09: the set that indirect addressing reaches.</translation>
-    </message>
-    <message numerus="yes">
-        <source> and %n more</source>
-        <translation>
-            <numerusform> and %n more</numerusform>
-            <numerusform> and %n more</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Not reset, read-only or above the password level in force: %1</source>
-        <translation>Not reset, read-only or above the password level in force: %1</translation>
-    </message>
-    <message>
-        <source>%1 is not set-programmable: it holds one value for every set.</source>
-        <translation>%1 is not set-programmable: it holds one value for every set.</translation>
-    </message>
-    <message>
-        <source>%1 cannot be changed: it is read-only or above the password level in force.</source>
-        <translation>%1 cannot be changed: it is read-only or above the password level in force.</translation>
-    </message>
-    <message>
-        <source>%1 has no value read in set %2 to write.</source>
-        <translation>%1 has no value read in set %2 to write.</translation>
-    </message>
-    <message>
-        <source>Write to Sets</source>
-        <translation>Write to Sets</translation>
-    </message>
-    <message>
-        <source>Write %1 to %2 in:</source>
-        <translation>Write %1 to %2 in:</translation>
-    </message>
-    <message>
-        <source>Copy Set</source>
-        <translation>Copy Set</translation>
-    </message>
-    <message>
-        <source>Copy every set-programmable value you may change from one set to another:</source>
-        <translation>Copy every set-programmable value you may change from one set to another:</translation>
     </message>
     <message>
         <source>Language</source>
@@ -1475,6 +1449,13 @@
             <numerusform>The drive has %n group.</numerusform>
             <numerusform>The drive has %n groups.</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::MonitorFeature</name>
+    <message>
+        <source>&amp;Telegram Monitor</source>
+        <translation>&amp;Telegram Monitor</translation>
     </message>
 </context>
 <context>
@@ -1712,6 +1693,37 @@
             <numerusform>Polling: %n value could not be read (%1: %2)</numerusform>
             <numerusform>Polling: %n values could not be read (first: %1: %2)</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::PollingFeature</name>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>&amp;Poll Live Values</source>
+        <translation>&amp;Poll Live Values</translation>
+    </message>
+    <message>
+        <source>Read the run display (ru) again and again</source>
+        <translation>Read the run display (ru) again and again</translation>
+    </message>
+    <message>
+        <source>Every %1</source>
+        <translation>Every %1</translation>
+    </message>
+    <message>
+        <source>How often the live values are read</source>
+        <translation>How often the live values are read</translation>
+    </message>
+    <message>
+        <source>Polling &amp;Interval</source>
+        <translation>Polling &amp;Interval</translation>
     </message>
 </context>
 <context>
