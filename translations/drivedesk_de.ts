@@ -355,6 +355,14 @@
         <source>%1: written %2, but %3</source>
         <translation>%1: %2 geschrieben, aber %3</translation>
     </message>
+    <message>
+        <source>password not accepted: %1</source>
+        <translation>Passwort nicht angenommen: %1</translation>
+    </message>
+    <message>
+        <source>password level in force: %1</source>
+        <translation>gültige Passwortebene: %1</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ClientWorker</name>

@@ -8,6 +8,7 @@
 #include "parameters/ParameterFormat.h"
 #include "parameters/ParameterId.h"
 #include "parameters/ParameterProperties.h"
+#include "session/PasswordLevelJob.h"
 #include "session/ValueChange.h"
 
 #include <QFutureWatcher>
@@ -44,12 +45,31 @@ void CliRunner::start()
     ClientOptions options;
     options.timeoutMs = m_request.timeoutMs;
     m_client = std::make_unique<DriveClient>(m_request.connection, everyLink(), options);
-    connect(m_client.get(), &DriveClient::connected, this, &CliRunner::runCommand);
+    connect(m_client.get(), &DriveClient::connected, this, &CliRunner::enterPassword);
     connect(m_client.get(), &DriveClient::connectionFailed, this, [this](const QString &reason) {
         fail(3, tr("cannot connect to %1: %2")
                     .arg(m_request.connection.displayName(), reason));
     });
     m_client->connectToDrive();
+}
+
+// The window's password dialog does the same: core's PasswordLevelJob writes ud.01 and reads
+// the level the drive then has in force.
+void CliRunner::enterPassword()
+{
+    if (!m_request.password)
+        return runCommand();
+    const auto job = std::make_shared<PasswordLevelJob>(m_request.connection.protocol,
+                                                        m_request.password);
+    m_client->run(job).then(this, [this](const PasswordLevelOutcome &outcome) {
+        if (!outcome.passwordAccepted)
+            return fail(1, tr("password not accepted: %1").arg(outcome.error));
+        if (!m_request.quiet && outcome.level) {
+            m_err << tr("password level in force: %1").arg(passwordLevelName(*outcome.level))
+                  << '\n';
+        }
+        runCommand();
+    });
 }
 
 void CliRunner::runCommand()

@@ -29,6 +29,7 @@ signals:
     void finished(int exitCode);
 
 private:
+    void enterPassword();
     void runCommand();
     void runInfo();
     void runScan();

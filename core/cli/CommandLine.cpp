@@ -26,6 +26,8 @@ QString usage()
         "                       51-53 (off: only the services of the HSP5 specification)\n"
         "  --timeout MS         answer timeout per request (default: from the baud rate)\n"
         "  --no-cache           read the drive's metadata, not the cached metadata of its kind\n"
+        "  --password N         enter a password (ud.01) before the command: opens the\n"
+        "                       password level it belongs to\n"
         "  --quiet              no progress on standard error\n"
         "\n"
         "Commands:\n"
@@ -81,7 +83,8 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     const QCommandLineOption raw(QStringLiteral("raw"), QStringLiteral("raw"));
     connection.addTo(parser);
     const QCommandLineOption noCache(QStringLiteral("no-cache"));
-    parser.addOptions({help, timeout, quiet, format, values, set, sets, raw, noCache});
+    const QCommandLineOption password(QStringLiteral("password"), {}, QStringLiteral("n"));
+    parser.addOptions({help, timeout, quiet, format, values, set, sets, raw, noCache, password});
     *helpText = usage();
 
     // A negative value ("write uF.07 -5") is not an option: shield such words from the parser.
@@ -113,6 +116,13 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
         return std::nullopt;
     if (setNumber >= 0)
         request.set = setNumber;
+    if (parser.isSet(password)) {
+        // ud.01's range: the drive refuses anything else before it looks at the password.
+        int number = 0;
+        if (!ConnectionOptions::integer(parser, password, -8, 9999, &number, error))
+            return std::nullopt;
+        request.password = number;
+    }
     if (parser.isSet(format)) {
         const QString f = parser.value(format).toLower();
         if (f != QLatin1String("json") && f != QLatin1String("table")) {

@@ -27,6 +27,7 @@ struct CliRequest {
     int timeoutMs = 0;
     bool quiet = false;       // no progress on stderr
     bool useCache = true;     // metadata of a known kind of drive from the metadata cache
+    std::optional<qint32> password; // entered (ud.01) before the command
 };
 
 // The usage text and the parse. Returns nothing and sets *error (naming the bad argument)

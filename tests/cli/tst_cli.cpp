@@ -252,6 +252,26 @@ private slots:
         QVERIFY2(write.out.contains(QStringLiteral("(Satz 2)")), qPrintable(write.out));
     }
 
+    void aPasswordOpensItsLevelBeforeTheCommand()
+    {
+        // 500 opens Drive mode, where cn.00 may be written (docs/simulated-drive.md).
+        Run run = sim({QStringLiteral("--password"), QStringLiteral("500"), QStringLiteral("write"),
+                       QStringLiteral("cn.00"), QStringLiteral("--raw"), QStringLiteral("1")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        QVERIFY2(run.out.contains(QStringLiteral("cn.00")), qPrintable(run.out));
+
+        run = sim({QStringLiteral("--password"), QStringLiteral("123"), QStringLiteral("write"),
+                   QStringLiteral("cn.00"), QStringLiteral("--raw"), QStringLiteral("1")});
+        QCOMPARE(run.exitCode, 1);
+        QVERIFY2(run.err.contains(QStringLiteral("password not accepted: drive refused: password invalid")),
+                 qPrintable(run.err));
+        QVERIFY2(run.out.isEmpty(), qPrintable(run.out));
+
+        run = sim({QStringLiteral("--password"), QStringLiteral("12345"), QStringLiteral("info")});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(QStringLiteral("--password 12345")), qPrintable(run.err));
+    }
+
     void readOnlyIsRefusedBeforeAnythingIsSent()
     {
         const Run run = sim({QStringLiteral("write"), QStringLiteral("ru.03"), QStringLiteral("--raw"),
