@@ -869,16 +869,16 @@
         <translation>Wiederherstellen fehlgeschlagen: %1: %2</translation>
     </message>
     <message>
-        <source> in all sets</source>
-        <translation> in allen Sätzen</translation>
+        <source> (all sets)</source>
+        <translation> (alle Sätze)</translation>
     </message>
     <message>
-        <source> in set %1</source>
-        <translation> in Satz %1</translation>
+        <source> (set %1)</source>
+        <translation> (Satz %1)</translation>
     </message>
     <message>
-        <source> in sets %1</source>
-        <translation> in den Sätzen %1</translation>
+        <source> (sets %1)</source>
+        <translation> (Sätze %1)</translation>
     </message>
     <message>
         <source>the drive holds %1%2</source>

@@ -869,16 +869,16 @@
         <translation>Redo failed: %1: %2</translation>
     </message>
     <message>
-        <source> in all sets</source>
-        <translation> in all sets</translation>
+        <source> (all sets)</source>
+        <translation> (all sets)</translation>
     </message>
     <message>
-        <source> in set %1</source>
-        <translation> in set %1</translation>
+        <source> (set %1)</source>
+        <translation> (set %1)</translation>
     </message>
     <message>
-        <source> in sets %1</source>
-        <translation> in sets %1</translation>
+        <source> (sets %1)</source>
+        <translation> (sets %1)</translation>
     </message>
     <message>
         <source>the drive holds %1%2</source>

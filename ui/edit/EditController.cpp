@@ -180,11 +180,13 @@ QString EditController::inSets(quint16 address, quint8 setMask) const
         if (setMask & (1u << set))
             sets << QString::number(set);
     }
+    // A note in parentheses after the parameter or the value: it takes no part in the
+    // sentence's grammar, so every language can append it where the sentence names them.
     if (sets.size() == kParameterSets)
-        return tr(" in all sets");
+        return tr(" (all sets)");
     if (sets.size() == 1)
-        return tr(" in set %1").arg(sets.constFirst());
-    return tr(" in sets %1").arg(sets.join(QStringLiteral(", ")));
+        return tr(" (set %1)").arg(sets.constFirst());
+    return tr(" (sets %1)").arg(sets.join(QStringLiteral(", ")));
 }
 
 QString EditController::readBackDifferences(quint16 address, quint8 setMask) const

@@ -92,7 +92,7 @@ private:
     // "op.11", the way the table names it.
     QString idOf(quint16 address) const;
     QString valueText(quint16 address, qint32 raw) const;
-    // " in set 2", " in sets 0, 3" or nothing for a parameter without sets.
+    // " (set 2)", " (sets 0, 3)", " (all sets)", or nothing for a parameter without sets.
     QString inSets(quint16 address, quint8 setMask) const;
     // The cells that read back something other than what was written, said in words.
     QString readBackDifferences(quint16 address, quint8 setMask) const;
