@@ -2323,10 +2323,6 @@ Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
         <translation>„%1“: Adresse über FFFFh</translation>
     </message>
     <message>
-        <source>&apos;%1&apos; is not a parameter id: write it as group.number (ru.03) or as a hexadecimal address (0203h, 0x0203)</source>
-        <translation>„%1“ ist keine Parameterkennung: als Gruppe.Nummer (ru.03) oder als hexadezimale Adresse (0203h, 0x0203) angeben</translation>
-    </message>
-    <message>
         <source>&apos;%1&apos;: the group id is ambiguous (&apos;%2&apos; or &apos;%3&apos;); write it with its case</source>
         <translation>„%1“: die Gruppenkennung ist mehrdeutig („%2“ oder „%3“); mit Groß-/Kleinschreibung angeben</translation>
     </message>
@@ -2341,6 +2337,10 @@ Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
     <message>
         <source>&apos;%1&apos;: parameter number above %2 in group %3</source>
         <translation>„%1“: Parameternummer über %2 in Gruppe %3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a parameter id: write it as group.number (ru.03, ru03) or as a hexadecimal address (0203h, 0x0203)</source>
+        <translation>„%1“ ist keine Parameterkennung: als Gruppe.Nummer (ru.03, ru03) oder als hexadezimale Adresse (0203h, 0x0203) angeben</translation>
     </message>
 </context>
 <context>

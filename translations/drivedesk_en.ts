@@ -2323,10 +2323,6 @@ The DriveDesk parameter editor. Without --connect it opens the connection dialog
         <translation>&apos;%1&apos;: address above FFFFh</translation>
     </message>
     <message>
-        <source>&apos;%1&apos; is not a parameter id: write it as group.number (ru.03) or as a hexadecimal address (0203h, 0x0203)</source>
-        <translation>&apos;%1&apos; is not a parameter id: write it as group.number (ru.03) or as a hexadecimal address (0203h, 0x0203)</translation>
-    </message>
-    <message>
         <source>&apos;%1&apos;: the group id is ambiguous (&apos;%2&apos; or &apos;%3&apos;); write it with its case</source>
         <translation>&apos;%1&apos;: the group id is ambiguous (&apos;%2&apos; or &apos;%3&apos;); write it with its case</translation>
     </message>
@@ -2341,6 +2337,10 @@ The DriveDesk parameter editor. Without --connect it opens the connection dialog
     <message>
         <source>&apos;%1&apos;: parameter number above %2 in group %3</source>
         <translation>&apos;%1&apos;: parameter number above %2 in group %3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a parameter id: write it as group.number (ru.03, ru03) or as a hexadecimal address (0203h, 0x0203)</source>
+        <translation>&apos;%1&apos; is not a parameter id: write it as group.number (ru.03, ru03) or as a hexadecimal address (0203h, 0x0203)</translation>
     </message>
 </context>
 <context>

@@ -79,14 +79,16 @@ std::optional<quint16> ParameterId::parse(const QString &input, const QList<Grou
         return quint16(address);
     }
 
-    static const QRegularExpression idPattern(QStringLiteral("^([^.\\s]+)\\.([0-9]+)$"));
+    // "ru.03", or without the dot ("ru03") where the group id is letters only.
+    static const QRegularExpression idPattern(
+        QStringLiteral("^(?:([^.\\s]+)\\.|([A-Za-z]+))([0-9]+)$"));
     const QRegularExpressionMatch id = idPattern.match(text);
     if (!id.hasMatch()) {
-        return fail(tr("'%1' is not a parameter id: write it as group.number (ru.03) or as a "
-                       "hexadecimal address (0203h, 0x0203)")
+        return fail(tr("'%1' is not a parameter id: write it as group.number (ru.03, ru03) or "
+                       "as a hexadecimal address (0203h, 0x0203)")
                         .arg(text));
     }
-    const QString groupId = id.captured(1);
+    const QString groupId = id.captured(1).isEmpty() ? id.captured(2) : id.captured(1);
     std::optional<GroupAddress> group;
     QList<GroupAddress> caseInsensitive;
     for (const GroupAddress &candidate : groups) {
@@ -106,7 +108,7 @@ std::optional<quint16> ParameterId::parse(const QString &input, const QList<Grou
     if (!group)
         return fail(tr("no group '%1' on this drive").arg(groupId));
 
-    QString numberText = id.captured(2);
+    QString numberText = id.captured(3);
     while (numberText.size() > 1 && numberText.startsWith(QLatin1Char('0')))
         numberText.remove(0, 1);
     bool ok = false;

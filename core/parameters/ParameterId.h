@@ -27,8 +27,8 @@ class ParameterId
 public:
     static QList<GroupAddress> groupsOf(const DriveDescription &drive);
 
-    // "ru.3", "ru.03", "RU.3" (the group id matched case-insensitively where that is unique),
-    // "0x0203", "0203h". Hexadecimal addresses need no known group.
+    // "ru.3", "ru.03", "ru03", "RU.3" (the group id matched case-insensitively where that is
+    // unique), "0x0203", "0203h". Hexadecimal addresses need no known group.
     static std::optional<quint16> parse(const QString &text, const QList<GroupAddress> &groups,
                                         QString *error = nullptr);
     static std::optional<quint16> parse(const QString &text, const DriveDescription &drive,

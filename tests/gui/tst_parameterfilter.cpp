@@ -111,6 +111,20 @@ private slots:
         QCOMPARE(visibleIds(m_filter), ids({ "Pn.05" }));
     }
 
+    // Every form the command line takes finds the parameter it names.
+    void searchesByIdInEveryForm()
+    {
+        for (const char *form : { "pn5", "PN05", "0x0405", "0x405", "405h" }) {
+            m_filter.setFilterText(QString::fromLatin1(form));
+            QVERIFY2(visibleIds(m_filter).contains(QStringLiteral("Pn.05")), form);
+        }
+        m_filter.setFilterText(QStringLiteral("pn5"));
+        QCOMPARE(visibleIds(m_filter), ids({ "Pn.05" }));
+        // A name is still a name: no group "xy", nothing named so.
+        m_filter.setFilterText(QStringLiteral("xy5"));
+        QVERIFY(visibleIds(m_filter).isEmpty());
+    }
+
     void searchesByName()
     {
         m_filter.setFilterText(QStringLiteral("FREQ"));

@@ -34,6 +34,9 @@ private slots:
         QTest::newRow("half page Fb.09") << QStringLiteral("Fb.09") << 0x0289;
         QTest::newRow("op.255") << QStringLiteral("op.255") << 0x03FF;
         QTest::newRow("exact case wins") << QStringLiteral("ds.1") << 0x1201;
+        QTest::newRow("without the dot") << QStringLiteral("op28") << 0x031C;
+        QTest::newRow("without the dot, upper case") << QStringLiteral("RU3") << 0x0203;
+        QTest::newRow("half page without the dot") << QStringLiteral("Fb09") << 0x0289;
         QTest::newRow("0x0203") << QStringLiteral("0x0203") << 0x0203;
         QTest::newRow("0203h") << QStringLiteral("0203h") << 0x0203;
         QTest::newRow("0203H") << QStringLiteral("0203H") << 0x0203;
@@ -72,14 +75,16 @@ private slots:
             << QStringLiteral(
                    "'DS.1': the group id is ambiguous ('dS' or 'ds'); write it with its case");
         QTest::newRow("empty") << QString() << QStringLiteral("no parameter given");
+        QTest::newRow("no group without the dot")
+            << QStringLiteral("xy3") << QStringLiteral("no group 'xy' on this drive");
         QTest::newRow("garbage") << QStringLiteral("ru-3")
                                  << QStringLiteral(
                                         "'ru-3' is not a parameter id: write it as group.number "
-                                        "(ru.03) or as a hexadecimal address (0203h, 0x0203)");
+                                        "(ru.03, ru03) or as a hexadecimal address (0203h, 0x0203)");
         QTest::newRow("negative") << QStringLiteral("ru.-3")
                                   << QStringLiteral(
                                          "'ru.-3' is not a parameter id: write it as group.number "
-                                         "(ru.03) or as a hexadecimal address (0203h, 0x0203)");
+                                         "(ru.03, ru03) or as a hexadecimal address (0203h, 0x0203)");
     }
 
     void errorsSayWhatIsWrong()

@@ -2,6 +2,8 @@
 
 #include "ParameterModel.h"
 
+#include "parameters/ParameterId.h"
+
 namespace DriveDesk {
 
 ParameterFilterModel::ParameterFilterModel(QObject *parent)
@@ -21,7 +23,36 @@ void ParameterFilterModel::setFilterText(const QString &text)
     if (needle == m_needle)
         return;
     m_needle = needle;
+    updateNamedAddress();
     invalidateRowsFilter();
+}
+
+void ParameterFilterModel::setSourceModel(QAbstractItemModel *model)
+{
+    disconnect(m_resetConnection);
+    QSortFilterProxyModel::setSourceModel(model);
+    if (model) {
+        // Another drive has other groups: "op28" may name another address, or none.
+        m_resetConnection = connect(model, &QAbstractItemModel::modelReset, this, [this] {
+            updateNamedAddress();
+            invalidateRowsFilter();
+        });
+    }
+    updateNamedAddress();
+}
+
+void ParameterFilterModel::updateNamedAddress()
+{
+    m_namedAddress.reset();
+    if (m_needle.isEmpty() || !sourceModel())
+        return;
+    QList<GroupAddress> groups;
+    for (int row = 0; row < sourceModel()->rowCount(); ++row) {
+        const QModelIndex group = sourceModel()->index(row, 0);
+        groups << GroupAddress{group.data(ParameterModel::GroupIdRole).toString(),
+                               group.data(ParameterModel::AddressRole).value<quint16>()};
+    }
+    m_namedAddress = ParameterId::parse(m_needle, groups);
 }
 
 void ParameterFilterModel::setFlag(bool &flag, bool on)
@@ -68,8 +99,10 @@ bool ParameterFilterModel::filterAcceptsRow(int sourceRow, const QModelIndex &so
         return false;
     if (!m_needle.isEmpty()) {
         const QString text = index.data(ParameterModel::SearchTextRole).toString();
-        if (!text.contains(m_needle))
+        if (!text.contains(m_needle)
+            && index.data(ParameterModel::AddressRole).value<quint16>() != m_namedAddress) {
             return false;
+        }
     }
     return true;
 }

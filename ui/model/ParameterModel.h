@@ -48,6 +48,7 @@ public:
         SearchTextRole, // QString, lower-case: what the search matches
         DescriptionRole, // ParameterDescription with the values held now
         RawModeRole, // bool: values are shown raw
+        GroupIdRole, // QString: a group row's id ("ru")
     };
 
     explicit ParameterModel(QObject *parent = nullptr);

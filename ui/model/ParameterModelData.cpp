@@ -37,6 +37,8 @@ QVariant ParameterModel::groupData(const Group &group, int column, int role) con
     }
     case AddressRole:
         return QVariant::fromValue(description.address);
+    case GroupIdRole:
+        return description.id;
     case IsGroupRole:
         return true;
     case SetRole:
