@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 packages=(
     cmake g++ make pkg-config
     qt6-base-dev qt6-serialport-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
-    qt6-qpa-plugins libqcustomplot-dev
+    qt6-qpa-plugins qt6-translations-l10n libqcustomplot-dev
     xvfb xauth socat
 )
 
