@@ -74,6 +74,8 @@ private slots:
 
     void connectingScansTheDriveIntoTheWindow()
     {
+        const auto *polling = m_window->findChild<QAction *>(QStringLiteral("pollingAction"));
+        QVERIFY(polling && !polling->isEnabled());
         m_window->connectTo(simulated());
         QVERIFY(m_window->noticeBar()->isVisible());
         QCOMPARE(m_window->noticeBar()->kind(), NoticeBar::Kind::Progress);
@@ -97,6 +99,7 @@ private slots:
         QCOMPARE(text(1, 1), QStringLiteral("18"));
         QCOMPARE(shownAddresses(*m_window).size(), kSimulatedParameters);
         QVERIFY(m_window->model()->value(kInverterState, 0).has_value());
+        QVERIFY(polling->isEnabled());
 
         QTRY_COMPARE(statusLabel("passwordLevel"), QStringLiteral("Password level: Application"));
         QTRY_VERIFY(statusLabel("parameterSets").contains(QStringLiteral("Active set: 0")));
@@ -359,6 +362,7 @@ private slots:
         QCOMPARE(m_window->model()->value(kDemoPeriod, 0), before);
         QCOMPARE(m_window->browser()->view()->editTriggers(), QAbstractItemView::NoEditTriggers);
         QVERIFY(!m_window->isReady());
+        QVERIFY(!m_window->findChild<QAction *>(QStringLiteral("pollingAction"))->isEnabled());
 
         QVERIFY2(server.listen(server.port(), &error), qPrintable(error));
         auto *reconnect

@@ -76,6 +76,14 @@ void PollingFeature::attach(DriveSession *session)
     session->setPollingWanted(m_pollingAction->isChecked());
 }
 
+// Switched on without a connection it would do nothing, and say nothing: off until there is one.
+// Whether it is wanted stays checked, and polling starts again with the next connection.
+void PollingFeature::updateActions()
+{
+    const DriveSession *session = frame().session();
+    m_pollingAction->setEnabled(session && session->state() == DriveClient::State::Connected);
+}
+
 void PollingFeature::saveSettings()
 {
     QSettings settings;

@@ -15,6 +15,7 @@ public:
     explicit PollingFeature(WindowFrame &frame, QObject *parent = nullptr);
 
     void attach(DriveSession *session) override;
+    void updateActions() override;
     void saveSettings() override;
 
 private:
