@@ -77,6 +77,22 @@ private slots:
 
     void cleanup() { m_window.reset(); }
 
+    void reconnectingToTheBuiltInDriveForgetsWhatItNoLongerHolds()
+    {
+        QVERIFY(m_window->model()->requestWrite(kFixedSpeed1, 0x04, 250));
+        QTRY_COMPARE_WITH_TIMEOUT(state(kFixedSpeed1, 2), EditState::Written, kWaitMs);
+        QCOMPARE(m_window->undoStack()->count(), 1);
+
+        action("disconnectAction")->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(!m_window->isReady(), kWaitMs);
+        m_window->session()->start();
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->isReady(), kWaitMs);
+        // The drive starts afresh: its value, no mark, nothing to undo.
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->model()->value(kFixedSpeed1, 2), 100, kWaitMs);
+        QCOMPARE(state(kFixedSpeed1, 2), EditState::None);
+        QCOMPARE(m_window->undoStack()->count(), 0);
+    }
+
     void valueTypedIntoOneSetIsWrittenAndReadBack()
     {
         m_window->browser()->showGroup(QStringLiteral("op"));

@@ -49,6 +49,9 @@ public:
     void refresh();
     // Stops a copy or refresh after the requests on their way; what was done stays done.
     void cancel();
+    // The drive holds none of what was written any more (the built-in simulated drive starts
+    // afresh on every connection): the written marks and the undo history go.
+    void forgetWrites();
 
     bool isBusy() const { return m_busy; }
     // Why the last refresh could not read this value, or empty.

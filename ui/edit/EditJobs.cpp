@@ -124,6 +124,12 @@ void EditController::copyFinished()
     updateBusy();
 }
 
+void EditController::forgetWrites()
+{
+    m_undoStack->clear();
+    m_model->clearEditStates();
+}
+
 void EditController::refresh()
 {
     if (refuseWhileJobRuns())

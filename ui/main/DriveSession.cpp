@@ -96,6 +96,10 @@ void DriveSession::onConnected()
         return;
     }
     // Back after a lost link: the model still holds what was read; bring the values up to date.
+    // The built-in simulated drive is made anew on every connection, with its values from
+    // scratch: what was written to the old one is not there to undo.
+    if (settings().kind == ConnectionSettings::Kind::Simulated)
+        m_edit->forgetWrites();
     afterRead();
     m_edit->refresh();
 }
