@@ -88,10 +88,7 @@ void Polling::take(int begin, int end)
         const ValueReading reading = future.resultAt(index);
         if (reading.value)
             emit this->reading(reading);
-        else if (reading.connectionFailed && m_current.stopReason.isEmpty())
-            m_current.stopReason = reading.reason;
-        else if (!reading.connectionFailed)
-            m_current.failures << reading;
+        m_current.add(reading);
     }
 }
 

@@ -24,11 +24,9 @@ public:
     static constexpr int kMaximumIntervalMs = 60000;
 
     // What one round read; the values themselves came through reading().
-    struct Round
+    struct Round : ReadingsSummary
     {
         int reads = 0;
-        QList<ValueReading> failures; // refused reads, in the order of the list
-        QString stopReason;           // the connection failed during the round
     };
 
     explicit Polling(DriveClient *client, QObject *parent = nullptr);

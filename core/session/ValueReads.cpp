@@ -5,6 +5,16 @@
 
 namespace DriveDesk {
 
+void ReadingsSummary::add(const ValueReading &reading)
+{
+    if (reading.value)
+        return;
+    if (!reading.connectionFailed)
+        failures << reading;
+    else if (stopReason.isEmpty())
+        stopReason = reading.reason;
+}
+
 QList<ValueRead> valueReadsOf(const ParameterDescription &parameter)
 {
     if (!parameter.isSetProgrammable())

@@ -30,6 +30,17 @@ struct ValueReading
     bool connectionFailed = false; // no answer at all: the batch stopped here
 };
 
+// What a batch of readings came to besides its values: the reads the drive refused, and why the
+// batch stopped when the connection failed. The window's refresh and polling both keep one.
+struct ReadingsSummary
+{
+    QList<ValueReading> failures; // refused, in the order they came
+    QString stopReason;           // the first connection failure, or empty
+
+    // Takes one reading in; a value it carries is the caller's to use.
+    void add(const ValueReading &reading);
+};
+
 // Every value of the parameter: one read per set, or the one value.
 QList<ValueRead> valueReadsOf(const ParameterDescription &parameter);
 // Every value the level lets be read, of the whole drive or of one group.

@@ -72,7 +72,6 @@ private:
         std::shared_ptr<CopySetJob> job;
         QList<WriteValueCommand::Values> before; // per item: the target set's value, for undo
         QFutureWatcher<WriteOutcome> watcher;
-        int reported = 0; // outcomes taken from the job
         std::unique_ptr<QUndoCommand> macro; // the values written, one step on the stack
         int written = 0;
         QStringList refusals;

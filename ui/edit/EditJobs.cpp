@@ -64,7 +64,6 @@ void EditController::copyTake(int begin, int end)
     for (int index = begin; index < end; ++index) {
         const WriteOutcome outcome = future.resultAt(index);
         const CopySetPlan::Item &item = copy.plan.items.at(index);
-        ++copy.reported;
         showOutcome(*m_model, outcome);
         if (outcome.acknowledgedMask) {
             new WriteValueCommand(this, WriteValueCommand::Kind::Write, item.address,
@@ -95,7 +94,7 @@ void EditController::copyFinished()
 
     const int from = job->plan.from;
     const int to = job->plan.to;
-    const int notCopied = int(job->plan.items.size()) - job->reported;
+    const int notCopied = int(job->plan.items.size()) - job->watcher.future().resultCount();
     QStringList parts;
     if (job->plan.items.isEmpty()) {
         parts << tr("Set %2 holds the values of set %1 already").arg(from).arg(to);
@@ -149,17 +148,19 @@ void EditController::refreshFinished()
     m_refresh = nullptr;
     batch->deleteLater();
     m_readFailures.clear();
-    for (const ValueReadBatch::Failure &failure : batch->failures())
-        m_readFailures.insert(quint32(failure.address) << 8 | quint32(failure.set), failure.reason);
+    for (const ValueReading &failure : batch->failures()) {
+        m_readFailures.insert(quint32(failure.read.address) << 8 | quint32(failure.read.set),
+                              failure.reason);
+    }
 
     QStringList parts;
     parts << tr("%n value(s) read", nullptr, batch->done() - int(batch->failures().size()));
     if (!batch->failures().isEmpty()) {
-        const ValueReadBatch::Failure &first = batch->failures().constFirst();
+        const ValueReading &first = batch->failures().constFirst();
         parts << tr("%n could not be read (first: %1%2: %3)", nullptr,
                     int(batch->failures().size()))
-                     .arg(idOf(first.address), inSets(first.address, quint8(1u << first.set)),
-                          first.reason);
+                     .arg(idOf(first.read.address),
+                          inSets(first.read.address, quint8(1u << first.read.set)), first.reason);
     }
     if (!batch->stopReason().isEmpty())
         parts << tr("stopped: %1").arg(batch->stopReason());

@@ -48,10 +48,7 @@ void ValueReadBatch::take(int begin, int end)
         ++m_done;
         if (reading.value)
             m_model->setValue(reading.read.address, reading.read.set, *reading.value);
-        else if (reading.connectionFailed && m_stopReason.isEmpty())
-            m_stopReason = reading.reason;
-        else if (!reading.connectionFailed)
-            m_failures << Failure{reading.read.address, reading.read.set, reading.reason};
+        m_summary.add(reading);
     }
     emit progress(m_done, total());
 }

@@ -19,13 +19,6 @@ class ValueReadBatch : public QObject
 {
     Q_OBJECT
 public:
-    struct Failure
-    {
-        quint16 address = 0;
-        int set = 0;
-        QString reason;
-    };
-
     ValueReadBatch(DriveClient *client, ParameterModel *model, QList<ValueRead> reads,
                    QObject *parent = nullptr);
     ~ValueReadBatch() override;
@@ -38,9 +31,9 @@ public:
     int done() const { return m_done; }
     bool isRunning() const { return m_running; }
     bool wasCancelled() const { return m_cancelled; }
-    const QList<Failure> &failures() const { return m_failures; }
+    const QList<ValueReading> &failures() const { return m_summary.failures; }
     // Why the batch stopped before reading everything (the connection failed), or empty.
-    const QString &stopReason() const { return m_stopReason; }
+    const QString &stopReason() const { return m_summary.stopReason; }
 
 signals:
     void progress(int done, int total);
@@ -57,8 +50,7 @@ private:
     int m_done = 0;
     bool m_running = false;
     bool m_cancelled = false;
-    QList<Failure> m_failures;
-    QString m_stopReason;
+    ReadingsSummary m_summary;
 };
 
 } // namespace DriveDesk
