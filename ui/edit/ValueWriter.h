@@ -33,9 +33,8 @@ void showOutcome(ParameterModel &model, const WriteOutcome &outcome, bool supers
 
 // Carries changes of parameter values to the drive, each as a WriteValueJob (written, then
 // read back, in the client's thread), telling the model each cell's outcome: pending at once,
-// then written or failed with the drive's reason. The changes of one parameter run one after the other; the read-back of a change that
-// a later one of the same parameter follows only stores the value, so the later one's cells
-// never show a failure that is not theirs. Lives in the GUI thread.
+// then written or failed with the drive's reason. The changes of one parameter run one after
+// the other (see showOutcome() for the superseded ones). Lives in the GUI thread.
 class ValueWriter : public QObject
 {
     Q_OBJECT
