@@ -6,7 +6,8 @@
 
 namespace DriveDesk {
 
-// The desktop theme's icon, or the style's where the theme has none.
+// The desktop theme's icon, or the style's where the theme has none: for the window's
+// actions, its features' and the telegram monitor's.
 inline QIcon themedIcon(const char *theme, QStyle::StandardPixmap fallback)
 {
     return QIcon::fromTheme(QString::fromLatin1(theme),

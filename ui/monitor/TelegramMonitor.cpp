@@ -5,6 +5,7 @@
 #include "TrafficModel.h"
 
 #include "client/DriveClient.h"
+#include "main/FrameSupport.h"
 
 #include <QAction>
 #include <QApplication>
@@ -40,11 +41,6 @@ const QString kSaveDirectoryKey = QStringLiteral("TelegramMonitor/saveDirectory"
 QSettings settings()
 {
     return QSettings(QStringLiteral("DriveDesk"), QStringLiteral("DriveDesk"));
-}
-
-QIcon themeIcon(const QString &name, QStyle::StandardPixmap fallback)
-{
-    return QIcon::fromTheme(name, QApplication::style()->standardIcon(fallback));
 }
 
 } // namespace
@@ -87,7 +83,7 @@ TelegramMonitor::TelegramMonitor(QWidget *parent)
                           fixed.horizontalAdvance(QString(30, QLatin1Char('0'))));
     header->restoreState(settings().value(kHeaderKey).toByteArray());
 
-    m_copyAction = new QAction(themeIcon(QStringLiteral("edit-copy"), QStyle::SP_FileIcon),
+    m_copyAction = new QAction(themedIcon("edit-copy", QStyle::SP_FileIcon),
                                tr("&Copy"), m_view);
     m_copyAction->setShortcut(QKeySequence::Copy);
     m_copyAction->setShortcutContext(Qt::WidgetShortcut);
@@ -148,18 +144,18 @@ QWidget *TelegramMonitor::createToolBar()
     toolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
 
     m_pauseAction = toolBar->addAction(
-        themeIcon(QStringLiteral("media-playback-pause"), QStyle::SP_MediaPause), tr("Pause"));
+        themedIcon("media-playback-pause", QStyle::SP_MediaPause), tr("Pause"));
     m_pauseAction->setCheckable(true);
     m_pauseAction->setToolTip(tr("Hold new telegrams back and show them on resume"));
     connect(m_pauseAction, &QAction::toggled, this, &TelegramMonitor::setPaused);
 
     QAction *clearAction = toolBar->addAction(
-        themeIcon(QStringLiteral("edit-clear"), QStyle::SP_DialogResetButton), tr("Clear"));
+        themedIcon("edit-clear", QStyle::SP_DialogResetButton), tr("Clear"));
     clearAction->setToolTip(tr("Forget every telegram listed and held"));
     connect(clearAction, &QAction::triggered, this, &TelegramMonitor::clear);
 
     QAction *saveAction = toolBar->addAction(
-        themeIcon(QStringLiteral("document-save-as"), QStyle::SP_DialogSaveButton), tr("Save…"));
+        themedIcon("document-save-as", QStyle::SP_DialogSaveButton), tr("Save…"));
     saveAction->setToolTip(tr("Save the telegrams the filter shows to a CSV or text file"));
     connect(saveAction, &QAction::triggered, this, &TelegramMonitor::chooseFileAndSave);
 
@@ -196,8 +192,8 @@ void TelegramMonitor::setPaused(bool paused)
     m_pauseAction->setChecked(paused);
     m_pauseAction->setText(paused ? tr("Resume") : tr("Pause"));
     m_pauseAction->setIcon(
-        paused ? themeIcon(QStringLiteral("media-playback-start"), QStyle::SP_MediaPlay)
-               : themeIcon(QStringLiteral("media-playback-pause"), QStyle::SP_MediaPause));
+        paused ? themedIcon("media-playback-start", QStyle::SP_MediaPlay)
+               : themedIcon("media-playback-pause", QStyle::SP_MediaPause));
 }
 
 bool TelegramMonitor::isPaused() const
