@@ -29,6 +29,13 @@ std::optional<qint32> parseNumber(const QString &text, int decimals, bool hex)
     return qint32(value);
 }
 
+bool isDecimalNumber(const QString &text)
+{
+    bool ok = false;
+    text.trimmed().toDouble(&ok);
+    return ok;
+}
+
 QByteArray lineText(const QString &text, const QString &what, QStringList &problems)
 {
     for (const QChar c : text) {

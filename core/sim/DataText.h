@@ -12,6 +12,9 @@ namespace DriveDesk::Sim {
 // or an h suffix ("7FFFh", "-1"). Nothing for text that is not a number or does not fit 32 bits.
 std::optional<qint32> parseNumber(const QString &text, int decimals = 0, bool hex = false);
 
+// Whether the text reads as a decimal number ("-1", "130.0"); "7FFF" and "7FFFh" do not.
+bool isDecimalNumber(const QString &text);
+
 // A name or plaintext for the 7-bit line: at most 24 printable ASCII characters. Anything else
 // is reported as a problem naming `what`, and the text is cut to 24 characters.
 QByteArray lineText(const QString &text, const QString &what, QStringList &problems);

@@ -269,9 +269,14 @@ void Loader::addParameter(const QString &group, int number, const CsvTable::Row 
         }
     }
     const int decimals = spec.explicitScale ? 0 : spec.decimals;
+    // keb_f5_params.csv writes numbers as its sources did: In.25 "65535" is decimal though the
+    // parameter shows hex, Sy.16 "7FFF" is hex without a suffix. So a facts cell is hex only
+    // when it cannot be decimal; the simulator's own cells follow the h flag.
     const auto limitValue = [&](const QString &column) {
-        const QString text = m.value(column);
-        const std::optional<qint32> value = parseNumber(text, decimals, spec.flags.hex);
+        const QString own = m.own(column);
+        const QString text = own.isEmpty() ? m.fact(column) : own;
+        const bool hex = own.isEmpty() ? !isDecimalNumber(text) : spec.flags.hex;
+        const std::optional<qint32> value = parseNumber(text, decimals, hex);
         if (!text.isEmpty() && !value)
             problem(QStringLiteral("%1: %2 \"%3\" is not a number").arg(id, column, text));
         return value;

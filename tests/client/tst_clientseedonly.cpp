@@ -66,7 +66,7 @@ private slots:
         QCOMPARE(drive.parameterCount(), 205);
         // No identification service over HSP5: the identification parameters name the drive.
         QCOMPARE(drive.identification, QString());
-        QVERIFY2(DriveIdentity::summary(drive).contains(QStringLiteral("software 1.80")),
+        QVERIFY2(DriveIdentity::summary(drive).contains(QStringLiteral("software 1.81")),
                  qPrintable(DriveIdentity::summary(drive)));
         QCOMPARE(drive.find(kMaxSpeedForward)->values[1], std::optional<qint32>(2500));
         QCOMPARE(drive.find(kMaxSpeedForward)->values[0], std::optional<qint32>(3000));

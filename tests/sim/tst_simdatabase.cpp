@@ -4,6 +4,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -82,6 +83,61 @@ private slots:
         QVERIFY(db->find(0x0002)); // Sy.02
         QVERIFY(db->find(0x0E19)->isSetProgrammable()); // In.25
         QCOMPARE(db->find(0x0007)->defaultValue, 3); // Sy.07 9600 baud
+    }
+
+    // The facts write limits as their sources did: decimal ("65535", "130.0") unless they cannot
+    // be ("7FFF", "7FFFh"). Every limit they give is the simulated drive's limit.
+    void everyLimitOfTheFactsIsTheDrivesLimit()
+    {
+        const auto db = standardDatabase();
+        const CsvTable facts
+            = CsvTable::read(resourceDirectory() + QStringLiteral("/keb_f5_params.csv"));
+        const QRegularExpression decimal(QStringLiteral("^(-?\\d+)(?:\\.(\\d+))?$"));
+        int checked = 0;
+        for (const CsvTable::Row &row : facts.rows()) {
+            const quint16 address
+                = quint16(facts.cell(row, QStringLiteral("address_hex")).toUInt(nullptr, 16));
+            const SimParameter *parameter = db->find(address);
+            if (!parameter)
+                continue;
+            const int decimals = facts.cell(row, QStringLiteral("decimals")).toInt();
+            const std::pair<const char *, qint32> limits[] = {
+                { "min", parameter->minimum },
+                { "max", parameter->maximum },
+                { "default", parameter->defaultValue },
+            };
+            for (const auto &[column, actual] : limits) {
+                QString text = facts.cell(row, QString::fromLatin1(column));
+                if (text.isEmpty())
+                    continue;
+                qint64 expected = 0;
+                const QRegularExpressionMatch match = decimal.match(text);
+                if (match.hasMatch()) {
+                    const QString fraction = match.captured(2).leftJustified(decimals, u'0');
+                    QVERIFY2(fraction.size() == decimals, qPrintable(text));
+                    expected = (match.captured(1) + fraction).toLongLong();
+                } else {
+                    if (text.endsWith(u'h'))
+                        text.chop(1);
+                    bool ok = false;
+                    expected = text.toLongLong(&ok, 16);
+                    QVERIFY2(ok, qPrintable(text));
+                }
+                const QString what = QStringLiteral("%1.%2 %3 \"%4\"")
+                                         .arg(facts.cell(row, QStringLiteral("group")),
+                                              facts.cell(row, QStringLiteral("number")),
+                                              QString::fromLatin1(column),
+                                              facts.cell(row, QString::fromLatin1(column)));
+                QVERIFY2(actual == expected,
+                         qPrintable(QStringLiteral("%1: the drive has %2").arg(what).arg(actual)));
+                ++checked;
+            }
+        }
+        QVERIFY(checked > 100);
+        QCOMPARE(db->find(0x0404)->maximum, 0xFFF); // Pn.04, the simulator's own hex limits
+        QCOMPARE(db->find(0x0508)->maximum, 4095); // uF.08
+        QCOMPARE(db->find(0x0E19)->maximum, 0xFFFF); // In.25
+        QCOMPARE(db->find(0x0010)->maximum, 0x7FFF); // Sy.16
     }
 
     void csvErrorsNameFileAndLine()
