@@ -4,6 +4,7 @@
 #include "main/DriveSession.h"
 #include "main/NoticeBar.h"
 #include "main/RecentConnections.h"
+#include "parameters/ParameterProperties.h"
 #include "protocol/hsp5/Hsp5Codec.h"
 #include "protocol/hsp5/Hsp5Layout.h"
 
@@ -239,7 +240,14 @@ private slots:
         QCOMPARE(shown.size(), differing);
         for (quint16 address : shown) {
             QVERIFY(model->indexOf(address).data(ParameterModel::DiffersFromDefaultRole).toBool());
+            // Only what the user sets: no read-only value, nothing the drive changes itself.
+            const ParameterDescription *parameter = model->parameter(address);
+            const ParameterProperties properties(parameter->properties1, parameter->properties2);
+            QVERIFY2(!properties.isReadOnly() && !properties.isChangedByInverter(),
+                     qPrintable(model->indexOf(address).data().toString()));
         }
+        QVERIFY(!shown.contains(0x0212)); // ru.18 DC link voltage
+        QVERIFY(!shown.contains(0x0E0A)); // In.10 serial number
         m_window->browser()->differsAction()->trigger();
         QVERIFY(!box->isChecked());
         QCOMPARE(shownAddresses(*m_window).size(), kSimulatedParameters);

@@ -360,6 +360,20 @@ private slots:
         QVERIFY(!differs(kErrorMask));
         model.setValue(kMaxFrequency, 1, 5000);
         QVERIFY(!differs(kMaxFrequency));
+
+        // What the user cannot set is no setting that differs: read-only values, values the
+        // drive changes itself (properties 2 bit 9), the password parameter.
+        QVERIFY(model.value(kFrequency, 0) != model.parameter(kFrequency)->defaultValue);
+        QVERIFY(!differs(kFrequency));
+        DriveDescription changing = drive();
+        auto *ramp = const_cast<ParameterDescription *>(changing.find(kRampTime));
+        ramp->properties2 |= 1u << 9;
+        ramp->values[0] = 700;
+        model.setDescription(changing);
+        QVERIFY(!differs(kRampTime));
+        ramp->properties2 &= ~(1u << 9);
+        model.setDescription(changing);
+        QVERIFY(differs(kRampTime));
     }
 
     void searchTextHoldsIdsNameAndShownValues()

@@ -30,7 +30,7 @@ FilterBar::FilterBar(QWidget *parent)
     layout->addWidget(m_search, 1);
 
     m_differsAction = addFilter(tr("&Differs from default"), tr("&Differs from Default"),
-                                tr("Only parameters whose value differs from the default"));
+                                tr("Only settings whose value differs from the default (not read-only or live values)"));
     m_favouritesAction = addFilter(tr("F&avourites"), tr("F&avourites Only"),
                                    tr("Only the parameters marked with a star"));
     m_hideAboveLevelAction = addFilter(

@@ -21,7 +21,8 @@ public:
     // in any form the command line takes names ("op28", "0x031C", "031Ch").
     void setFilterText(const QString &text);
     QString filterText() const { return m_text; }
-    // Parameters where a known value of any set differs from the default.
+    // Settings the user can change where a known value of any set differs from the default
+    // (not read-only values, nor those the drive changes itself).
     void setDiffersFromDefaultOnly(bool on);
     bool differsFromDefaultOnly() const { return m_differsOnly; }
     void setFavouritesOnly(bool on);

@@ -43,7 +43,8 @@ public:
         EditableRole, // bool: the user may change this parameter
         FavouriteRole, // bool; settable on any cell of a parameter row
         IsGroupRole, // bool
-        DiffersFromDefaultRole, // bool: a known value of any set differs from the default
+        DiffersFromDefaultRole, // bool: a user setting (isUserSetting) whose value in some set
+                                // differs from the default
         AboveLevelRole, // bool: needs a higher password level than the one in force
         SearchTextRole, // QString, lower-case: what the search matches
         DescriptionRole, // ParameterDescription with the values held now

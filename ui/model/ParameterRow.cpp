@@ -1,5 +1,6 @@
 #include "ParameterRow.h"
 
+#include "parameters/ParameterAccess.h"
 #include "parameters/ParameterId.h"
 
 namespace DriveDesk {
@@ -98,6 +99,10 @@ QString ParameterRow::text(int cell, bool raw) const
 
 bool ParameterRow::differsFromDefault() const
 {
+    // Live values, counters and read-only values differ from their default by nature; they
+    // would bury the settings someone changed.
+    if (!isUserSetting(m_description))
+        return false;
     for (int cell = 0; cell < cellCount(); ++cell) {
         const std::optional<qint32> shown = shownValue(cell);
         if (shown && *shown != m_description.defaultValue)
