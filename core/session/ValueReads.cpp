@@ -44,6 +44,19 @@ QList<ValueRead> readableValues(const DriveDescription &drive, PasswordLevel lev
     return reads;
 }
 
+QList<ValueRead> valuesOpenedBy(const DriveDescription &drive, PasswordLevel from,
+                                PasswordLevel to)
+{
+    QList<ValueRead> reads;
+    for (const GroupDescription &group : drive.groups) {
+        for (const ParameterDescription &parameter : group.parameters) {
+            if (isReadable(parameter, to) && !isReadable(parameter, from))
+                reads << valueReadsOf(parameter);
+        }
+    }
+    return reads;
+}
+
 ReadValuesJob::ReadValuesJob(Protocol protocol, QList<ValueRead> reads)
     : m_protocol(protocol)
     , m_reads(std::move(reads))

@@ -46,6 +46,9 @@ QList<ValueRead> valueReadsOf(const ParameterDescription &parameter);
 // Every value the level lets be read, of the whole drive or of one group.
 QList<ValueRead> readableValues(const DriveDescription &drive, PasswordLevel level);
 QList<ValueRead> readableValues(const GroupDescription &group, PasswordLevel level);
+// The values a change of level from `from` to `to` opens: readable at `to`, not at `from`.
+QList<ValueRead> valuesOpenedBy(const DriveDescription &drive, PasswordLevel from,
+                                PasswordLevel to);
 
 // Reads a list of values. Result i is the reading of reads[i], reported as it comes; progress
 // counts the reads done. A read the drive refuses is reported with its reason and the batch goes

@@ -56,12 +56,35 @@ private slots:
         m_access->readLevel();
         QTRY_COMPARE_WITH_TIMEOUT(m_levels->size(), 1, kWaitMs);
         m_messages->clear();
+        QSignalSpy answers(m_access.get(), &AccessController::passwordAnswered);
         m_access->enterPassword(1234);
         QTRY_COMPARE_WITH_TIMEOUT(m_messages->size(), 1, kWaitMs);
         const QString said = m_messages->constFirst().at(0).toString();
         QVERIFY2(said.contains(ackText(Ack::PasswordInvalid)), qPrintable(said));
+        QCOMPARE(answers.size(), 1);
+        QCOMPARE(answers.constFirst().at(0).toBool(), false);
+        QVERIFY(answers.constFirst().at(1).toString().contains(ackText(Ack::PasswordInvalid)));
         QCOMPARE(m_access->level(), PasswordLevel::Application);
         QCOMPARE(m_levels->size(), 1);
+    }
+
+    void passwordWrittenInTheTableIsNoUndoStepAndNoFailure()
+    {
+        // ud.01 reads the level, never the password written: that is no failed write, and
+        // writing the old value back would be a wrong password blocking every older undo step.
+        EditController editor(&m_drive->client, &m_drive->model, &m_drive->undoStack);
+        QSignalSpy said(&editor, &EditController::message);
+        m_access->readLevel();
+        QTRY_COMPARE_WITH_TIMEOUT(m_levels->size(), 1, kWaitMs);
+        QVERIFY(m_drive->model.requestWrite(kPassword, 0x01, 500));
+        QTRY_COMPARE_WITH_TIMEOUT(m_drive->state(kPassword), EditState::Written, kWaitMs);
+        QCOMPARE(m_drive->model.value(kPassword, 0), -5);
+        QTRY_COMPARE_WITH_TIMEOUT(m_access->level(), PasswordLevel::DriveMode, kWaitMs);
+        QCOMPARE(m_drive->undoStack.count(), 0);
+        QTRY_VERIFY_WITH_TIMEOUT(!said.isEmpty(), kWaitMs);
+        const QString text = said.constLast().at(0).toString();
+        QVERIFY2(text.contains(QLatin1String("cannot be undone")), qPrintable(text));
+        QVERIFY2(!text.contains(QLatin1String("500")), qPrintable(text)); // never the password
     }
 
     void rightPasswordOpensWhatItsLevelAllows()
@@ -73,8 +96,12 @@ private slots:
                     .testFlag(Qt::ItemIsEditable)
                 == false);
 
+        QSignalSpy raised(m_access.get(), &AccessController::levelRaised);
         m_access->enterPassword(500);
         QTRY_COMPARE_WITH_TIMEOUT(m_levels->size(), 2, kWaitMs);
+        QCOMPARE(raised.size(), 1);
+        QCOMPARE(raised.constFirst().at(0).value<PasswordLevel>(), PasswordLevel::Application);
+        QCOMPARE(raised.constFirst().at(1).value<PasswordLevel>(), PasswordLevel::DriveMode);
         QCOMPARE(m_levels->constLast().at(0).value<PasswordLevel>(), PasswordLevel::DriveMode);
         QCOMPARE(m_drive->model.passwordLevel(), PasswordLevel::DriveMode);
         QVERIFY(m_drive->model.isEditable(kControlMode));

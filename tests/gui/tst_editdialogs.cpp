@@ -60,11 +60,32 @@ private slots:
         QVERIFY(okButton(dialog)->isEnabled());
         QCOMPARE(dialog.password(), 500);
 
+        // OK asks the drive and waits: a refusal keeps the dialog open with the drive's reason
+        // and the number selected for another try; only an accepted password closes it.
+        dialog.show();
         QSignalSpy entered(&dialog, &PasswordDialog::passwordEntered);
         QTest::mouseClick(okButton(dialog), Qt::LeftButton);
-        QCOMPARE(dialog.result(), int(QDialog::Accepted));
         QCOMPARE(entered.size(), 1);
         QCOMPARE(entered.constFirst().at(0).toInt(), 500);
+        QVERIFY(dialog.isVisible());
+        QVERIFY(dialog.isChecking());
+        QVERIFY(!okButton(dialog)->isEnabled());
+        QTest::mouseClick(okButton(dialog), Qt::LeftButton);
+        QCOMPARE(entered.size(), 1);
+
+        dialog.passwordRefused(QStringLiteral("password invalid"));
+        QVERIFY(dialog.isVisible());
+        QVERIFY(showsText(dialog, QStringLiteral("Not accepted: password invalid")));
+        QVERIFY(okButton(dialog)->isEnabled());
+        QCOMPARE(field->selectedText(), QStringLiteral("500"));
+
+        QTest::keyClicks(field, QStringLiteral("440"));
+        QTest::keyClick(field, Qt::Key_Return);
+        QCOMPARE(entered.size(), 2);
+        QCOMPARE(entered.constLast().at(0).toInt(), 440);
+        dialog.passwordAccepted();
+        QVERIFY(!dialog.isVisible());
+        QCOMPARE(dialog.result(), int(QDialog::Accepted));
     }
 
     void setsDialogChoosesSets()

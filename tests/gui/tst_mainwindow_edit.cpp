@@ -1,12 +1,17 @@
 #include "tst_mainwindow_support.h"
 
 #include "delegate/ParameterDelegate.h"
+#include "edit/AccessController.h"
 #include "edit/PasswordDialog.h"
 #include "edit/SetsDialog.h"
 #include "main/DriveSession.h"
 
 #include <QAction>
 #include <QApplication>
+#include <QGuiApplication>
+#include <QPalette>
+#include <QPointer>
+#include <QSignalSpy>
 #include <QLabel>
 #include <QLineEdit>
 #include <QStatusBar>
@@ -57,6 +62,14 @@ private:
         trigger(); // the dialog opens without a nested event loop: wait for it here
         QTRY_VERIFY_WITH_TIMEOUT(answered, kWaitMs);
         delete timer;
+    }
+
+    // As a user does it: QTest's double click alone leaves the press without its release.
+    static void doubleClick(QAbstractItemView *view, const QModelIndex &index)
+    {
+        const QPoint point = view->visualRect(index).center();
+        QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, point);
+        QTest::mouseDClick(view->viewport(), Qt::LeftButton, {}, point);
     }
 
 private slots:
@@ -236,6 +249,90 @@ private slots:
             [this] { action("passwordAction")->trigger(); });
         QTRY_COMPARE_WITH_TIMEOUT(level->text(), QStringLiteral("Password level: Drive mode"),
                                   kWaitMs);
+    }
+
+    void wrongPasswordKeepsTheDialogOpenWithTheDrivesReason()
+    {
+        QPointer<PasswordDialog> dialog;
+        answerDialog<PasswordDialog>([&dialog](PasswordDialog *d) { dialog = d; },
+                                     [this] { action("passwordAction")->trigger(); });
+        auto *field = dialog->findChild<QLineEdit *>();
+        field->setText(QStringLiteral("1234"));
+        QTest::keyClick(field, Qt::Key_Return);
+        auto *answer = dialog->findChild<QLabel *>(QStringLiteral("passwordAnswer"));
+        QTRY_VERIFY_WITH_TIMEOUT(answer->text().contains(ackText(Ack::PasswordInvalid)), kWaitMs);
+        QVERIFY(dialog->isVisible());
+
+        field->setText(QStringLiteral("7070"));
+        QTest::keyClick(field, Qt::Key_Return);
+        QTRY_VERIFY_WITH_TIMEOUT(!dialog || !dialog->isVisible(), kWaitMs);
+        auto *level = m_window->statusBar()->findChild<QLabel *>(QStringLiteral("passwordLevel"));
+        QTRY_COMPARE_WITH_TIMEOUT(level->text(), QStringLiteral("Password level: Supervisor"),
+                                  kWaitMs);
+    }
+
+    void aHigherLevelReadsWhatItOpensAndALowerOneGreysIt()
+    {
+        constexpr quint16 kCalibration = 0x0E28; // In.40, read at Security (6)
+        ParameterModel *model = m_window->model();
+        QCOMPARE(model->value(kCalibration, 0), std::nullopt);
+        QVERIFY(model->isAboveLevel(kCalibration));
+        QVERIFY(m_window->session()->accessController());
+        m_window->session()->accessController()->enterPassword(7070);
+        // No refresh asked for: the level's change reads what it opened.
+        QTRY_VERIFY_WITH_TIMEOUT(model->value(kCalibration, 0).has_value(), kWaitMs);
+        QCOMPARE(model->valueIndex(kCalibration, 0).data().toString(), QStringLiteral("5A5Ah"));
+        QVERIFY(!model->isAboveLevel(kCalibration));
+
+        m_window->session()->accessController()->enterPassword(440);
+        QTRY_VERIFY_WITH_TIMEOUT(model->isAboveLevel(kCalibration), kWaitMs);
+        QCOMPARE(model->valueIndex(kCalibration, 0).data(Qt::ForegroundRole).value<QColor>(),
+                 QGuiApplication::palette().color(QPalette::Disabled, QPalette::Text));
+    }
+
+    void editingThePasswordParameterInTheTableAsksForAPassword()
+    {
+        m_window->browser()->showGroup(QStringLiteral("ud"));
+        ParameterView *view = m_window->browser()->view();
+        const QModelIndex index = viewIndex(*m_window, kPassword, 0);
+        view->scrollTo(index);
+        view->setCurrentIndex(index);
+        answerDialog<PasswordDialog>(
+            [](PasswordDialog *dialog) {
+                auto *field = dialog->findChild<QLineEdit *>();
+                field->setText(QStringLiteral("500"));
+                dialog->accept();
+            },
+            [view, index] { doubleClick(view, index); });
+        QVERIFY(!view->indexWidget(index)); // no editor in the cell
+        auto *level = m_window->statusBar()->findChild<QLabel *>(QStringLiteral("passwordLevel"));
+        QTRY_COMPARE_WITH_TIMEOUT(level->text(), QStringLiteral("Password level: Drive mode"),
+                                  kWaitMs);
+        QCOMPARE(state(kPassword, 0), EditState::None);
+        QCOMPARE(m_window->undoStack()->count(), 0);
+    }
+
+    void readOnlyCellsLookReadOnlyAndSayWhyTheyCannotBeEdited()
+    {
+        constexpr quint16 kSetSpeedDisplay = 0x0300; // op.00, read-only
+        m_window->browser()->showGroup(QStringLiteral("op"));
+        ParameterView *view = m_window->browser()->view();
+        const QModelIndex readOnly = viewIndex(*m_window, kSetSpeedDisplay, 0);
+        const QModelIndex editable = viewIndex(*m_window, kDemoPeriod, 0);
+        QVERIFY(readOnly.data(Qt::BackgroundRole).value<QColor>().isValid());
+        QVERIFY(readOnly.data(Qt::BackgroundRole) != editable.data(Qt::BackgroundRole));
+
+        view->setCurrentIndex(readOnly);
+        doubleClick(view, readOnly);
+        QVERIFY(!view->indexWidget(readOnly));
+        QCOMPARE(m_window->statusBar()->currentMessage(), QStringLiteral("op.00 is read-only"));
+
+        // A digit typed on it neither edits nor jumps to a row that starts with it.
+        m_window->statusBar()->clearMessage();
+        view->setFocus();
+        QTest::keyClick(view, Qt::Key_5);
+        QCOMPARE(view->currentIndex(), readOnly);
+        QCOMPARE(m_window->statusBar()->currentMessage(), QStringLiteral("op.00 is read-only"));
     }
 };
 

@@ -313,7 +313,7 @@ private slots:
         QVERIFY(model.isEditable(kMaxFrequency));
         QString error;
         QVERIFY(!model.requestWrite(kService, 0x01, 20, &error));
-        QCOMPARE(error, QStringLiteral("Pn.07 needs password level Application"));
+        QCOMPARE(error, QStringLiteral("Pn.07 needs password level Application (in force: CP read/write)"));
 
         model.setPasswordLevel(PasswordLevel::CpReadOnly);
         QVERIFY(model.isAboveLevel(kMaxFrequency)); // written from CP read/write on

@@ -43,15 +43,21 @@ void AccessController::run(std::optional<qint32> password)
     connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, password] {
         watcher->deleteLater();
         const QFuture<PasswordLevelOutcome> future = watcher->future();
-        if (future.isCanceled() || future.resultCount() == 0)
+        if (future.isCanceled() || future.resultCount() == 0) {
+            if (password)
+                emit passwordAnswered(false, tr("the connection closed before the drive answered"));
             return;
+        }
         const PasswordLevelOutcome outcome = future.result();
         if (password && !outcome.passwordAccepted) {
             emit message(tr("Password not accepted: %1").arg(outcome.error));
+            emit passwordAnswered(false, outcome.error);
             return;
         }
-        if (password)
+        if (password) {
             emit message(tr("Password accepted"));
+            emit passwordAnswered(true, QString());
+        }
         if (!outcome.readValue) {
             emit message(tr("The password level could not be read: %1").arg(outcome.error));
             return;
@@ -73,13 +79,18 @@ void AccessController::takeReadValue(qint32 value)
                          .arg(levelName(this->level())));
         return;
     }
-    const bool changed = !m_known || *level != this->level();
+    const bool wasKnown = m_known;
+    const PasswordLevel before = this->level();
+    const bool changed = !m_known || *level != before;
     m_known = true;
     m_model->setPasswordLevel(*level);
     if (changed) {
         emit levelChanged(*level);
         emit message(tr("Password level: %1").arg(levelName(*level)));
     }
+    // Before the first reading the values were read at whatever level the drive had.
+    if (wasKnown && *level > before)
+        emit levelRaised(before, *level);
 }
 
 void AccessController::modelDataChanged(const QModelIndex &topLeft, const QModelIndex &bottomRight)

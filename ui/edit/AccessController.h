@@ -29,6 +29,10 @@ public:
 
 signals:
     void levelChanged(DriveDesk::PasswordLevel level);
+    // The level read rose above the one known before: what it opens can be read now.
+    void levelRaised(DriveDesk::PasswordLevel from, DriveDesk::PasswordLevel to);
+    // The drive's answer to enterPassword(): accepted, or refused with the reason in words.
+    void passwordAnswered(bool accepted, const QString &reason);
     void message(const QString &text);
 
 private:

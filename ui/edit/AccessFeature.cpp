@@ -5,6 +5,8 @@
 
 #include "main/DriveSession.h"
 #include "main/FrameSupport.h"
+#include "main/ParameterBrowser.h"
+#include "main/ParameterView.h"
 
 #include <QAction>
 #include <QLabel>
@@ -28,6 +30,11 @@ AccessFeature::AccessFeature(WindowFrame &frame, QObject *parent)
     QToolBar *bar = frame.toolBar();
     bar->addSeparator();
     bar->addAction(m_passwordAction);
+
+    // Editing the password parameter in the table asks for a password here, where a refusal
+    // is explained and nothing enters the undo history.
+    connect(frame.browser()->view(), &ParameterView::passwordRequested, this,
+            &AccessFeature::enterPassword);
 
     m_levelLabel = new QLabel;
     m_levelLabel->setObjectName(QStringLiteral("passwordLevel"));
@@ -60,10 +67,23 @@ void AccessFeature::enterPassword()
     auto *dialog = new PasswordDialog(frame().frameWidget());
     dialog->setLevel(access->isLevelKnown() ? std::optional<PasswordLevel>(access->level())
                                             : std::nullopt);
-    connect(dialog, &QDialog::accepted, this, [this, dialog] {
-        if (frame().isReady() && dialog->password())
-            frame().session()->accessController()->enterPassword(*dialog->password());
+    connect(dialog, &PasswordDialog::passwordEntered, this, [this, dialog](int password) {
+        if (!frame().isReady()) {
+            dialog->passwordRefused(tr("not connected"));
+            return;
+        }
+        frame().session()->accessController()->enterPassword(password);
     });
+    // The session's answer reaches only a dialog that is waiting for one.
+    connect(access, &AccessController::passwordAnswered, dialog,
+            [dialog](bool accepted, const QString &reason) {
+                if (!dialog->isChecking())
+                    return;
+                if (accepted)
+                    dialog->passwordAccepted();
+                else
+                    dialog->passwordRefused(reason);
+            });
     openDialog(dialog);
 }
 

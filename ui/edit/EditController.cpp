@@ -1,8 +1,9 @@
 #include "EditController.h"
 
 #include "client/DriveClient.h"
-#include "parameters/ParameterFormat.h"
 #include "model/ParameterModel.h"
+#include "parameters/ParameterAccess.h"
+#include "parameters/ParameterFormat.h"
 #include "parameters/ParameterId.h"
 
 #include <QUndoStack>
@@ -79,10 +80,18 @@ void EditController::changeDone(WriteValueCommand::Kind kind, quint8 setMask, qi
         return;
     }
     const quint8 done = outcome.acknowledgedMask;
-    const QString text = reset
-        ? tr("Reset %1 to its default%2").arg(idOf(address), inSets(address, done))
-        : tr("Write %1 = %2%3").arg(idOf(address), valueText(address, raw), inSets(address, done));
-    m_undoStack->push(new WriteValueCommand(this, kind, address, done, raw, outcome.before, text));
+    const ParameterDescription *parameter = m_model->parameter(address);
+    // Writing the earlier value back would not undo what the drive changes itself, and for the
+    // password parameter it would send a password that fails and block every older step.
+    const bool undoable = !parameter || !readBackMayDiffer(*parameter);
+    if (undoable) {
+        const QString text = reset
+            ? tr("Reset %1 to its default%2").arg(idOf(address), inSets(address, done))
+            : tr("Write %1 = %2%3")
+                  .arg(idOf(address), valueText(address, raw), inSets(address, done));
+        m_undoStack->push(
+            new WriteValueCommand(this, kind, address, done, raw, outcome.before, text));
+    }
 
     QString result = reset
         ? tr("%1 reset to its default%2").arg(idOf(address), inSets(address, done))
@@ -95,6 +104,8 @@ void EditController::changeDone(WriteValueCommand::Kind kind, quint8 setMask, qi
     const QString differences = readBackDifferences(address, done);
     if (!differences.isEmpty())
         result += QStringLiteral("; ") + differences;
+    if (!undoable)
+        result += tr("; the drive changes this value itself, so the write cannot be undone");
     emit message(result);
 }
 
@@ -164,6 +175,9 @@ QString EditController::idOf(quint16 address) const
 
 QString EditController::valueText(quint16 address, qint32 raw) const
 {
+    // A password is never repeated in the status bar or the undo history.
+    if (address == kPasswordParameterAddress)
+        return QStringLiteral("****");
     const ParameterDescription *parameter = m_model->parameter(address);
     if (!parameter)
         return QString::number(raw);

@@ -47,6 +47,9 @@ public:
     // Re-reads every value the level in force lets be read (F5). A read the drive refuses is
     // kept per cell (readFailure) and the refresh goes on.
     void refresh();
+    // Reads these values (a higher password level opened them); after a refresh or copy on its
+    // way, if one is.
+    void readAgain(const QList<ValueRead> &reads);
     // Stops a copy or refresh after the requests on their way; what was done stays done.
     void cancel();
     // The drive holds none of what was written any more (the built-in simulated drive starts
@@ -89,6 +92,8 @@ private:
     void copyTake(int begin, int end);
     void copyFinished();
     void refreshFinished();
+    void startReads(const QList<ValueRead> &reads);
+    void startQueuedReads();
     bool refuseWhileJobRuns();
 
     // "op.11", the way the table names it.
@@ -107,6 +112,7 @@ private:
     QPointer<ValueReadBatch> m_refresh; // child while a refresh runs
     std::unique_ptr<CopyJob> m_copy;
     QHash<quint32, QString> m_readFailures; // address << 8 | set
+    QList<ValueRead> m_queuedReads; // readAgain() while a job ran
     bool m_busy = false;
 };
 

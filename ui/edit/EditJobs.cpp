@@ -121,6 +121,7 @@ void EditController::copyFinished()
                      .arg(from);
     emit message(parts.join(QStringLiteral("; ")));
     updateBusy();
+    startQueuedReads();
 }
 
 void EditController::forgetWrites()
@@ -133,8 +134,28 @@ void EditController::refresh()
 {
     if (refuseWhileJobRuns())
         return;
-    const QList<ValueRead> reads
-        = readableValues(m_model->description(), m_model->passwordLevel());
+    startReads(readableValues(m_model->description(), m_model->passwordLevel()));
+}
+
+void EditController::readAgain(const QList<ValueRead> &reads)
+{
+    if (reads.isEmpty())
+        return;
+    if (m_refresh || m_copy) {
+        m_queuedReads << reads;
+        return;
+    }
+    startReads(reads);
+}
+
+void EditController::startQueuedReads()
+{
+    if (!m_queuedReads.isEmpty() && !m_refresh && !m_copy)
+        startReads(std::exchange(m_queuedReads, {}));
+}
+
+void EditController::startReads(const QList<ValueRead> &reads)
+{
     m_refresh = new ValueReadBatch(m_client, m_model, reads, this);
     connect(m_refresh, &ValueReadBatch::progress, this, &EditController::progress);
     connect(m_refresh, &ValueReadBatch::finished, this, &EditController::refreshFinished);
@@ -168,6 +189,7 @@ void EditController::refreshFinished()
         parts << tr("cancelled, %n value(s) not read", nullptr, batch->total() - batch->done());
     emit message(parts.join(QStringLiteral("; ")));
     updateBusy();
+    startQueuedReads();
 }
 
 void EditController::cancel()
@@ -178,6 +200,7 @@ void EditController::cancel()
         m_copy->cancelled = true;
         m_copy->job->requestStop();
     }
+    m_queuedReads.clear();
     if (m_refresh)
         m_refresh->cancel();
 }

@@ -12,8 +12,9 @@ class QLineEdit;
 
 namespace DriveDesk {
 
-// Asks for a password for the drive, showing the password level in force. The number goes to
-// the AccessController, which writes it to the password parameter.
+// Asks for a password for the drive, showing the password level in force. OK hands the number
+// on (passwordEntered) and waits for the drive: accepted closes the dialog, a refusal keeps it
+// open with the drive's reason, so the user can try again without starting over.
 class PasswordDialog : public QDialog
 {
     Q_OBJECT
@@ -26,18 +27,27 @@ public:
     void setLevel(std::optional<PasswordLevel> level);
     // The number typed; nothing while the field holds none.
     std::optional<int> password() const;
+    // Waiting for the drive's answer to the password entered.
+    bool isChecking() const { return m_checking; }
+
+    // The drive's answer: accepted closes the dialog; refused shows why and asks again.
+    void passwordAccepted();
+    void passwordRefused(const QString &reason);
 
     void accept() override;
 
 signals:
-    void passwordEntered(int password); // on OK
+    void passwordEntered(int password); // on OK; the dialog stays open until answered
 
 private:
+    void setChecking(bool checking);
     void updateOk();
 
     QLabel *m_level = nullptr;
     QLineEdit *m_password = nullptr;
+    QLabel *m_answer = nullptr;
     QDialogButtonBox *m_buttons = nullptr;
+    bool m_checking = false;
 };
 
 } // namespace DriveDesk

@@ -38,6 +38,12 @@ DriveSession::DriveSession(const ConnectionSettings &settings, ParameterModel *m
     connect(m_edit, &EditController::message, this, &DriveSession::message);
     connect(m_access, &AccessController::message, this, &DriveSession::message);
     connect(m_polling, &PollingController::message, this, &DriveSession::message);
+    // A higher level opens values the drive refused until now: they are read at once, not left
+    // as "?" until the next refresh. What a lower level closes the model greys.
+    connect(m_access, &AccessController::levelRaised, this,
+            [this](PasswordLevel from, PasswordLevel to) {
+                m_edit->readAgain(valuesOpenedBy(m_model->description(), from, to));
+            });
     connect(&m_scan, &QFutureWatcherBase::progressValueChanged, this, [this](int value) {
         emit scanProgress(value, m_scan.progressMaximum(), m_scan.progressText());
     });

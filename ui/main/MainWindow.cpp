@@ -102,6 +102,7 @@ MainWindow::MainWindow(Language language, QWidget *parent)
     connect(m_notice, &NoticeBar::connectClicked, this, &MainWindow::openConnectionDialog);
     connect(m_browser->delegate(), &ParameterDelegate::editRefused, this,
             [this](const QModelIndex &, const QString &reason) { showMessage(reason); });
+    connect(m_browser->view(), &ParameterView::editRefused, this, &MainWindow::showMessage);
     connect(m_model, &ParameterModel::favouritesChanged, this, &MainWindow::saveFavourites);
     connect(m_model, &QAbstractItemModel::dataChanged, this,
             [this](const QModelIndex &topLeft, const QModelIndex &bottomRight) {

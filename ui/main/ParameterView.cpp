@@ -1,8 +1,10 @@
 #include "ParameterView.h"
 
 #include "model/ParameterModel.h"
+#include "parameters/PasswordLevel.h"
 
 #include <QMouseEvent>
+#include <QToolTip>
 
 namespace DriveDesk {
 
@@ -55,6 +57,27 @@ void ParameterView::mousePressEvent(QMouseEvent *event)
         }
     }
     QTreeView::mousePressEvent(event);
+}
+
+bool ParameterView::edit(const QModelIndex &index, EditTrigger trigger, QEvent *event)
+{
+    const bool byUser = trigger & (DoubleClicked | EditKeyPressed | AnyKeyPressed);
+    if (!byUser || !index.isValid() || index.data(ParameterModel::SetRole).toInt() < 0)
+        return QTreeView::edit(index, trigger, event);
+    // Returning true tells the view the attempt was handled: no double-click signal, and no
+    // keyboard search moving the cursor to a row that happens to start with the typed key.
+    if (index.data(ParameterModel::AddressRole).toUInt() == kPasswordParameterAddress) {
+        emit passwordRequested();
+        return true;
+    }
+    const QString refusal = index.data(ParameterModel::EditRefusalRole).toString();
+    if (!refusal.isEmpty()) {
+        const QRect cell = visualRect(index);
+        QToolTip::showText(viewport()->mapToGlobal(cell.bottomLeft()), refusal, viewport(), cell);
+        emit editRefused(refusal);
+        return true;
+    }
+    return QTreeView::edit(index, trigger, event);
 }
 
 } // namespace DriveDesk

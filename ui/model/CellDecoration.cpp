@@ -95,6 +95,12 @@ QIcon CellDecoration::favouriteIcon(bool favourite) const
     return favourite ? m_star : m_noStar;
 }
 
+QColor CellDecoration::readOnlyBackground() const
+{
+    const QPalette palette = QGuiApplication::palette();
+    return blend(palette.color(QPalette::Base), palette.color(QPalette::Window), 0.75);
+}
+
 QColor CellDecoration::lockedText() const
 {
     return QGuiApplication::palette().color(QPalette::Disabled, QPalette::Text);

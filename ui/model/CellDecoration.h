@@ -18,6 +18,8 @@ public:
     // A star for a favourite, an empty icon of the same size otherwise so that ids line up.
     QIcon favouriteIcon(bool favourite) const;
     QColor lockedText() const;
+    // The value cells of a read-only parameter: the greyed ground of a field that takes no input.
+    QColor readOnlyBackground() const;
 
 private:
     mutable QIcon m_star;

@@ -149,6 +149,19 @@ bool ParameterModel::isEditable(quint16 address) const
     return row && isEditable(*row);
 }
 
+QString ParameterModel::editRefusal(const ParameterRow &row) const
+{
+    if (row.properties().isReadOnly())
+        return tr("%1 is read-only").arg(row.id());
+    if (isAboveLevel(row)) {
+        const PasswordLevel needed
+            = std::max(row.properties().readLevel(), row.properties().writeLevel());
+        return tr("%1 needs password level %2 (in force: %3)")
+            .arg(row.id(), passwordLevelName(needed), passwordLevelName(m_level));
+    }
+    return {};
+}
+
 bool ParameterModel::requestWrite(quint16 address, quint8 setMask, qint32 raw, QString *error)
 {
     auto fail = [error](const QString &message) {
@@ -159,13 +172,8 @@ bool ParameterModel::requestWrite(quint16 address, quint8 setMask, qint32 raw, Q
     const ParameterRow *row = rowAt(address);
     if (!row)
         return fail(tr("this drive has no parameter %1").arg(ParameterId::hexAddress(address)));
-    if (row->properties().isReadOnly())
-        return fail(tr("%1 is read-only").arg(row->id()));
-    if (isAboveLevel(*row)) {
-        const PasswordLevel needed
-            = std::max(row->properties().readLevel(), row->properties().writeLevel());
-        return fail(tr("%1 needs password level %2").arg(row->id(), passwordLevelName(needed)));
-    }
+    if (const QString refusal = editRefusal(*row); !refusal.isEmpty())
+        return fail(refusal);
     if (setMask == 0)
         return fail(tr("%1: no set chosen").arg(row->id()));
     if (!row->description().isSetProgrammable())
@@ -226,6 +234,10 @@ void ParameterModel::confirmReadBack(quint16 address, int set, qint32 raw)
         row.setValue(cell, raw);
         if (!requested)
             return;
+        if (readBackMayDiffer(row.description())) {
+            row.markWritten(cell, raw);
+            return;
+        }
         if (*requested == raw) {
             row.markWritten(cell);
             return;

@@ -50,6 +50,7 @@ public:
         DescriptionRole, // ParameterDescription with the values held now
         RawModeRole, // bool: values are shown raw
         GroupIdRole, // QString: a group row's id ("ru")
+        EditRefusalRole, // QString: why the user may not change this parameter; empty if he may
     };
 
     explicit ParameterModel(QObject *parent = nullptr);
@@ -78,7 +79,8 @@ public:
     void markWritten(quint16 address, quint8 setMask);
     void markFailed(quint16 address, quint8 setMask, const QString &reason);
     // A value read back after a write: stored, and the cell written when it equals what was
-    // asked for, failed (saying what the drive holds) when it does not.
+    // asked for, failed (saying what the drive holds) when it does not. A parameter whose
+    // read-back may differ by its nature (readBackMayDiffer) is written whatever it reads.
     void confirmReadBack(quint16 address, int set, qint32 raw);
     void clearEditStates();
     // Drops the edit states of the sets in the mask: nothing was written there after all.
@@ -148,6 +150,9 @@ private:
     QString valueText(const ParameterRow &row, qint32 raw) const; // as the value cells show it
     bool isAboveLevel(const ParameterRow &row) const;
     bool isEditable(const ParameterRow &row) const;
+    // Why the user may not change the parameter (read-only, above the level in force); empty
+    // when he may.
+    QString editRefusal(const ParameterRow &row) const;
     // Applies `change` to the cells of the sets in the mask, then emits one dataChanged.
     template<typename Change> void changeCells(quint16 address, quint8 setMask, Change change);
     void emitRowChanged(quint16 address);

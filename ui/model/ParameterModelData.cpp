@@ -77,6 +77,8 @@ QVariant ParameterModel::parameterData(const ParameterRow &row, int column, int 
     case Qt::BackgroundRole:
         if (cell >= 0 && row.editState(cell) != EditState::None)
             return m_decoration.background(row.editState(cell));
+        if (cell >= 0 && row.properties().isReadOnly())
+            return m_decoration.readOnlyBackground();
         return {};
     case Qt::ForegroundRole:
         if (isAboveLevel(row))
@@ -102,6 +104,8 @@ QVariant ParameterModel::parameterData(const ParameterRow &row, int column, int 
         return cell >= 0 ? QVariant::fromValue(row.editState(cell)) : QVariant();
     case EditableRole:
         return isEditable(row);
+    case EditRefusalRole:
+        return editRefusal(row);
     case FavouriteRole:
         return isFavourite(row.address());
     case IsGroupRole:
@@ -171,11 +175,16 @@ QVariant ParameterModel::toolTip(const ParameterRow &row, int column) const
             break;
         }
         const std::optional<qint32> raw = row.value(set);
+        QString text;
         if (!raw) {
-            return description.error.isEmpty() ? tr("Not read")
+            text = description.error.isEmpty() ? tr("Not read")
                                                : tr("Not read: %1").arg(description.error);
+        } else {
+            text = tr("raw %1 = %2h").arg(*raw).arg(QString::number(quint32(*raw), 16).toUpper());
         }
-        return tr("raw %1 = %2h").arg(*raw).arg(QString::number(quint32(*raw), 16).toUpper());
+        if (const QString refusal = editRefusal(row); !refusal.isEmpty())
+            text += QLatin1Char('\n') + refusal;
+        return text;
     }
     switch (column) {
     case IdColumn:

@@ -65,6 +65,12 @@ void ParameterRow::markWritten(int cell)
     invalidate(cell);
 }
 
+void ParameterRow::markWritten(int cell, qint32 held)
+{
+    m_requested[std::size_t(cell)] = held;
+    markWritten(cell);
+}
+
 void ParameterRow::markFailed(int cell, const QString &reason)
 {
     m_states[std::size_t(cell)] = EditState::Failed;

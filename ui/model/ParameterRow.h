@@ -50,6 +50,8 @@ public:
     const QString &failure(int cell) const { return m_failures[std::size_t(cell)]; }
     void markPending(int cell, qint32 raw);
     void markWritten(int cell);
+    // Written, and the drive holds `held`: a parameter that changes what was written to it.
+    void markWritten(int cell, qint32 held);
     void markFailed(int cell, const QString &reason);
     bool clearEditState(int cell);
 
