@@ -1,5 +1,7 @@
 #include "Telegram.h"
 
+#include <QCoreApplication>
+
 namespace DriveDesk {
 
 ServiceData emptyDataFor(Service service)
@@ -82,40 +84,40 @@ Telegram Telegram::response(Ack ack) const
 QString serviceName(Service service)
 {
     switch (service) {
-    case Service::Unspecified: return QStringLiteral("unspecified");
-    case Service::StatusInterrogation: return QStringLiteral("status interrogation");
-    case Service::Legacy: return QStringLiteral("DIN66019 value");
-    case Service::ParameterValue: return QStringLiteral("value (set mask)");
-    case Service::ParameterValueStandard: return QStringLiteral("value (standard set)");
-    case Service::Limits: return QStringLiteral("limits");
-    case Service::DefaultValue: return QStringLiteral("default value");
-    case Service::Properties: return QStringLiteral("properties");
-    case Service::DisplayScaling: return QStringLiteral("display scaling");
-    case Service::ParameterName: return QStringLiteral("parameter name");
-    case Service::PlaintextIndices: return QStringLiteral("plaintext indices");
-    case Service::DisplayPlaintext: return QStringLiteral("display plaintext");
-    case Service::CombivisPlaintext: return QStringLiteral("plaintext");
-    case Service::GroupProperties: return QStringLiteral("group properties");
-    case Service::GroupName: return QStringLiteral("group name");
-    case Service::PlaintextDefinition: return QStringLiteral("plaintext definition");
-    case Service::Fieldbus: return QStringLiteral("field-bus function");
-    case Service::SubindexValue: return QStringLiteral("value (subindex)");
-    case Service::ProcessData1: return QStringLiteral("process data 2x32");
-    case Service::ProcessData2: return QStringLiteral("process data 4x16");
-    case Service::Scope: return QStringLiteral("scope");
-    case Service::ProcessData4: return QStringLiteral("process data type 4");
-    case Service::ProcessData5: return QStringLiteral("process data type 5");
-    case Service::ScopeRecord: return QStringLiteral("scope record");
-    case Service::CheckDefault: return QStringLiteral("default (set mask)");
-    case Service::CheckDefaultStandard: return QStringLiteral("default (standard set)");
-    case Service::ProcessDataDuplex1: return QStringLiteral("duplex process data 2x32");
-    case Service::ProcessDataDuplex2: return QStringLiteral("duplex process data 4x16");
-    case Service::ProcessDataDuplex3: return QStringLiteral("duplex process data + parameter");
-    case Service::ProcessDataDuplex4: return QStringLiteral("duplex process data type 4");
-    case Service::ProcessDataDuplex5: return QStringLiteral("duplex process data type 5");
-    case Service::ProcessDataDuplex6: return QStringLiteral("duplex process data type 6");
+    case Service::Unspecified: return QCoreApplication::translate("Telegram", "unspecified");
+    case Service::StatusInterrogation: return QCoreApplication::translate("Telegram", "status interrogation");
+    case Service::Legacy: return QCoreApplication::translate("Telegram", "DIN66019 value");
+    case Service::ParameterValue: return QCoreApplication::translate("Telegram", "value (set mask)");
+    case Service::ParameterValueStandard: return QCoreApplication::translate("Telegram", "value (standard set)");
+    case Service::Limits: return QCoreApplication::translate("Telegram", "limits");
+    case Service::DefaultValue: return QCoreApplication::translate("Telegram", "default value");
+    case Service::Properties: return QCoreApplication::translate("Telegram", "properties");
+    case Service::DisplayScaling: return QCoreApplication::translate("Telegram", "display scaling");
+    case Service::ParameterName: return QCoreApplication::translate("Telegram", "parameter name");
+    case Service::PlaintextIndices: return QCoreApplication::translate("Telegram", "plaintext indices");
+    case Service::DisplayPlaintext: return QCoreApplication::translate("Telegram", "display plaintext");
+    case Service::CombivisPlaintext: return QCoreApplication::translate("Telegram", "plaintext");
+    case Service::GroupProperties: return QCoreApplication::translate("Telegram", "group properties");
+    case Service::GroupName: return QCoreApplication::translate("Telegram", "group name");
+    case Service::PlaintextDefinition: return QCoreApplication::translate("Telegram", "plaintext definition");
+    case Service::Fieldbus: return QCoreApplication::translate("Telegram", "field-bus function");
+    case Service::SubindexValue: return QCoreApplication::translate("Telegram", "value (subindex)");
+    case Service::ProcessData1: return QCoreApplication::translate("Telegram", "process data 2x32");
+    case Service::ProcessData2: return QCoreApplication::translate("Telegram", "process data 4x16");
+    case Service::Scope: return QCoreApplication::translate("Telegram", "scope");
+    case Service::ProcessData4: return QCoreApplication::translate("Telegram", "process data type 4");
+    case Service::ProcessData5: return QCoreApplication::translate("Telegram", "process data type 5");
+    case Service::ScopeRecord: return QCoreApplication::translate("Telegram", "scope record");
+    case Service::CheckDefault: return QCoreApplication::translate("Telegram", "default (set mask)");
+    case Service::CheckDefaultStandard: return QCoreApplication::translate("Telegram", "default (standard set)");
+    case Service::ProcessDataDuplex1: return QCoreApplication::translate("Telegram", "duplex process data 2x32");
+    case Service::ProcessDataDuplex2: return QCoreApplication::translate("Telegram", "duplex process data 4x16");
+    case Service::ProcessDataDuplex3: return QCoreApplication::translate("Telegram", "duplex process data + parameter");
+    case Service::ProcessDataDuplex4: return QCoreApplication::translate("Telegram", "duplex process data type 4");
+    case Service::ProcessDataDuplex5: return QCoreApplication::translate("Telegram", "duplex process data type 5");
+    case Service::ProcessDataDuplex6: return QCoreApplication::translate("Telegram", "duplex process data type 6");
     }
-    return QStringLiteral("service %1").arg(int(service));
+    return QCoreApplication::translate("Telegram", "service %1").arg(int(service));
 }
 
 namespace {

@@ -252,6 +252,7 @@ struct Telegram {
     Telegram response(Ack ack = Ack::Ok) const;
 };
 
+// The service's name in the installed language, e.g. "limits", "value (set mask)".
 QString serviceName(Service service);
 // A one-line decoded meaning, e.g. "read value 0203h set mask 01h -> 1234 OK", for logs.
 QString describe(const Telegram &telegram);

@@ -19,3 +19,6 @@ drivedesk_add_test(NAME tst_metadatacache LABELS unit
 drivedesk_add_test(NAME tst_parameterformat LABELS unit
     SOURCES parameters/tst_parameterformat.cpp parameters/EditorSampleDrive.h
     LIBS drivedesk_parameters)
+# How telegrams read for a user (the telegram monitor's meanings).
+drivedesk_add_test(NAME tst_telegramtext LABELS unit
+    SOURCES parameters/tst_telegramtext.cpp LIBS drivedesk_parameters)
