@@ -72,9 +72,17 @@ void ClientWorker::onAnswer(const Telegram &answer)
         }
         return;
     }
-    record(TrafficRecord::Kind::Received, m_codec->encode(answer), describe(answer));
-
     PendingRequest *request = awaitingAnswer(answer.operatorInvoke);
+    const QString mismatch
+        = request ? replyMismatch(m_settings.protocol, request->wire, answer) : QString();
+    // The monitor shows an answer with the request it answers, named as that request names it.
+    if (request && mismatch.isEmpty()) {
+        const Telegram completed = completeAnswer(request->wire, answer);
+        record(TrafficRecord::Kind::Received, m_codec->encode(answer), describe(completed),
+               &completed, &request->wire);
+    } else {
+        record(TrafficRecord::Kind::Received, m_codec->encode(answer), describe(answer), &answer);
+    }
     if (!request) {
         record(TrafficRecord::Kind::Error, {},
                tr("the answer with invoke id %1 belongs to no open request, ignored")
@@ -88,7 +96,6 @@ void ClientWorker::onAnswer(const Telegram &answer)
                              && answer.access == Access::Read && answer.ack != Ack::Ok;
     if (isDin() && (endsWithEot || (answer.ack != Ack::Ok && !request->wire.isWrite())))
         m_selectedDrive = -1;
-    const QString mismatch = replyMismatch(m_settings.protocol, request->wire, answer);
     if (!mismatch.isEmpty()) {
         record(TrafficRecord::Kind::Error, {},
                tr("the answer does not match its request (%1), not accepted").arg(mismatch));
@@ -195,6 +202,7 @@ void ClientWorker::onDeadline()
             continue;
         }
         ++request.timeouts;
+        recordTimeout(request);
         if (isDin()) {
             m_selectedDrive = -1; // the drive may have dropped it, or another took the line
             retryOrGiveUp(request);
@@ -240,7 +248,7 @@ void ClientWorker::retryOrGiveUp(PendingRequest &request)
 void ClientWorker::answerInverterRequest(const Telegram &request)
 {
     record(TrafficRecord::Kind::Received, m_codec->encode(request),
-           tr("inverter request: %1").arg(describe(request)));
+           tr("inverter request: %1").arg(describe(request)), &request);
     const Telegram answer = request.response(Ack::ServiceNotAvailable);
     QString error;
     const QByteArray bytes = m_codec->encode(answer, &error);
@@ -249,7 +257,7 @@ void ClientWorker::answerInverterRequest(const Telegram &request)
                tr("cannot answer the inverter's request: %1").arg(error));
         return;
     }
-    record(TrafficRecord::Kind::Sent, bytes, describe(answer));
+    record(TrafficRecord::Kind::Sent, bytes, describe(answer), &answer, &request);
     m_link->send(bytes);
 }
 

@@ -324,7 +324,7 @@ void ClientWorker::transmit(PendingRequest &request)
     QString meaning = describe(request.wire);
     if (request.wire.driveAddress >= 0)
         meaning = tr("to drive %1: %2").arg(request.wire.driveAddress).arg(meaning);
-    record(TrafficRecord::Kind::Sent, bytes, meaning);
+    record(TrafficRecord::Kind::Sent, bytes, meaning, &request.wire);
     m_link->send(bytes);
 
     if (!expectsAnswer(request)) {
@@ -378,14 +378,34 @@ void ClientWorker::requeue(Request request)
     m_queue.insert(later, std::move(request));
 }
 
-void ClientWorker::record(TrafficRecord::Kind kind, const QByteArray &bytes, const QString &meaning)
+void ClientWorker::record(TrafficRecord::Kind kind, const QByteArray &bytes, const QString &meaning,
+                          const Telegram *telegram, const Telegram *request)
 {
     TrafficRecord entry;
     entry.kind = kind;
     entry.msecsSinceEpoch = QDateTime::currentMSecsSinceEpoch();
     entry.bytes = bytes;
     entry.meaning = meaning;
+    if (telegram)
+        entry.telegram = *telegram;
+    if (request)
+        entry.request = *request;
     emit traffic(entry);
+}
+
+void ClientWorker::recordTimeout(const PendingRequest &request)
+{
+    const bool again = !request.completed() && request.attempts < request.maxAttempts;
+    const QString note
+        = again ? tr("no answer within %1 ms (attempt %2 of %3), asking again")
+                      .arg(request.timeoutMs)
+                      .arg(request.attempts)
+                      .arg(request.maxAttempts)
+                : tr("no answer within %1 ms (attempt %2 of %3), given up")
+                      .arg(request.timeoutMs)
+                      .arg(request.attempts)
+                      .arg(request.maxAttempts);
+    record(TrafficRecord::Kind::Error, {}, note, nullptr, &request.wire);
 }
 
 void OwnedSink::submit(const Telegram &request, std::function<void(const Reply &)> done)

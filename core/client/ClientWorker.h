@@ -111,7 +111,10 @@ private:
     bool lineIsQuiet() const;
     // Puts a request back into the queue in the order it was submitted.
     void requeue(Request request);
-    void record(TrafficRecord::Kind kind, const QByteArray &bytes, const QString &meaning);
+    void record(TrafficRecord::Kind kind, const QByteArray &bytes, const QString &meaning,
+                const Telegram *telegram = nullptr, const Telegram *request = nullptr);
+    // An attempt that got no answer in time, and whether it is asked again.
+    void recordTimeout(const PendingRequest &request);
     bool isDin() const { return m_settings.protocol != Protocol::Hsp5; }
 
     const ConnectionSettings m_settings;

@@ -10,6 +10,7 @@
 #include <QObject>
 
 #include <atomic>
+#include <optional>
 #include <memory>
 
 class QThread;
@@ -47,7 +48,13 @@ struct TrafficRecord {
     Kind kind = Kind::Sent;
     qint64 msecsSinceEpoch = 0;
     QByteArray bytes;
-    QString meaning; // describe(telegram) or the decode error
+    QString meaning; // describe(telegram) for logs, or the client's note on an error
+    // The telegram the bytes hold, where they hold one. An answer the client matched to its
+    // request is completed with the request's fields (completeAnswer()): address, set.
+    std::optional<Telegram> telegram;
+    // Received: the request (as sent) the answer answers; empty where it answers none.
+    // Error: the request the note is about, e.g. the one that got no answer in time.
+    std::optional<Telegram> request;
 };
 
 // The only way the rest of DriveDesk talks to a drive. The facade lives in the caller's
