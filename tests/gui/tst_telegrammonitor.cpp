@@ -2,6 +2,7 @@
 #include "monitor/TelegramMonitor.h"
 #include "monitor/TrafficFilterModel.h"
 #include "monitor/TrafficModel.h"
+#include "parameters/DriveDescription.h"
 
 #include "client/DriveClient.h"
 
@@ -12,11 +13,13 @@
 #include <QFile>
 #include <QIcon>
 #include <QRegularExpression>
+#include <QScopeGuard>
 #include <QScrollBar>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTranslator>
 #include <QTreeView>
 
 #include <memory>
@@ -28,6 +31,7 @@ namespace {
 constexpr int kWaitMs = 15000;
 constexpr quint16 kMaxSpeedForward = 0x030B; // op.11 of the simulated F5, 8 sets
 constexpr quint16 kMotorVoltage = 0x0604; // dr.04 of the simulated F5, 8 sets
+constexpr quint16 kActualLoad = 0x020D; // ru.13 of the simulated F5, "Actual load" in %
 
 ConnectionSettings simulated(Protocol protocol, SimulationOptions simulation = {})
 {
@@ -77,6 +81,28 @@ QList<int> rowsOf(const QAbstractItemModel &model, const QString &direction)
     }
     return rows;
 }
+
+// The meanings of the rows whose direction column reads `direction`.
+QStringList meaningsOf(const QAbstractItemModel &model, const QString &direction)
+{
+    QStringList meanings;
+    for (int row : rowsOf(model, direction))
+        meanings << cell(model, row, TrafficModel::MeaningColumn);
+    return meanings;
+}
+
+// Every text through the translator comes out marked: what the monitor shows untranslated
+// is what a catalogue could never reach.
+class MarkingTranslator : public QTranslator
+{
+public:
+    static constexpr QChar kMark = QChar(0x00A4);
+    bool isEmpty() const override { return false; }
+    QString translate(const char *, const char *source, const char *, int) const override
+    {
+        return kMark + QString::fromUtf8(source);
+    }
+};
 
 } // namespace
 
@@ -367,6 +393,159 @@ private slots:
         const QModelIndex newest = view->model()->index(view->model()->rowCount() - 1, 0);
         QCOMPARE(newest.data(TrafficModel::TimestampRole).toLongLong(), 689);
         QVERIFY(view->viewport()->rect().contains(view->visualRect(newest)));
+    }
+
+    // Each answer reads as the answer to its request: the parameter by id and name, the value
+    // as the drive shows it, the sets as a list. Before a scan, the id comes from the address.
+    void answersReadAsTheAnswersToTheirRequests_data()
+    {
+        QTest::addColumn<QString>("protocol");
+        QTest::newRow("hsp5") << QStringLiteral("hsp5");
+        QTest::newRow("din66019ii") << QStringLiteral("din66019ii");
+    }
+    void answersReadAsTheAnswersToTheirRequests()
+    {
+        QFETCH(QString, protocol);
+        DriveClient client(simulated(*protocolFromName(protocol)), everyLink());
+        m_monitor->attach(&client);
+        QVERIFY(connectClient(client));
+        const QAbstractItemModel &shown = *m_monitor->filterModel();
+
+        // No description yet: ids from the address, raw values, never a made-up 0000h.
+        QVERIFY(finished(client.readValueStandard(kActualLoad, 0)));
+        QTRY_COMPARE(meaningsOf(shown, QStringLiteral("← drive")).size(), 1);
+        QStringList answers = meaningsOf(shown, QStringLiteral("← drive"));
+        QVERIFY2(answers.first().startsWith(QStringLiteral("020Dh: ")), qPrintable(answers.first()));
+        QStringList requests = meaningsOf(shown, QStringLiteral("→ drive"));
+        QCOMPARE(requests.size(), 1);
+        // DIN66019II: "to drive 1: " first where the request selects the drive.
+        QVERIFY2(requests.first().endsWith(QStringLiteral("read 020Dh")), qPrintable(requests.first()));
+
+        ScanOptions options;
+        options.groupPages = { 0x02, 0x03 }; // ru, op
+        options.values = false;
+        QFuture<DriveDescription> scan = client.scan(options);
+        QVERIFY(QTest::qWaitFor([&] { return scan.isFinished(); }, kWaitMs));
+        const DriveDescription drive = scan.result();
+        QVERIFY(drive.find(kActualLoad));
+        m_monitor->clear();
+        m_monitor->setDrive(std::make_shared<const DriveDescription>(drive));
+
+        const QFuture<Reply> load = client.readValueStandard(kActualLoad, 0);
+        QVERIFY(finished(load));
+        const Reply reply = load.result();
+        QVERIFY(reply.response.as<ParameterValue>());
+        const qint32 raw = reply.response.as<ParameterValue>()->value;
+        QTRY_COMPARE(meaningsOf(shown, QStringLiteral("← drive")).size(), 1);
+        answers = meaningsOf(shown, QStringLiteral("← drive"));
+        requests = meaningsOf(shown, QStringLiteral("→ drive"));
+        QCOMPARE(requests.size(), 1);
+        QVERIFY2(requests.first().endsWith(QStringLiteral("read ru.13 Actual load")),
+                 qPrintable(requests.first()));
+        QCOMPARE(answers, QStringList { QStringLiteral("ru.13 Actual load: %1 %").arg(raw) });
+
+        // A write to set 0 is set 0 (mask 01h), its answer the value written; sets as a list.
+        m_monitor->clear();
+        QVERIFY(finished(client.writeValue(kMaxSpeedForward, 1500, 0x01)));
+        QVERIFY(finished(client.readValue(kMaxSpeedForward, 0x24)));
+        QTRY_COMPARE(meaningsOf(shown, QStringLiteral("← drive")).size(), 2);
+        requests = meaningsOf(shown, QStringLiteral("→ drive"));
+        answers = meaningsOf(shown, QStringLiteral("← drive"));
+        QCOMPARE(requests.size(), 2);
+        QVERIFY2(requests[0].contains(QStringLiteral("write op.11 "))
+                     && requests[0].endsWith(QStringLiteral(" (set 0)")),
+                 qPrintable(requests[0]));
+        QVERIFY2(answers[0].startsWith(QStringLiteral("written: op.11 "))
+                     && answers[0].endsWith(QStringLiteral(" (set 0)")),
+                 qPrintable(answers[0]));
+        QVERIFY2(requests[1].endsWith(QStringLiteral(" (sets 2, 5)")), qPrintable(requests[1]));
+        QVERIFY2(answers[1].startsWith(QStringLiteral("op.11 "))
+                     && answers[1].endsWith(QStringLiteral(" (sets 2, 5)")),
+                 qPrintable(answers[1]));
+        QVERIFY(rowsOf(shown, QStringLiteral("error")).isEmpty());
+
+        // The filter finds what the rows say.
+        m_monitor->setFilterText(QStringLiteral("actual load"));
+        QCOMPARE(shown.rowCount(), 0);
+        m_monitor->setFilterText(QStringLiteral("op.11"));
+        QCOMPARE(shown.rowCount(), 4);
+    }
+
+    // A drive that stops answering: every attempt that timed out is an error row, naming the
+    // request it was, so "Errors only" shows them.
+    void aRequestWithoutAnswerShowsUnderErrorsOnly_data()
+    {
+        QTest::addColumn<QString>("protocol");
+        QTest::newRow("hsp5") << QStringLiteral("hsp5");
+        QTest::newRow("din66019ii") << QStringLiteral("din66019ii");
+    }
+    void aRequestWithoutAnswerShowsUnderErrorsOnly()
+    {
+        QFETCH(QString, protocol);
+        SimulationOptions silent;
+        silent.dropByteRate = 1.0;
+        ClientOptions options;
+        options.timeoutMs = 20;
+        options.retries = 1;
+        DriveClient client(simulated(*protocolFromName(protocol), silent), everyLink(), options);
+        m_monitor->attach(&client);
+        QVERIFY(connectClient(client));
+        const QFuture<Reply> read = client.readValue(kMaxSpeedForward, 0x01);
+        QVERIFY(finished(read));
+        QCOMPARE(read.result().status, Reply::Status::Timeout);
+        QTRY_COMPARE(model().receivedCount(), model().rowCount());
+        QTest::qWait(2 * TrafficModel::kBatchIntervalMs); // the last records on their way
+        model().flush();
+
+        m_monitor->setErrorsOnly(true);
+        const QAbstractItemModel &shown = *m_monitor->filterModel();
+        QStringList timeouts;
+        for (const QString &meaning : meaningsOf(shown, QStringLiteral("error"))) {
+            if (meaning.contains(QStringLiteral("no answer")))
+                timeouts << meaning;
+        }
+        QCOMPARE(timeouts.size(), 2);
+        QVERIFY2(timeouts[0].contains(QStringLiteral("attempt 1 of 2"))
+                     && timeouts[0].contains(QStringLiteral("asking again"))
+                     && timeouts[0].endsWith(QStringLiteral("read 030Bh (set 0)")),
+                 qPrintable(timeouts[0]));
+        QVERIFY2(timeouts[1].contains(QStringLiteral("attempt 2 of 2"))
+                     && timeouts[1].contains(QStringLiteral("given up")),
+                 qPrintable(timeouts[1]));
+    }
+
+    // Every text of the meaning column goes through tr(): requests, answers, sets, timeouts.
+    void theMeaningsAreTranslatable()
+    {
+        MarkingTranslator marking;
+        QVERIFY(QCoreApplication::installTranslator(&marking));
+        const auto restore = qScopeGuard([&] { QCoreApplication::removeTranslator(&marking); });
+        SimulationOptions silent;
+        silent.dropByteRate = 1.0;
+        ClientOptions options;
+        options.timeoutMs = 20;
+        options.retries = 0;
+        DriveClient client(simulated(Protocol::Hsp5), everyLink());
+        DriveClient silentClient(simulated(Protocol::Hsp5, silent), everyLink(), options);
+        QVERIFY(connectClient(client));
+        QVERIFY(connectClient(silentClient));
+        m_monitor->attach(&client);
+        QVERIFY(finished(client.writeValue(kMaxSpeedForward, 1500, 0x01)));
+        QTRY_COMPARE(model().rowCount(), 2);
+        m_monitor->attach(&silentClient);
+        QVERIFY(finished(silentClient.readValueStandard(kActualLoad, 0)));
+        QTest::qWait(2 * TrafficModel::kBatchIntervalMs); // the last records on their way
+        model().flush();
+
+        const QAbstractItemModel &shown = *m_monitor->filterModel();
+        QStringList meanings = meaningsOf(shown, TrafficFormat::direction(TrafficRecord::Kind::Sent))
+            + meaningsOf(shown, TrafficFormat::direction(TrafficRecord::Kind::Received))
+            + meaningsOf(shown, TrafficFormat::direction(TrafficRecord::Kind::Error));
+        QVERIFY(meanings.size() >= 4);
+        for (const QString &meaning : std::as_const(meanings))
+            QVERIFY2(meaning.startsWith(MarkingTranslator::kMark), qPrintable(meaning));
+        QVERIFY2(meanings[0].endsWith(MarkingTranslator::kMark + QStringLiteral("set 0)")),
+                 qPrintable(meanings[0]));
     }
 
     void saveWritesTheRowsShown()

@@ -33,6 +33,16 @@ MonitorFeature::MonitorFeature(WindowFrame &frame, QObject *parent)
 void MonitorFeature::attach(DriveSession *session)
 {
     m_monitor->attach(session ? session->client() : nullptr);
+    m_monitor->setDrive(nullptr);
+    disconnect(m_describedConnection);
+    if (!session)
+        return;
+    // Each scan names the parameters of the telegrams from then on, and those listed already.
+    m_describedConnection = connect(session, &DriveSession::described, m_monitor,
+                                    [this](const DriveDescription &drive) {
+                                        m_monitor->setDrive(
+                                            std::make_shared<const DriveDescription>(drive));
+                                    });
 }
 
 } // namespace DriveDesk

@@ -17,6 +17,7 @@ public:
 
 private:
     TelegramMonitor *m_monitor = nullptr;
+    QMetaObject::Connection m_describedConnection;
 };
 
 } // namespace DriveDesk

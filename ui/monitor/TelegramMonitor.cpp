@@ -186,6 +186,11 @@ void TelegramMonitor::attach(DriveClient *client)
     m_trafficConnection = connect(client, &DriveClient::traffic, m_model, &TrafficModel::append);
 }
 
+void TelegramMonitor::setDrive(std::shared_ptr<const DriveDescription> drive)
+{
+    m_model->setDrive(std::move(drive));
+}
+
 void TelegramMonitor::setPaused(bool paused)
 {
     m_model->setPaused(paused);
@@ -231,8 +236,11 @@ bool TelegramMonitor::saveTo(const QString &path, QString *error)
 {
     QList<TrafficEntry> entries;
     entries.reserve(m_filter->rowCount());
-    for (int row = 0; row < m_filter->rowCount(); ++row)
-        entries << m_model->entry(m_filter->mapToSource(m_filter->index(row, 0)).row());
+    for (int row = 0; row < m_filter->rowCount(); ++row) {
+        const int source = m_filter->mapToSource(m_filter->index(row, 0)).row();
+        m_model->meaning(source);
+        entries << m_model->entry(source);
+    }
     QString reason;
     if (!TrafficFile::save(path, entries, &reason)) {
         showNotice(reason, true);
@@ -288,7 +296,9 @@ void TelegramMonitor::copySelection() const
     QStringList lines;
     lines.reserve(rows.size());
     for (const QModelIndex &row : std::as_const(rows)) {
-        const TrafficEntry &entry = m_model->entry(m_filter->mapToSource(row).row());
+        const int source = m_filter->mapToSource(row).row();
+        m_model->meaning(source);
+        const TrafficEntry &entry = m_model->entry(source);
         QStringList fields = TrafficFormat::fields(entry, TrafficFormat::Clock::TimeOfDay);
         if (!withCharacters)
             fields.removeAt(TrafficFormat::Characters);

@@ -1,6 +1,10 @@
 #pragma once
 
+#include "parameters/DriveDescription.h"
+
 #include <QDockWidget>
+
+#include <memory>
 
 class QAction;
 class QCheckBox;
@@ -26,6 +30,8 @@ public:
 
     // Connects to DriveClient::traffic (nullptr detaches). What was shown stays.
     void attach(DriveClient *client);
+    // The drive the telegrams name parameters of (null: none known, e.g. before a scan).
+    void setDrive(std::shared_ptr<const DriveDescription> drive);
 
     TrafficModel *model() const { return m_model; }
     TrafficFilterModel *filterModel() const { return m_filter; }

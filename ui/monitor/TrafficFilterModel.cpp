@@ -68,7 +68,7 @@ bool TrafficFilterModel::filterAcceptsRow(int sourceRow, const QModelIndex &sour
         return false;
     if (m_needle.isEmpty())
         return true;
-    if (entry.record.meaning.contains(m_needle, Qt::CaseInsensitive))
+    if (m_traffic->meaning(sourceRow).contains(m_needle, Qt::CaseInsensitive))
         return true;
     if (!m_hexNeedle.isEmpty() && bytesContain(entry.record.bytes, m_hexNeedle))
         return true;

@@ -1,5 +1,7 @@
 #include "TrafficFormat.h"
 
+#include "parameters/TelegramText.h"
+
 #include <QDateTime>
 
 #include <array>
@@ -95,12 +97,31 @@ QString TrafficFormat::characters(const TrafficEntry &entry)
     return text;
 }
 
+QString TrafficFormat::meaning(const TrafficEntry &entry, const DriveDescription *drive)
+{
+    const TrafficRecord &record = entry.record;
+    const Telegram *request = record.request ? &*record.request : nullptr;
+    if (record.telegram) {
+        const Telegram &telegram = *record.telegram;
+        const QString text = TelegramText::describe(telegram, drive, request);
+        // A request that arrives is the drive's own (HSP5 multi-master).
+        if (record.kind == TrafficRecord::Kind::Received && !telegram.isResponse())
+            return tr("inverter request: %1").arg(text);
+        return text;
+    }
+    if (request) {
+        return tr("%1: %2").arg(record.meaning, TelegramText::describe(*request, drive));
+    }
+    return record.meaning;
+}
+
 QStringList TrafficFormat::fields(const TrafficEntry &entry, Clock clock)
 {
     QStringList result;
     result.reserve(FieldCount);
     result << time(entry.record.msecsSinceEpoch, clock) << direction(entry.record.kind)
-           << hex(entry.record.bytes) << characters(entry) << flattened(entry.record.meaning);
+           << hex(entry.record.bytes) << characters(entry)
+           << flattened(entry.described ? entry.meaning : meaning(entry, nullptr));
     return result;
 }
 

@@ -13,6 +13,10 @@ struct TrafficEntry
 {
     TrafficRecord record;
     Protocol protocol = Protocol::Hsp5;
+    // What the meaning column shows, once TrafficModel made it (on first use: a row never shown
+    // costs nothing).
+    QString meaning;
+    bool described = false;
 };
 
 // How a telegram reads in the monitor, in its copies and in saved files. The view, the
@@ -37,7 +41,12 @@ public:
     // Whether the protocol's telegrams are characters worth showing as text.
     static bool isAscii(Protocol protocol);
 
-    // Every field of an entry, in Field order; line breaks in the meaning become spaces.
+    // What a telegram means, in the installed language: a request as what it asks for, an
+    // answer as the answer to its request ("ru.13 Actual load: 57 %"), an error as the
+    // client's note, and the request it is about. `drive` names the parameters; it may be null.
+    static QString meaning(const TrafficEntry &entry, const DriveDescription *drive);
+    // Every field of an entry, in Field order; line breaks in the meaning become spaces. The
+    // meaning is the entry's own where the model made it, otherwise made without a drive.
     static QStringList fields(const TrafficEntry &entry, Clock clock);
     // The visible fields joined by tabs: one line of a copy or a text file.
     static QString tabSeparated(const QStringList &fields);

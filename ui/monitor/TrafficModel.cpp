@@ -51,9 +51,30 @@ void TrafficModel::setCapacity(int capacity)
     emit countsChanged();
 }
 
+void TrafficModel::setDrive(std::shared_ptr<const DriveDescription> drive)
+{
+    m_drive = std::move(drive);
+    for (TrafficEntry &row : m_rows) {
+        row.described = false;
+        row.meaning.clear();
+    }
+    if (!m_rows.empty())
+        emit dataChanged(index(0, MeaningColumn), index(rowCount() - 1, MeaningColumn));
+}
+
+const QString &TrafficModel::meaning(int row) const
+{
+    TrafficEntry &item = m_rows[std::size_t(row)];
+    if (!item.described) {
+        item.meaning = TrafficFormat::meaning(item, m_drive.get());
+        item.described = true;
+    }
+    return item.meaning;
+}
+
 void TrafficModel::append(const TrafficRecord &record)
 {
-    m_waiting.push_back({ record, m_protocol });
+    m_waiting.push_back({ record, m_protocol, {}, false });
     ++m_received;
     // More waiting than the rows can hold: the oldest would be pushed out on arrival anyway.
     if (m_waiting.size() > std::size_t(m_capacity)) {
@@ -157,10 +178,12 @@ QVariant TrafficModel::data(const QModelIndex &index, int role) const
         case CharactersColumn:
             return TrafficFormat::characters(item);
         case MeaningColumn:
-            return record.meaning;
+            return meaning(index.row());
         }
         break;
     case Qt::ToolTipRole:
+        if (index.column() == MeaningColumn)
+            meaning(index.row()); // made where it was not yet
         return toolTip(item, index.column());
     case Qt::BackgroundRole:
         if (isError(item))
@@ -204,8 +227,9 @@ QVariant TrafficModel::toolTip(const TrafficEntry &entry, int column) const
         lines << tr("%n byte(s)", nullptr, int(record.bytes.size()));
         return lines.join(QLatin1Char('\n'));
     }
-    case MeaningColumn:
-        return record.meaning.isEmpty() ? QVariant() : QVariant(record.meaning);
+    case MeaningColumn: {
+        return entry.meaning.isEmpty() ? QVariant() : QVariant(entry.meaning);
+    }
     default:
         break;
     }

@@ -6,6 +6,7 @@
 #include <QTimer>
 
 #include <deque>
+#include <memory>
 
 namespace DriveDesk {
 
@@ -54,7 +55,14 @@ public:
     // Forgets every row, every waiting record and the counts.
     void clear();
 
+    // The drive whose parameters the meanings name (by id, name and value as shown); null
+    // before a scan: ids from the address and raw values. Every meaning is made again.
+    void setDrive(std::shared_ptr<const DriveDescription> drive);
+    const DriveDescription *drive() const { return m_drive.get(); }
+
     const TrafficEntry &entry(int row) const { return m_rows[std::size_t(row)]; }
+    // What the meaning column shows, made on the row's first use and kept.
+    const QString &meaning(int row) const;
     // Records waiting to be shown: arrived while paused, or since the last batch.
     int waitingCount() const { return int(m_waiting.size()); }
     // Records dropped because more arrived than the capacity holds, since the last clear.
@@ -80,7 +88,9 @@ private:
     void dropOldestRows(std::size_t count);
     QVariant toolTip(const TrafficEntry &entry, int column) const;
 
-    std::deque<TrafficEntry> m_rows;
+    // Mutable: a row's meaning is made when it is first needed (meaning()).
+    mutable std::deque<TrafficEntry> m_rows;
+    std::shared_ptr<const DriveDescription> m_drive;
     std::deque<TrafficEntry> m_waiting;
     QTimer m_batchTimer;
     int m_capacity = kDefaultCapacity;
