@@ -548,6 +548,40 @@ private slots:
                  qPrintable(meanings[0]));
     }
 
+    // Opened while telegrams stream in, the list follows the newest; scrolled up, it stays.
+    void openedWhileTelegramsArriveItFollowsTheNewest()
+    {
+        feed(300); // the dock is closed
+        m_monitor->resize(700, 300);
+        m_monitor->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_monitor.get()));
+        QScrollBar *bar = m_monitor->view()->verticalScrollBar();
+        QTRY_VERIFY(bar->maximum() > 0);
+        QTRY_COMPARE(bar->value(), bar->maximum());
+        feed(50, 300);
+        QTRY_COMPARE(bar->value(), bar->maximum());
+        QTreeView *view = m_monitor->view();
+        const QModelIndex newest = view->model()->index(view->model()->rowCount() - 1, 0);
+        QVERIFY(view->viewport()->rect().contains(view->visualRect(newest)));
+
+        // Closed and opened again after more arrived: still the newest.
+        m_monitor->hide();
+        feed(100, 350);
+        m_monitor->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_monitor.get()));
+        QTRY_COMPARE(bar->value(), bar->maximum());
+        feed(10, 450);
+        QTRY_COMPARE(bar->value(), bar->maximum());
+
+        // Scrolled up by the user, it stays where it is.
+        bar->triggerAction(QAbstractSlider::SliderPageStepSub);
+        const int kept = bar->value();
+        QVERIFY(kept < bar->maximum());
+        feed(10, 460);
+        QTest::qWait(2 * TrafficModel::kBatchIntervalMs);
+        QCOMPARE(bar->value(), kept);
+    }
+
     void saveWritesTheRowsShown()
     {
         model().append(record(TrafficRecord::Kind::Sent, 1000, QByteArray::fromHex("0102"),

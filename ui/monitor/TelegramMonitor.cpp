@@ -110,10 +110,15 @@ TelegramMonitor::TelegramMonitor(QWidget *parent)
     layout->addWidget(m_notice);
     setWidget(content);
 
-    connect(m_model, &TrafficModel::batchAboutToBeShown, this, [this] {
-        m_followNewest = isAtBottom();
-        m_inBatch = true;
+    // Whether the list follows the newest telegram is the user's choice, made by scrolling:
+    // away from the bottom it stays, back at the bottom it follows again. Only a visible list
+    // has a position to judge; a closed dock keeps the choice for when it opens.
+    connect(m_view->verticalScrollBar(), &QScrollBar::valueChanged, this, [this] {
+        if (m_view->isVisible() && !m_inBatch)
+            m_followNewest = isAtBottom();
     });
+    m_view->viewport()->installEventFilter(this);
+    connect(m_model, &TrafficModel::batchAboutToBeShown, this, [this] { m_inBatch = true; });
     connect(m_model, &TrafficModel::batchShown, this, [this] {
         m_inBatch = false;
         if (m_followNewest)
@@ -319,6 +324,12 @@ QString TelegramMonitor::noticeText() const
 
 bool TelegramMonitor::eventFilter(QObject *watched, QEvent *event)
 {
+    // Opened, or resized, while following: the newest telegram is what is in view.
+    if (watched == m_view->viewport()
+        && (event->type() == QEvent::Show || event->type() == QEvent::Resize)
+        && m_followNewest) {
+        m_view->scrollToBottom();
+    }
     // Ctrl+C in the list copies whole rows, even where the main window has its own Copy.
     if (watched == m_view
         && (event->type() == QEvent::ShortcutOverride || event->type() == QEvent::KeyPress)) {
