@@ -123,10 +123,10 @@ QString requestText(const Telegram &t, const Namer &names)
     const bool write = t.isWrite();
     if (const auto *d = t.as<ParameterValue>()) {
         const QString note = setNote(t.service, d->set);
-        return write ? TelegramText::tr("write %1 = %2%3")
-                           .arg(names.parameterName(d->address), names.value(d->address, d->value),
-                                note)
-                     : TelegramText::tr("read %1%2").arg(names.parameterName(d->address), note);
+        return write
+            ? TelegramText::tr("write %1 = %2%3")
+                  .arg(names.parameterName(d->address), names.value(d->address, d->value), note)
+            : TelegramText::tr("read %1%2").arg(names.parameterName(d->address), note);
     }
     if (const auto *d = t.as<DefaultCheckData>()) {
         const QString note = setNote(t.service, d->set);
@@ -148,10 +148,8 @@ QString requestText(const Telegram &t, const Namer &names)
                 .arg(names.parameterName(d->address));
         if (const auto *d = t.as<NameData>()) {
             return t.service == Service::GroupName
-                       ? TelegramText::tr("read the name of group %1")
-                             .arg(names.groupName(d->address))
-                       : TelegramText::tr("read the name of %1")
-                             .arg(names.parameterName(d->address));
+                ? TelegramText::tr("read the name of group %1").arg(names.groupName(d->address))
+                : TelegramText::tr("read the name of %1").arg(names.parameterName(d->address));
         }
         if (const auto *d = t.as<PlaintextIndicesData>())
             return TelegramText::tr("read the plaintext indices of %1")
@@ -220,10 +218,8 @@ QString answerText(const Telegram &t, const Namer &names)
     if (const auto *d = t.as<NameData>()) {
         const QString text = QString::fromLatin1(d->text);
         return t.service == Service::GroupName
-                   ? TelegramText::tr("name of group %1: \"%2\"")
-                         .arg(names.groupName(d->address), text)
-                   : TelegramText::tr("name of %1: \"%2\"")
-                         .arg(names.parameterName(d->address), text);
+            ? TelegramText::tr("name of group %1: \"%2\"").arg(names.groupName(d->address), text)
+            : TelegramText::tr("name of %1: \"%2\"").arg(names.parameterName(d->address), text);
     }
     if (const auto *d = t.as<PlaintextIndicesData>())
         return TelegramText::tr("plaintext indices of %1: display %2 (%3), COMBIVIS %4 (%5)")
@@ -279,9 +275,9 @@ QString TelegramText::describe(const Telegram &telegram, const DriveDescription 
             text = tr("to drive %1: %2").arg(telegram.driveAddress).arg(text);
     } else if (!request) {
         text = telegram.ack == Ack::Ok
-                   ? tr("answer to no open request: %1").arg(serviceName(telegram.service))
-                   : tr("answer to no open request: %1, %2")
-                         .arg(serviceName(telegram.service), ackText(telegram.ack));
+            ? tr("answer to no open request: %1").arg(serviceName(telegram.service))
+            : tr("answer to no open request: %1, %2")
+                  .arg(serviceName(telegram.service), ackText(telegram.ack));
     } else if (telegram.ack != Ack::Ok) {
         text = tr("%1 refused: %2").arg(requestText(*request, names), ackText(telegram.ack));
     } else {
