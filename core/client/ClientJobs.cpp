@@ -3,7 +3,6 @@
 #include "ClientWorker.h"
 
 #include "DriveScanner.h"
-#include "DriveSearch.h"
 
 #include <QFutureWatcher>
 #include <QPointer>
@@ -25,20 +24,6 @@ void ClientWorker::submitForFuture(const Telegram &request,
     });
     connect(watcher, &QFutureWatcherBase::canceled, this, [this, ticket] { cancelTicket(ticket); });
     watcher->setFuture(promise->future());
-}
-
-void ClientWorker::findDrives(int first, int last, quint16 probeAddress,
-                              std::shared_ptr<QPromise<QList<int>>> promise)
-{
-    if (promise->future().isCanceled()) {
-        promise->finish();
-        return;
-    }
-    auto *search = new DriveSearch(*this, first, last, probeAddress, promise);
-    auto *watcher = new QFutureWatcher<QList<int>>(search);
-    connect(watcher, &QFutureWatcherBase::canceled, search, &DriveSearch::cancel);
-    watcher->setFuture(promise->future());
-    search->start();
 }
 
 void ClientWorker::scan(const ScanOptions &options,

@@ -9,7 +9,7 @@ namespace DriveDesk {
 // drive's response time (and for a device server's network, over TCP).
 int answerTimeoutMs(const ConnectionSettings &settings, const ClientOptions &options);
 
-// The short wait of a findDrives() probe whose request and answer together take
+// The short wait of a probe (FindDrivesJob) whose request and answer together take
 // `exchangeCharacters` characters on the line; never longer than answerTimeoutMs().
 int probeTimeoutMs(const ConnectionSettings &settings, const ClientOptions &options,
                    int exchangeCharacters);

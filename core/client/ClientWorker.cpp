@@ -190,6 +190,25 @@ quint64 ClientWorker::submitRequest(const Telegram &request, RequestOptions opti
     return ticket;
 }
 
+quint64 ClientWorker::submitProbe(const Telegram &request, quint64 owner, Completion done)
+{
+    // The longest answer a probe may get (DIN66019II service 0: STX G IID 8 digits ETX BCC),
+    // on top of the request itself.
+    constexpr int kProbeAnswerCharacters = 13;
+    Telegram onTheWire = request; // as it will be sent, for its length
+    onTheWire.operatorInvoke = 1;
+    if (!isDin())
+        onTheWire.driveAddress = -1;
+    const int requestCharacters = int(m_codec->encode(onTheWire).size());
+    RequestOptions options;
+    options.owner = owner;
+    options.retries = 0;
+    options.timeoutMs = std::min(probeTimeoutMs(m_settings, m_options,
+                                                requestCharacters + kProbeAnswerCharacters),
+                                 m_answerTimeoutMs);
+    return submitRequest(request, options, std::move(done));
+}
+
 bool ClientWorker::prepare(PendingRequest &pending, Reply *rejection) const
 {
     rejection->status = Reply::Status::Unsupported;

@@ -46,8 +46,6 @@ public:
     // The facade's requests: the result goes to the promise; cancelling its future drops the
     // request from the queue, or has its answer ignored when it is already on the wire.
     void submitForFuture(const Telegram &request, std::shared_ptr<QPromise<Reply>> promise);
-    void findDrives(int first, int last, quint16 probeAddress,
-                    std::shared_ptr<QPromise<QList<int>>> promise);
     void scan(const ScanOptions &options, std::shared_ptr<QPromise<DriveDescription>> promise);
     // A job of many requests on a sink of its own, so that its cancel drops only its requests.
     void runJob(std::shared_ptr<RequestJobBase> job);
@@ -55,6 +53,8 @@ public:
     // For jobs in this thread. Returns the request's ticket; `done` may run before it returns
     // (a request that cannot be sent, or no connection).
     quint64 submitRequest(const Telegram &request, RequestOptions options, Completion done);
+    // A probe (RequestSink::probe) of `owner`: no retries, a wait as short as the line allows.
+    quint64 submitProbe(const Telegram &request, quint64 owner, Completion done);
     void cancelOwner(quint64 owner);
     quint64 newOwner() { return m_nextOwner++; }
 
@@ -156,6 +156,11 @@ public:
     {}
 
     void submit(const Telegram &request, std::function<void(const Reply &)> done) override;
+    void probe(const Telegram &request,
+               std::function<void(const Reply &reply, bool heard)> done) override
+    {
+        m_worker.submitProbe(request, m_owner, std::move(done));
+    }
     void cancelPending() override { m_worker.cancelOwner(m_owner); }
     bool supports(Service service, Access access) const override
     {

@@ -124,20 +124,6 @@ void DriveClient::start(std::shared_ptr<RequestJobBase> job)
         worker, [worker, job = std::move(job)] { worker->runJob(job); }, Qt::QueuedConnection);
 }
 
-QFuture<QList<int>> DriveClient::findDrives(int first, int last, quint16 probeAddress)
-{
-    auto promise = startedPromise<QList<int>>();
-    QFuture<QList<int>> future = promise->future();
-    ClientWorker *worker = m_worker;
-    QMetaObject::invokeMethod(
-        worker,
-        [worker, first, last, probeAddress, promise] {
-            worker->findDrives(first, last, probeAddress, promise);
-        },
-        Qt::QueuedConnection);
-    return future;
-}
-
 QFuture<DriveDescription> DriveClient::scan(ScanOptions options)
 {
     auto promise = startedPromise<DriveDescription>();

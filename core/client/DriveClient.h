@@ -89,8 +89,6 @@ public:
     QFuture<Reply> resetToDefault(quint16 address, quint8 setMask);      // service 32 write
     QFuture<Reply> readScope();                                          // service 18
 
-    // DIN66019II: which of the addresses answer (service 0 read of `probeAddress`).
-    QFuture<QList<int>> findDrives(int first = 0, int last = 239, quint16 probeAddress = 0x0000);
     // Discovers groups, parameters, metadata and values. Progress in 0..1000; cancellable.
     QFuture<DriveDescription> scan(ScanOptions options = {});
 

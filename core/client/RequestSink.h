@@ -21,6 +21,14 @@ public:
     // Queues a request; `done` runs once when it finished in any way (ok, refused, failed,
     // cancelled). The sink keeps at most as many in flight as the protocol allows.
     virtual void submit(const Telegram &request, std::function<void(const Reply &)> done) = 0;
+    // Queues a probe: does a drive answer at all? One attempt with a short wait (the time the
+    // request and a short answer take on the line); `heard` says that something came back, even
+    // a garbled answer. A sink without probes of its own sends an ordinary request.
+    virtual void probe(const Telegram &request,
+                       std::function<void(const Reply &reply, bool heard)> done)
+    {
+        submit(request, [done = std::move(done)](const Reply &reply) { done(reply, false); });
+    }
     // Cancels every request this sink still holds; their `done` run with Cancelled.
     virtual void cancelPending() = 0;
     // Whether the protocol, as this connection is set up, can carry the request at all. A job

@@ -1,6 +1,9 @@
 #include "ClientTestSupport.h"
 #include "Translations.h"
 
+#include "client/FindDrivesJob.h"
+
+#include <QFutureWatcher>
 #include <QTest>
 
 using namespace DriveDesk;
@@ -23,6 +26,14 @@ QList<int> selections(const QList<TrafficRecord> &records)
         if (record.kind == TrafficRecord::Kind::Sent && record.bytes.startsWith('\x04'))
             addresses.append(record.bytes.mid(1, 2).toInt(nullptr, 16));
     }
+    return addresses;
+}
+
+QList<int> addressesOf(const QFuture<FoundDrive> &search)
+{
+    QList<int> addresses;
+    for (int i = 0; i < search.resultCount(); ++i)
+        addresses.append(search.resultAt(i).address);
     return addresses;
 }
 
@@ -109,12 +120,61 @@ private slots:
     {
         Session s(simulated(Protocol::Din66019II, bus({1, 5, 17})));
         QVERIFY(s.connected());
-        QFuture<QList<int>> search = s.client->findDrives();
+        QFuture<FoundDrive> search
+            = s.client->run(std::make_shared<FindDrivesJob>(s.client->settings()));
         QVERIFY(waitFinished(search, 60000));
-        QCOMPARE(search.result(), (QList<int>{1, 5, 17}));
+        QCOMPARE(addressesOf(search), (QList<int>{1, 5, 17}));
         QCOMPARE(search.progressMaximum(), 240);
         QCOMPARE(search.progressValue(), 240);
         // The client keeps working afterwards.
+        QVERIFY(s.call(s.client->readValue(kMaxSpeedForward, 1)).ok());
+    }
+
+    void findDrivesReportsEachDriveAsItAnswers()
+    {
+        Session s(simulated(Protocol::Din66019II, bus({1, 5, 17})));
+        QVERIFY(s.connected());
+        auto job = std::make_shared<FindDrivesJob>(s.client->settings());
+        QFutureWatcher<FoundDrive> watcher;
+        int askedWhenFirstCame = -1;
+        connect(&watcher, &QFutureWatcherBase::resultReadyAt, this, [&](int index) {
+            if (index == 0)
+                askedWhenFirstCame = watcher.progressValue();
+        });
+        watcher.setFuture(s.client->run(job));
+        QTRY_VERIFY_WITH_TIMEOUT(askedWhenFirstCame >= 0, kWaitMs);
+        // Drive 1 came while 240 addresses were still to be asked, not with the end.
+        QVERIFY2(askedWhenFirstCame < 240, qPrintable(QString::number(askedWhenFirstCame)));
+        const FoundDrive first = watcher.future().resultAt(0);
+        QCOMPARE(first.address, 1);
+        // What the drive says about itself: its identification parameters, as it shows them.
+        QCOMPARE(first.inverterIdentifier, QStringLiteral("0F51h"));
+        QCOMPARE(first.softwareVersion, QStringLiteral("1.81"));
+        QVERIFY(!first.serialNumber.isEmpty());
+        QVERIFY2(first.identification().contains(QStringLiteral("software 1.81")),
+                 qPrintable(first.identification()));
+        watcher.cancel();
+        QVERIFY(waitFinished(watcher.future()));
+    }
+
+    void findDrivesStoppedKeepsTheDrivesFound()
+    {
+        Session s(simulated(Protocol::Din66019II, bus({1, 5, 17})));
+        QVERIFY(s.connected());
+        auto job = std::make_shared<FindDrivesJob>(s.client->settings());
+        QFutureWatcher<FoundDrive> watcher;
+        // Stop once drive 5 is reported: every drive found before stays reported.
+        connect(&watcher, &QFutureWatcherBase::resultReadyAt, this, [&](int index) {
+            if (watcher.future().resultAt(index).address == 5)
+                job->requestStop();
+        });
+        watcher.setFuture(s.client->run(job));
+        QVERIFY(waitFinished(watcher.future(), 60000));
+        QVERIFY(!watcher.future().isCanceled());
+        const QList<int> found = addressesOf(watcher.future());
+        QCOMPARE(found.mid(0, 2), (QList<int>{1, 5}));
+        QVERIFY2(watcher.future().progressValue() < 240,
+                 qPrintable(QString::number(watcher.future().progressValue())));
         QVERIFY(s.call(s.client->readValue(kMaxSpeedForward, 1)).ok());
     }
 
@@ -122,16 +182,20 @@ private slots:
     {
         Session s(simulated(Protocol::Din66019, bus({3})));
         QVERIFY(s.connected());
-        QFuture<QList<int>> search = s.client->findDrives(0, 7);
+        QFuture<FoundDrive> search
+            = s.client->run(std::make_shared<FindDrivesJob>(s.client->settings(), 0, 7));
         QVERIFY(waitFinished(search));
-        QCOMPARE(search.result(), QList<int>{3});
+        QCOMPARE(addressesOf(search), QList<int>{3});
+        // No service 5 in DIN66019: the values as they came.
+        QCOMPARE(search.resultAt(0).softwareVersion, QStringLiteral("181"));
     }
 
     void findDrivesCanBeCancelled()
     {
         Session s(simulated(Protocol::Din66019II, bus({1})));
         QVERIFY(s.connected());
-        QFuture<QList<int>> search = s.client->findDrives();
+        QFuture<FoundDrive> search
+            = s.client->run(std::make_shared<FindDrivesJob>(s.client->settings()));
         QTRY_VERIFY(search.progressValue() >= 3);
         search.cancel();
         QVERIFY(waitFinished(search, 2000));

@@ -6,3 +6,5 @@ drivedesk_add_test(NAME tst_mainwindow_edit LABELS gui
     SOURCES gui/tst_mainwindow_edit.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui)
 drivedesk_add_test(NAME tst_mainwindow_dialogs LABELS gui
     SOURCES gui/tst_mainwindow_dialogs.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui)
+drivedesk_add_test(NAME tst_finddrives LABELS gui
+    SOURCES gui/tst_finddrives.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui)

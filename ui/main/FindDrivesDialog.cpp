@@ -73,13 +73,19 @@ FindDrivesDialog::FindDrivesDialog(QWidget *parent)
 
     connect(m_buttons, &QDialogButtonBox::accepted, this, &FindDrivesDialog::accept);
     connect(m_buttons, &QDialogButtonBox::rejected, this, &FindDrivesDialog::reject);
-    connect(m_stop, &QPushButton::clicked, this, &FindDrivesDialog::cancelSearch);
+    connect(m_stop, &QPushButton::clicked, this, &FindDrivesDialog::stopSearch);
     connect(m_again, &QPushButton::clicked, this, &FindDrivesDialog::start);
     connect(m_drives, &QListWidget::currentRowChanged, this, &FindDrivesDialog::updateButtons);
     connect(m_drives, &QListWidget::itemActivated, this, &FindDrivesDialog::accept);
+    connect(&m_watcher, &QFutureWatcherBase::progressRangeChanged, m_progress,
+            &QProgressBar::setRange);
     connect(&m_watcher, &QFutureWatcherBase::progressValueChanged, m_progress,
             &QProgressBar::setValue);
-    connect(&m_watcher, &QFutureWatcherBase::progressTextChanged, m_status, &QLabel::setText);
+    connect(&m_watcher, &QFutureWatcherBase::resultReadyAt, this, &FindDrivesDialog::onDriveFound);
+    connect(&m_watcher, &QFutureWatcherBase::progressTextChanged, this, [this](const QString &text) {
+        if (!m_stopRequested)
+            m_status->setText(text);
+    });
     connect(&m_watcher, &QFutureWatcherBase::finished, this, &FindDrivesDialog::onFinished);
 }
 
@@ -87,6 +93,8 @@ FindDrivesDialog::FindDrivesDialog(DriveClient *client, QWidget *parent)
     : FindDrivesDialog(parent)
 {
     m_client = client;
+    if (client->state() == DriveClient::State::Connected)
+        m_connectedAddress = client->settings().driveAddress;
     m_bus->setText(tr("Asking every address %2..%3 on %1 whether a drive answers.")
                        .arg(busName(client->settings()))
                        .arg(kFirstAddress)
@@ -105,6 +113,7 @@ FindDrivesDialog::FindDrivesDialog(const ConnectionSettings &settings, QWidget *
                        .arg(kLastAddress));
     connect(m_client, &DriveClient::connected, this, &FindDrivesDialog::search);
     connect(m_client, &DriveClient::connectionFailed, this, &FindDrivesDialog::fail);
+    connect(m_client, &DriveClient::stateChanged, this, &FindDrivesDialog::updateButtons);
     start();
 }
 
@@ -128,27 +137,31 @@ void FindDrivesDialog::start()
         return;
     }
     m_status->setText(tr("Opening the connection..."));
-    m_stop->setEnabled(true);
-    m_again->setEnabled(false);
     m_ownClient->connectToDrive();
+    updateButtons();
 }
 
 void FindDrivesDialog::search()
 {
     if (m_watcher.isRunning())
         return;
-    m_found.clear();
     m_drives->clear();
+    m_stopRequested = false;
+    m_job = std::make_shared<FindDrivesJob>(m_client->settings(), kFirstAddress, kLastAddress);
+    m_progress->setRange(0, m_job->total());
     m_progress->setValue(0);
     m_status->setText(tr("Searching..."));
-    m_watcher.setFuture(m_client->findDrives(kFirstAddress, kLastAddress));
+    m_watcher.setFuture(m_client->run(m_job));
     updateButtons();
 }
 
-void FindDrivesDialog::cancelSearch()
+void FindDrivesDialog::stopSearch()
 {
     if (m_watcher.isRunning()) {
-        m_watcher.cancel();
+        // The search ends after the address on the way; what it found stays listed.
+        m_stopRequested = true;
+        m_job->requestStop();
+        m_status->setText(tr("Stopping..."));
     } else if (m_ownClient && m_ownClient->state() == DriveClient::State::Connecting) {
         m_ownClient->disconnectFromDrive();
         m_status->setText(tr("Stopped."));
@@ -156,33 +169,58 @@ void FindDrivesDialog::cancelSearch()
     updateButtons();
 }
 
+void FindDrivesDialog::onDriveFound(int index)
+{
+    const FoundDrive drive = m_watcher.resultAt(index);
+    const bool connected = m_connectedAddress == drive.address;
+    const QString identification = drive.identification();
+    const QString title = connected ? tr("Drive %1, connected now").arg(drive.address)
+                                    : tr("Drive %1").arg(drive.address);
+    const QString details = identification.isEmpty() ? tr("gave no identification")
+                                                     : identification;
+    auto *item = new QListWidgetItem(title + QLatin1Char('\n') + details);
+    item->setData(AddressRole, drive.address);
+    item->setData(IdentificationRole, identification);
+    item->setData(ConnectedRole, connected);
+    item->setToolTip(details);
+    if (connected) {
+        QFont font = item->font();
+        font.setBold(true);
+        item->setFont(font);
+    }
+    m_drives->addItem(item);
+    if (!m_drives->currentItem())
+        m_drives->setCurrentItem(item);
+    updateButtons();
+}
+
+QList<int> FindDrivesDialog::foundAddresses() const
+{
+    QList<int> addresses;
+    for (int row = 0; row < m_drives->count(); ++row)
+        addresses.append(m_drives->item(row)->data(AddressRole).toInt());
+    return addresses;
+}
+
 void FindDrivesDialog::onFinished()
 {
-    const QFuture<QList<int>> future = m_watcher.future();
-    if (future.isCanceled()) {
-        m_status->setText(tr("Stopped after %1 of %2 addresses.")
-                              .arg(m_progress->value())
-                              .arg(m_progress->maximum()));
+    const QFuture<FoundDrive> future = m_watcher.future();
+    const int found = m_drives->count();
+    const bool complete = m_watcher.progressValue() >= m_watcher.progressMaximum();
+    if (future.isCanceled() || (m_stopRequested && !complete)) {
+        m_status->setText(tr("Stopped after %1 of %2 addresses: %n drive(s) answered.", nullptr,
+                             found)
+                              .arg(m_watcher.progressValue())
+                              .arg(m_watcher.progressMaximum()));
+    } else if (!complete) {
+        // The search ended early: the text says why (the link went away, ...).
+        m_status->setText(tr("The search stopped: %1").arg(m_watcher.progressText()));
+    } else if (found == 0) {
+        m_status->setText(tr("No drive answered. Check the wiring, the baud rate and the "
+                             "protocol."));
     } else {
-        m_found = future.resultCount() > 0 ? future.result() : QList<int>();
-        const bool complete = m_watcher.progressValue() >= m_watcher.progressMaximum();
-        if (!complete) {
-            // The search ended early: the text says why (the link went away, ...).
-            m_status->setText(tr("The search stopped: %1").arg(m_watcher.progressText()));
-        } else if (m_found.isEmpty()) {
-            m_status->setText(tr("No drive answered. Check the wiring, the baud rate and the "
-                                 "protocol."));
-        } else {
-            m_status->setText(tr("%n drive(s) answered.", nullptr, int(m_found.size())));
-        }
+        m_status->setText(tr("%n drive(s) answered.", nullptr, found));
     }
-    for (int address : std::as_const(m_found)) {
-        auto *item = new QListWidgetItem(tr("Drive at address %1").arg(address));
-        item->setData(Qt::UserRole, address);
-        m_drives->addItem(item);
-    }
-    if (m_drives->count() > 0)
-        m_drives->setCurrentRow(0);
     updateButtons();
     emit searchFinished();
 }
@@ -196,19 +234,23 @@ void FindDrivesDialog::fail(const QString &reason)
 
 void FindDrivesDialog::updateButtons()
 {
-    const bool searching = m_watcher.isRunning();
-    m_stop->setEnabled(searching);
+    const bool searching = m_watcher.isRunning()
+                           || (m_ownClient
+                               && m_ownClient->state() == DriveClient::State::Connecting);
     m_again->setEnabled(!searching);
-    m_buttons->button(QDialogButtonBox::Ok)
-        ->setEnabled(!searching && m_drives->currentItem() != nullptr);
+    m_stop->setEnabled(searching && !m_stopRequested);
+    m_buttons->button(QDialogButtonBox::Ok)->setEnabled(m_drives->currentItem() != nullptr);
 }
 
 void FindDrivesDialog::accept()
 {
     const QListWidgetItem *item = m_drives->currentItem();
-    if (m_watcher.isRunning() || !item)
+    if (!item)
         return;
-    m_chosen = item->data(Qt::UserRole).toInt();
+    // A drive picked while the search goes on: the rest of the search is not needed.
+    if (m_watcher.isRunning())
+        m_watcher.cancel();
+    m_chosen = item->data(AddressRole).toInt();
     QDialog::accept();
 }
 

@@ -1,0 +1,135 @@
+#include "tst_mainwindow_support.h"
+
+#include "main/DriveSession.h"
+#include "main/FindDrivesDialog.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QDialogButtonBox>
+#include <QLabel>
+#include <QListWidget>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSignalSpy>
+
+using namespace DriveDesk;
+using namespace DriveDesk::MainWindowTest;
+
+namespace {
+
+// A DIN66019II bus with drives 1, 5 and 17, as in the user's report.
+ConnectionSettings busWithThreeDrives()
+{
+    ConnectionSettings bus = simulated(Protocol::Din66019II);
+    bus.simulation.driveAddresses = { 1, 5, 17 };
+    bus.driveAddress = 1;
+    return bus;
+}
+
+QListWidget *driveList(QWidget &dialog)
+{
+    return dialog.findChild<QListWidget *>(QStringLiteral("foundDrives"));
+}
+
+QPushButton *connectButton(QWidget &dialog)
+{
+    return dialog.findChild<QDialogButtonBox *>()->button(QDialogButtonBox::Ok);
+}
+
+} // namespace
+
+// Finding drives on a DIN66019II bus: drives listed as they answer, kept when the search is
+// stopped, with what they are and which one the window is connected to.
+class TestFindDrives : public QObject
+{
+    Q_OBJECT
+private:
+    IsolatedSettings m_settings;
+
+private slots:
+    void init() { m_settings.clear(); }
+
+    void drivesAppearAsTheyAnswerAndSurviveStop()
+    {
+        FindDrivesDialog dialog(busWithThreeDrives());
+        auto *list = driveList(dialog);
+        auto *progress = dialog.findChild<QProgressBar *>(QStringLiteral("searchProgress"));
+        // Where the search was when each drive appeared.
+        QList<bool> searchingWhenListed;
+        connect(list->model(), &QAbstractItemModel::rowsInserted, this,
+                [&] { searchingWhenListed.append(dialog.isSearching()); });
+
+        QTRY_COMPARE_WITH_TIMEOUT(list->count(), 3, kWaitMs);
+        QCOMPARE(searchingWhenListed, (QList<bool> { true, true, true }));
+        QVERIFY(dialog.isSearching());
+        QSignalSpy finished(&dialog, &FindDrivesDialog::searchFinished);
+        QTest::mouseClick(dialog.findChild<QPushButton *>(QStringLiteral("stopSearch")),
+                          Qt::LeftButton);
+        QVERIFY(finished.wait(kWaitMs));
+
+        QVERIFY(!dialog.isSearching());
+        QCOMPARE(dialog.foundAddresses(), (QList<int> { 1, 5, 17 }));
+        const QString status = dialog.findChild<QLabel *>(QStringLiteral("searchStatus"))->text();
+        QVERIFY2(status.startsWith(QStringLiteral("Stopped after ")), qPrintable(status));
+        QVERIFY2(status.contains(QStringLiteral("3 drive")), qPrintable(status));
+        QVERIFY(progress->value() < progress->maximum());
+        QVERIFY(status.contains(QString::number(progress->value())));
+
+        // Connect stays possible for a selected drive.
+        QVERIFY(list->currentItem());
+        QVERIFY(connectButton(dialog)->isEnabled());
+        list->setCurrentRow(1);
+        QVERIFY(connectButton(dialog)->isEnabled());
+        dialog.accept();
+        QCOMPARE(dialog.chosenAddress(), 5);
+    }
+
+    void foundDrivesShowTheirIdentification()
+    {
+        FindDrivesDialog dialog(busWithThreeDrives());
+        auto *list = driveList(dialog);
+        QTRY_VERIFY_WITH_TIMEOUT(list->count() >= 1, kWaitMs);
+        const QListWidgetItem *first = list->item(0);
+        QCOMPARE(first->data(FindDrivesDialog::AddressRole).toInt(), 1);
+        const QString identification = first->data(FindDrivesDialog::IdentificationRole).toString();
+        // Sy.02 and In.06 as the simulated F5 shows them.
+        QVERIFY2(identification.contains(QStringLiteral("inverter identifier 0F51h")),
+                 qPrintable(identification));
+        QVERIFY2(identification.contains(QStringLiteral("software 1.81")),
+                 qPrintable(identification));
+        QVERIFY(first->text().contains(identification));
+        // Searching through a connection of its own: no drive is connected now.
+        QVERIFY(!first->data(FindDrivesDialog::ConnectedRole).toBool());
+        dialog.reject();
+        QTRY_VERIFY_WITH_TIMEOUT(!dialog.isSearching(), kWaitMs);
+    }
+
+    void theConnectedDriveIsMarked()
+    {
+        MainWindow window;
+        ConnectionSettings bus = busWithThreeDrives();
+        bus.driveAddress = 5;
+        QVERIFY(connectAndRead(window, bus));
+
+        window.findChild<QAction *>(QStringLiteral("findDrivesAction"))->trigger();
+        QPointer<FindDrivesDialog> dialog;
+        QTRY_VERIFY_WITH_TIMEOUT(
+            (dialog = qobject_cast<FindDrivesDialog *>(QApplication::activeModalWidget())),
+            kWaitMs);
+        auto *list = driveList(*dialog);
+        QTRY_VERIFY_WITH_TIMEOUT(list->count() >= 2, kWaitMs);
+        const QListWidgetItem *one = list->item(0);
+        const QListWidgetItem *five = list->item(1);
+        QCOMPARE(five->data(FindDrivesDialog::AddressRole).toInt(), 5);
+        QVERIFY(five->data(FindDrivesDialog::ConnectedRole).toBool());
+        QVERIFY2(five->text().contains(QStringLiteral("connected now")), qPrintable(five->text()));
+        QVERIFY(five->font().bold());
+        QVERIFY(!one->data(FindDrivesDialog::ConnectedRole).toBool());
+        QVERIFY(!one->text().contains(QStringLiteral("connected now")));
+        dialog->reject();
+        QTRY_VERIFY_WITH_TIMEOUT(dialog.isNull(), kWaitMs);
+    }
+};
+
+QTEST_MAIN(TestFindDrives)
+#include "tst_finddrives.moc"
