@@ -1,7 +1,10 @@
 #include "tst_mainwindow_support.h"
 
+#include "main/ConnectionDialog.h"
 #include "main/DriveSession.h"
 #include "main/FindDrivesDialog.h"
+#include "monitor/TelegramMonitor.h"
+#include "monitor/TrafficModel.h"
 
 #include <QAction>
 #include <QApplication>
@@ -36,10 +39,21 @@ QPushButton *connectButton(QWidget &dialog)
     return dialog.findChild<QDialogButtonBox *>()->button(QDialogButtonBox::Ok);
 }
 
+// Whether the monitor shows a telegram whose meaning holds `text` (it shows them in batches).
+bool monitorShows(const TelegramMonitor *monitor, const QString &text)
+{
+    for (int row = 0; row < monitor->model()->rowCount(); ++row) {
+        if (monitor->model()->entry(row).record.meaning.contains(text))
+            return true;
+    }
+    return false;
+}
+
 } // namespace
 
 // Finding drives on a DIN66019II bus: drives listed as they answer, kept when the search is
-// stopped, with what they are and which one the window is connected to.
+// stopped, with what they are and which one the window is connected to; the search's telegrams
+// in the telegram monitor.
 class TestFindDrives : public QObject
 {
     Q_OBJECT
@@ -128,6 +142,46 @@ private slots:
         QVERIFY(!one->text().contains(QStringLiteral("connected now")));
         dialog->reject();
         QTRY_VERIFY_WITH_TIMEOUT(dialog.isNull(), kWaitMs);
+    }
+
+    void searchTelegramsReachTheMonitorWhileDisconnected()
+    {
+        MainWindow window;
+        QVERIFY(!window.session());
+        auto *monitor = window.findChild<TelegramMonitor *>();
+        QVERIFY(monitor);
+        ConnectionDialog *connection = window.openConnectionDialog();
+        connection->setSettings(busWithThreeDrives());
+        connection->findDrives();
+        auto *search = connection->findChild<FindDrivesDialog *>();
+        QVERIFY(search);
+        QTRY_VERIFY_WITH_TIMEOUT(driveList(*search)->count() >= 1, kWaitMs);
+        QVERIFY(!window.session());
+
+        // The probes of addresses 0 and 1 as they were sent, read as DIN66019II.
+        QTRY_VERIFY_WITH_TIMEOUT(monitorShows(monitor, QStringLiteral("to drive 0")), kWaitMs);
+        QTRY_VERIFY_WITH_TIMEOUT(monitorShows(monitor, QStringLiteral("to drive 1")), kWaitMs);
+        for (int row = 0; row < monitor->model()->rowCount(); ++row)
+            QCOMPARE(monitor->model()->entry(row).protocol, Protocol::Din66019II);
+        search->reject();
+        connection->reject();
+    }
+
+    void searchTelegramsReachTheMonitorWhileConnected()
+    {
+        MainWindow window;
+        QVERIFY(connectAndRead(window, busWithThreeDrives()));
+        auto *monitor = window.findChild<TelegramMonitor *>();
+        monitor->clear();
+        window.findChild<QAction *>(QStringLiteral("findDrivesAction"))->trigger();
+        QPointer<FindDrivesDialog> dialog;
+        QTRY_VERIFY_WITH_TIMEOUT(
+            (dialog = qobject_cast<FindDrivesDialog *>(QApplication::activeModalWidget())),
+            kWaitMs);
+        QTRY_VERIFY_WITH_TIMEOUT(driveList(*dialog)->count() >= 2, kWaitMs);
+        // The probe of address 5 went through the window's connection.
+        QTRY_VERIFY_WITH_TIMEOUT(monitorShows(monitor, QStringLiteral("to drive 5")), kWaitMs);
+        dialog->reject();
     }
 };
 

@@ -342,6 +342,7 @@ void ConnectionDialog::findDrives()
         m_address->setValue(*dialog->chosenAddress());
         accept();
     });
+    emit searchStarted(dialog->client());
     dialog->open();
 }
 

@@ -16,6 +16,8 @@ class QTabWidget;
 
 namespace DriveDesk {
 
+class DriveClient;
+
 // Where to connect: a serial port, a TCP device server or the simulated drive, with protocol
 // and drive address, and the recent connections to pick from. Accepting checks the entries and
 // says what is wrong in words instead of closing.
@@ -35,6 +37,10 @@ public:
     void accept() override;
     // Probes the bus for drives (DIN66019II / DIN66019) and connects to the one picked.
     void findDrives();
+
+signals:
+    // findDrives() searches through a connection of its own: `client`, until that dialog closes.
+    void searchStarted(DriveDesk::DriveClient *client);
 
 private:
     QWidget *createSerialPage();

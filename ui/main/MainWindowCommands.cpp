@@ -25,6 +25,11 @@ ConnectionDialog *MainWindow::openConnectionDialog()
     if (m_session)
         dialog->setSettings(m_session->settings());
     connect(dialog, &QDialog::accepted, this, [this, dialog] { connectTo(dialog->settings()); });
+    // The search's telegrams belong in the telegram monitor as much as the session's.
+    connect(dialog, &ConnectionDialog::searchStarted, this, [this](DriveClient *client) {
+        for (WindowFeature *feature : std::as_const(m_features))
+            feature->followClient(client);
+    });
     return openDialog(dialog);
 }
 

@@ -11,6 +11,7 @@ class QWidget;
 
 namespace DriveDesk {
 
+class DriveClient;
 class DriveSession;
 class ParameterBrowser;
 class ParameterModel;
@@ -57,6 +58,9 @@ public:
 
     // A new session replaces the old one (already gone), or nullptr: none any more.
     virtual void attach(DriveSession *session) { Q_UNUSED(session) }
+    // A client besides the session's talks on a bus for a while (finding drives before
+    // connecting); it goes away on its own.
+    virtual void followClient(DriveClient *client) { Q_UNUSED(client) }
     // The connection, the scan, the selection or a job changed.
     virtual void updateActions() { }
     // The window closes: what the feature remembers goes to QSettings.

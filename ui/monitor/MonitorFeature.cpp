@@ -45,4 +45,9 @@ void MonitorFeature::attach(DriveSession *session)
                                     });
 }
 
+void MonitorFeature::followClient(DriveClient *client)
+{
+    m_monitor->follow(client);
+}
+
 } // namespace DriveDesk

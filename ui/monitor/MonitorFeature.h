@@ -14,6 +14,7 @@ public:
     explicit MonitorFeature(WindowFrame &frame, QObject *parent = nullptr);
 
     void attach(DriveSession *session) override;
+    void followClient(DriveClient *client) override;
 
 private:
     TelegramMonitor *m_monitor = nullptr;

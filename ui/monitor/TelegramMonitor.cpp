@@ -188,7 +188,19 @@ void TelegramMonitor::attach(DriveClient *client)
         return;
     m_model->setProtocol(client->settings().protocol);
     updateCharactersColumn();
-    m_trafficConnection = connect(client, &DriveClient::traffic, m_model, &TrafficModel::append);
+    m_trafficConnection = connect(client, &DriveClient::traffic, m_model,
+                                  qOverload<const TrafficRecord &>(&TrafficModel::append));
+}
+
+void TelegramMonitor::follow(DriveClient *client)
+{
+    if (!client)
+        return;
+    const Protocol protocol = client->settings().protocol;
+    connect(client, &DriveClient::traffic, m_model,
+            [model = m_model, protocol](const TrafficRecord &record) {
+                model->append(record, protocol);
+            });
 }
 
 void TelegramMonitor::setDrive(std::shared_ptr<const DriveDescription> drive)

@@ -32,6 +32,9 @@ public:
     void attach(DriveClient *client);
     // The drive the telegrams name parameters of (null: none known, e.g. before a scan).
     void setDrive(std::shared_ptr<const DriveDescription> drive);
+    // Also shows the traffic of a client besides the attached one (a search for drives on a
+    // connection of its own), for as long as that client lives.
+    void follow(DriveClient *client);
 
     TrafficModel *model() const { return m_model; }
     TrafficFilterModel *filterModel() const { return m_filter; }

@@ -74,7 +74,12 @@ const QString &TrafficModel::meaning(int row) const
 
 void TrafficModel::append(const TrafficRecord &record)
 {
-    m_waiting.push_back({ record, m_protocol, {}, false });
+    append(record, m_protocol);
+}
+
+void TrafficModel::append(const TrafficRecord &record, Protocol protocol)
+{
+    m_waiting.push_back({ record, protocol, {}, false });
     ++m_received;
     // More waiting than the rows can hold: the oldest would be pushed out on arrival anyway.
     if (m_waiting.size() > std::size_t(m_capacity)) {

@@ -47,6 +47,8 @@ public:
 
     // Takes a record; it is shown with the next batch, or on resume while paused.
     void append(const DriveDesk::TrafficRecord &record);
+    // A record of another protocol than setProtocol()'s (a client besides the session's).
+    void append(const DriveDesk::TrafficRecord &record, Protocol protocol);
     // Shows what is waiting now instead of on the next tick (nothing while paused).
     void flush();
     // Pausing first shows what arrived before it; resuming shows what arrived during it.
