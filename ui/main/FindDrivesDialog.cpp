@@ -69,7 +69,7 @@ FindDrivesDialog::FindDrivesDialog(QWidget *parent)
     layout->addWidget(new QLabel(tr("Drives that answered:")));
     layout->addWidget(m_drives);
     layout->addWidget(m_buttons);
-    resize(420, 380);
+    resize(540, 420); // two lines a drive: its address and its identification
 
     connect(m_buttons, &QDialogButtonBox::accepted, this, &FindDrivesDialog::accept);
     connect(m_buttons, &QDialogButtonBox::rejected, this, &FindDrivesDialog::reject);
