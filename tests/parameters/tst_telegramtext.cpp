@@ -88,7 +88,7 @@ private slots:
         QCOMPARE(TelegramText::describe(answer, &drive, &limits),
                  QStringLiteral("limits of ru.13 Actual load: 0 % .. 250 %"));
         const Telegram group
-            = Telegram::request(Service::GroupName, Access::Read, NameData { 0x0200 });
+            = Telegram::request(Service::GroupName, Access::Read, NameData { 0x0200, 0, {} });
         QCOMPARE(TelegramText::describe(group, &drive),
                  QStringLiteral("read the name of group ru Run display"));
     }
