@@ -15,6 +15,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QMenu>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -211,6 +212,17 @@ private slots:
         QSettings().setValue(QStringLiteral("language"), QStringLiteral("en"));
         QCOMPARE(StartupOptions::parse({ QStringLiteral("drivedesk") }).uiLanguage(),
                  Language::English);
+    }
+
+    void theLanguageMenuSaysWhenAChoiceTakesEffect()
+    {
+        MainWindow window;
+        auto *menu = window.findChild<QMenu *>(QStringLiteral("languageMenu"));
+        QVERIFY(menu);
+        QVERIFY2(menu->title().contains(QLatin1String("next start")), qPrintable(menu->title()));
+        QCOMPARE(menu->actions().size(), 2);
+        for (QAction *action : menu->actions())
+            QVERIFY(action->toolTip().contains(QLatin1String("starts again")));
     }
 
     void findDrivesListsWhatAnswersOnTheBus()

@@ -8,6 +8,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QFont>
 #include <QGuiApplication>
 #include <QPalette>
 #include <QPointer>
@@ -333,6 +334,31 @@ private slots:
         QTest::keyClick(view, Qt::Key_5);
         QCOMPARE(view->currentIndex(), readOnly);
         QCOMPARE(m_window->statusBar()->currentMessage(), QStringLiteral("op.00 is read-only"));
+    }
+
+    void theActiveSetsColumnIsMarkedAndFollowsFr02()
+    {
+        constexpr quint16 kActiveSet = 0x0902; // Fr.02
+        ParameterModel *model = m_window->model();
+        const auto header = [model](int set) {
+            return model->headerData(ParameterModel::columnOfSet(set), Qt::Horizontal).toString();
+        };
+        QTRY_COMPARE_WITH_TIMEOUT(header(0), QStringLiteral("Value / set 0 (active)"), kWaitMs);
+        QCOMPARE(header(2), QStringLiteral("Set 2"));
+
+        QVERIFY(model->requestWrite(kActiveSet, 0x01, 2));
+        QTRY_COMPARE_WITH_TIMEOUT(header(2), QStringLiteral("Set 2 (active)"), kWaitMs);
+        QCOMPARE(header(0), QStringLiteral("Value / set 0"));
+        QVERIFY(model->headerData(ParameterModel::columnOfSet(2), Qt::Horizontal, Qt::FontRole)
+                    .value<QFont>()
+                    .bold());
+        // The table's header says so, through its filter.
+        QCOMPARE(m_window->browser()
+                     ->view()
+                     ->model()
+                     ->headerData(ParameterModel::columnOfSet(2), Qt::Horizontal)
+                     .toString(),
+                 QStringLiteral("Set 2 (active)"));
     }
 };
 

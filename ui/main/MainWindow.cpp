@@ -305,6 +305,8 @@ void MainWindow::updateSetsLabel()
         const std::optional<qint32> value = m_model->value(*address, 0);
         return value ? QString::number(*value) : tr("?");
     };
+    // The table marks the active set's column, following every reading of Fr.02.
+    m_model->setActiveSet(m_session ? m_session->activeSet() : -1);
     const QString active = m_session ? valueText(m_session->activeSetAddress()) : QString();
     const QString pointer = m_session ? valueText(m_session->setPointerAddress()) : QString();
     QStringList parts;

@@ -110,7 +110,13 @@ void MainWindow::finishMenus()
     m_driveMenu->addAction(m_quitAction);
 
     m_viewMenu->addSeparator();
-    QMenu *language = m_viewMenu->addMenu(tr("&Language"));
+    // Said before the choice is made: the window's and the drive's texts change only when
+    // DriveDesk starts again.
+    QMenu *language = m_viewMenu->addMenu(tr("&Language (from the next start)"));
+    language->setObjectName(QStringLiteral("languageMenu"));
+    language->setToolTipsVisible(true);
+    for (QAction *action : m_languageGroup->actions())
+        action->setToolTip(tr("Takes effect when DriveDesk starts again"));
     language->addActions(m_languageGroup->actions());
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));

@@ -281,6 +281,16 @@ void ParameterModel::setPasswordLevel(PasswordLevel level)
     emit passwordLevelChanged(level);
 }
 
+void ParameterModel::setActiveSet(int set)
+{
+    if (set < 0 || set >= kParameterSets)
+        set = -1;
+    if (set == m_activeSet)
+        return;
+    m_activeSet = set;
+    emit headerDataChanged(Qt::Horizontal, FirstSetColumn, LastSetColumn);
+}
+
 void ParameterModel::setShowRawValues(bool raw)
 {
     if (raw == m_raw)

@@ -95,6 +95,10 @@ public:
     // Not read-only and within the level in force.
     bool isEditable(quint16 address) const;
 
+    // The set the drive runs with (Fr.02), marked in its column's header; -1: not known.
+    void setActiveSet(int set);
+    int activeSet() const { return m_activeSet; }
+
     void setShowRawValues(bool raw);
     bool showsRawValues() const { return m_raw; }
 
@@ -163,6 +167,7 @@ private:
     DriveDescription m_drive; // groups left empty: header fields only
     QSet<quint16> m_favourites;
     PasswordLevel m_level = PasswordLevel::Supervisor;
+    int m_activeSet = -1;
     bool m_raw = false;
     CellDecoration m_decoration;
 };

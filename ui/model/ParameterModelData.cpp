@@ -260,15 +260,27 @@ QVariant ParameterModel::headerData(int section, Qt::Orientation orientation, in
 {
     if (orientation != Qt::Horizontal || section < 0 || section >= ColumnCount)
         return {};
-    if (role == Qt::ToolTipRole && section == FirstSetColumn)
-        return tr("Set 0, or the one value of a parameter that is not set-programmable");
+    const int set = setOfColumn(section);
+    const bool active = set >= 0 && set == m_activeSet;
+    if (role == Qt::ToolTipRole && set >= 0) {
+        QString text = set == 0
+            ? tr("Set 0, or the one value of a parameter that is not set-programmable")
+            : tr("Set %1").arg(set);
+        if (active)
+            text += QLatin1Char('\n') + tr("The drive runs with this set (active set, Fr.02)");
+        return text;
+    }
+    if (role == Qt::FontRole && active) {
+        QFont font;
+        font.setBold(true);
+        return font;
+    }
     if (role != Qt::DisplayRole)
         return {};
-    const int set = setOfColumn(section);
     if (set == 0)
-        return tr("Value / set 0");
+        return active ? tr("Value / set 0 (active)") : tr("Value / set 0");
     if (set > 0)
-        return tr("Set %1").arg(set);
+        return active ? tr("Set %1 (active)").arg(set) : tr("Set %1").arg(set);
     switch (section) {
     case IdColumn:
         return tr("Parameter");
