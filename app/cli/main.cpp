@@ -4,6 +4,7 @@
 #include "cli/CommandLine.h"
 
 #include <QCoreApplication>
+#include <QLocale>
 #include <QTimer>
 
 #include <cstdio>
@@ -11,6 +12,8 @@
 int main(int argc, char **argv)
 {
     QCoreApplication app(argc, argv);
+    // Numbers print with '.' whatever the system's locale: output that scripts read.
+    QLocale::setDefault(QLocale::c());
     QCoreApplication::setApplicationName(QStringLiteral("drivedesk-cli"));
     QCoreApplication::setApplicationVersion(QStringLiteral(DRIVEDESK_VERSION));
 

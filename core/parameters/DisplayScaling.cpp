@@ -1,9 +1,9 @@
 #include "DisplayScaling.h"
 
 #include "DecimalText.h"
-
 #include "DisplayUnit.h"
 
+#include <QLocale>
 #include <QRegularExpression>
 
 #include <array>
@@ -51,6 +51,15 @@ qint64 divideRounded(qint64 a, qint64 b)
 }
 
 // `scaled` / 10^decimals as text; a rounded zero carries no sign.
+// The decimal separator of the language the user reads: QLocale's default, which the window
+// sets to its language ("5,00 s" in German) and the command line keeps at C's '.' so that
+// scripts read its output alike everywhere.
+QChar decimalSeparator()
+{
+    const QString point = QLocale().decimalPoint();
+    return point.size() == 1 ? point.front() : QLatin1Char('.');
+}
+
 QString fixedPoint(qint64 scaled, int decimals, bool trimZeros)
 {
     const bool negative = scaled < 0;
@@ -58,11 +67,12 @@ QString fixedPoint(qint64 scaled, int decimals, bool trimZeros)
     if (decimals > 0) {
         if (digits.size() <= decimals)
             digits.prepend(QString(decimals - digits.size() + 1, QLatin1Char('0')));
-        digits.insert(digits.size() - decimals, QLatin1Char('.'));
+        const QChar separator = decimalSeparator();
+        digits.insert(digits.size() - decimals, separator);
         if (trimZeros) {
             while (digits.endsWith(QLatin1Char('0')))
                 digits.chop(1);
-            if (digits.endsWith(QLatin1Char('.')))
+            if (digits.endsWith(separator))
                 digits.chop(1);
         }
     }

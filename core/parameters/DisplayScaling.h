@@ -53,6 +53,7 @@ public:
     // The unrounded display number, e.g. for plotting; nothing where the scaling is invalid.
     std::optional<double> toDisplay(qint32 raw) const;
     // "12.50 Hz", "-3.5 %", "00FFh"; an invalid scaling gives "1234 (no scaling: divisor 0)".
+    // The decimal separator is the default QLocale's: "12,50 Hz" where the window speaks German.
     QString format(qint32 raw, bool withUnit = true) const;
     // The inverse of format(): the raw value nearest to the text, with or without its unit,
     // '.' or ',' as decimal separator; hexadecimal as "FF", "0xFF" or "FFh".

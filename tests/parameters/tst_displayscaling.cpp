@@ -1,6 +1,7 @@
 #include "parameters/DisplayScaling.h"
 #include "parameters/DisplayUnit.h"
 
+#include <QLocale>
 #include <QTest>
 
 #include <limits>
@@ -74,6 +75,23 @@ private slots:
         QCOMPARE(hz.decimals(), 2);
         QCOMPARE(scaling(10, 1, 0, flags(kPercent, 1)).format(-35), QStringLiteral("-3.5 %"));
         QCOMPARE(scaling(1, 1, 0, 0).format(42), QStringLiteral("42"));
+    }
+
+    void decimalSeparatorFollowsTheLanguageShown()
+    {
+        // The window sets the default locale to its language; typing takes either separator.
+        const DisplayScaling hz = scaling(100, 1, 0, flags(kHz, 2));
+        const DisplayScaling variable = scaling(1000, 1, 0, flags(kHz, 5));
+        QLocale::setDefault(QLocale(QLocale::German));
+        QCOMPARE(hz.format(500), QStringLiteral("5,00 Hz"));
+        QCOMPARE(hz.format(-750, false), QStringLiteral("-7,50"));
+        QCOMPARE(variable.format(12500), QStringLiteral("12,5 Hz"));
+        QCOMPARE(variable.format(12000), QStringLiteral("12 Hz"));
+        QCOMPARE(hz.parse(QStringLiteral("7,5")), 750);
+        QCOMPARE(hz.parse(QStringLiteral("7.5 Hz")), 750);
+        QLocale::setDefault(QLocale::c());
+        QCOMPARE(hz.format(500), QStringLiteral("5.00 Hz"));
+        QCOMPARE(hz.parse(QStringLiteral("7,5")), 750);
     }
 
     void roundsHalfAwayFromZeroWithoutNegativeZero()
