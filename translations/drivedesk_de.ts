@@ -235,6 +235,10 @@
         <source>Password level: %1</source>
         <translation>Passwortebene: %1</translation>
     </message>
+    <message>
+        <source>the connection closed before the drive answered</source>
+        <translation>die Verbindung wurde geschlossen, bevor der Umrichter antwortete</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::AccessFeature</name>
@@ -253,6 +257,10 @@
     <message>
         <source>Password level: %1</source>
         <translation>Passwortebene: %1</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>nicht verbunden</translation>
     </message>
 </context>
 <context>
@@ -494,6 +502,14 @@
     <message>
         <source>timeout %1 ms</source>
         <translation>Wartezeit %1 ms</translation>
+    </message>
+    <message>
+        <source>no answer within %1 ms (attempt %2 of %3), asking again</source>
+        <translation>keine Antwort innerhalb von %1 ms (Versuch %2 von %3), neue Anfrage</translation>
+    </message>
+    <message>
+        <source>no answer within %1 ms (attempt %2 of %3), given up</source>
+        <translation>keine Antwort innerhalb von %1 ms (Versuch %2 von %3), aufgegeben</translation>
     </message>
 </context>
 <context>
@@ -773,25 +789,6 @@
     </message>
 </context>
 <context>
-    <name>DriveDesk::DriveSearch</name>
-    <message>
-        <source>the addresses %1..%2 hold no drive address (drives are 0..239)</source>
-        <translation>die Adressen %1..%2 enthalten keine Umrichteradresse (Umrichter haben 0..239)</translation>
-    </message>
-    <message>
-        <source>drive %1: %2</source>
-        <translation>Umrichter %1: %2</translation>
-    </message>
-    <message>
-        <source>drive %1 answered</source>
-        <translation>Umrichter %1 hat geantwortet</translation>
-    </message>
-    <message>
-        <source>no drive at %1</source>
-        <translation>kein Umrichter an %1</translation>
-    </message>
-</context>
-<context>
     <name>DriveDesk::DriveSession</name>
     <message>
         <source>the scan was cancelled</source>
@@ -972,6 +969,10 @@
             <numerusform>abgebrochen, %n Werte nicht gelesen</numerusform>
         </translation>
     </message>
+    <message>
+        <source>; the drive changes this value itself, so the write cannot be undone</source>
+        <translation>; der Umrichter ändert diesen Wert selbst, daher kann das Schreiben nicht rückgängig gemacht werden</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::EditingFeature</name>
@@ -1098,10 +1099,6 @@
         <translation>&amp;Abweichend vom Vorgabewert</translation>
     </message>
     <message>
-        <source>Only parameters whose value differs from the default</source>
-        <translation>Nur Parameter, deren Wert vom Vorgabewert abweicht</translation>
-    </message>
-    <message>
         <source>F&amp;avourites</source>
         <translation>&amp;Favoriten</translation>
     </message>
@@ -1136,6 +1133,10 @@
     <message>
         <source>Show the raw integers the drive holds instead of scaled values and plaintexts</source>
         <translation>Die ganzzahligen Rohwerte des Umrichters statt normierter Werte und Klartexte anzeigen</translation>
+    </message>
+    <message>
+        <source>Only settings whose value differs from the default (not read-only or live values)</source>
+        <translation>Nur Einstellungen, deren Wert vom Defaultwert abweicht (keine schreibgeschützten oder laufend gemessenen Werte)</translation>
     </message>
 </context>
 <context>
@@ -1193,10 +1194,6 @@
         <translation>Angehalten.</translation>
     </message>
     <message>
-        <source>Stopped after %1 of %2 addresses.</source>
-        <translation>Nach %1 von %2 Adressen angehalten.</translation>
-    </message>
-    <message>
         <source>The search stopped: %1</source>
         <translation>Die Suche wurde beendet: %1</translation>
     </message>
@@ -1212,12 +1209,31 @@
         </translation>
     </message>
     <message>
-        <source>Drive at address %1</source>
-        <translation>Umrichter an Adresse %1</translation>
-    </message>
-    <message>
         <source>Could not search: %1</source>
         <translation>Suche nicht möglich: %1</translation>
+    </message>
+    <message>
+        <source>Stopping...</source>
+        <translation>Wird angehalten...</translation>
+    </message>
+    <message>
+        <source>Drive %1, connected now</source>
+        <translation>Umrichter %1, jetzt verbunden</translation>
+    </message>
+    <message>
+        <source>Drive %1</source>
+        <translation>Umrichter %1</translation>
+    </message>
+    <message>
+        <source>gave no identification</source>
+        <translation>keine Kennung erhalten</translation>
+    </message>
+    <message numerus="yes">
+        <source>Stopped after %1 of %2 addresses: %n drive(s) answered.</source>
+        <translation>
+            <numerusform>Nach %1 von %2 Adressen angehalten: %n Umrichter hat geantwortet.</numerusform>
+            <numerusform>Nach %1 von %2 Adressen angehalten: %n Umrichter haben geantwortet.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1393,10 +1409,6 @@
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <source>&amp;Language</source>
-        <translation>&amp;Sprache</translation>
-    </message>
-    <message>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
@@ -1457,6 +1469,14 @@
             <numerusform>Der Umrichter hat %n Gruppe.</numerusform>
             <numerusform>Der Umrichter hat %n Gruppen.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>&amp;Language (from the next start)</source>
+        <translation>&amp;Sprache (ab dem nächsten Start)</translation>
+    </message>
+    <message>
+        <source>Takes effect when DriveDesk starts again</source>
+        <translation>Gilt ab dem nächsten Start von DriveDesk</translation>
     </message>
 </context>
 <context>
@@ -1542,10 +1562,6 @@
     <message>
         <source>%1 is read-only</source>
         <translation>%1 ist schreibgeschützt</translation>
-    </message>
-    <message>
-        <source>%1 needs password level %2</source>
-        <translation>%1 erfordert Passwortebene %2</translation>
     </message>
     <message>
         <source>%1: no set chosen</source>
@@ -1642,6 +1658,22 @@
         <source>Access</source>
         <translation>Zugriff</translation>
     </message>
+    <message>
+        <source>%1 needs password level %2 (in force: %3)</source>
+        <translation>%1 braucht die Passwortstufe %2 (gültig: %3)</translation>
+    </message>
+    <message>
+        <source>The drive runs with this set (active set, Fr.02)</source>
+        <translation>Der Umrichter arbeitet mit diesem Satz (aktiver Satz, Fr.02)</translation>
+    </message>
+    <message>
+        <source>Value / set 0 (active)</source>
+        <translation>Wert / Satz 0 (aktiv)</translation>
+    </message>
+    <message>
+        <source>Set %1 (active)</source>
+        <translation>Satz %1 (aktiv)</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::PasswordDialog</name>
@@ -1668,6 +1700,14 @@
     <message>
         <source>not read yet</source>
         <translation>noch nicht gelesen</translation>
+    </message>
+    <message>
+        <source>Asking the drive ...</source>
+        <translation>Der Umrichter wird gefragt ...</translation>
+    </message>
+    <message>
+        <source>Not accepted: %1</source>
+        <translation>Nicht angenommen: %1</translation>
     </message>
 </context>
 <context>
@@ -2082,6 +2122,41 @@ Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
     <message>
         <source>Type %1, software %2, serial number %3</source>
         <translation>Typ %1, Software %2, Seriennummer %3</translation>
+    </message>
+</context>
+<context>
+    <name>FindDrivesJob</name>
+    <message>
+        <source>inverter identifier %1</source>
+        <translation>Umrichterkennung %1</translation>
+    </message>
+    <message>
+        <source>software %1</source>
+        <translation>Software %1</translation>
+    </message>
+    <message>
+        <source>serial number %1</source>
+        <translation>Seriennummer %1</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <source>the addresses %1..%2 hold no drive address (drives are 0..239)</source>
+        <translation>die Adressen %1..%2 enthalten keine Umrichteradresse (Umrichter haben 0..239)</translation>
+    </message>
+    <message>
+        <source>drive %1: %2</source>
+        <translation>Umrichter %1: %2</translation>
+    </message>
+    <message>
+        <source>drive %1 answered</source>
+        <translation>Umrichter %1 hat geantwortet</translation>
+    </message>
+    <message>
+        <source>no drive at %1</source>
+        <translation>kein Umrichter an %1</translation>
     </message>
 </context>
 <context>
@@ -2777,6 +2852,339 @@ Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
     </message>
 </context>
 <context>
+    <name>SetList</name>
+    <message>
+        <source>no set</source>
+        <translation>kein Satz</translation>
+    </message>
+    <message>
+        <source>all sets</source>
+        <translation>alle Sätze</translation>
+    </message>
+    <message>
+        <source>set %1</source>
+        <translation>Satz %1</translation>
+    </message>
+    <message>
+        <source>sets %1</source>
+        <translation>Sätze %1</translation>
+    </message>
+    <message>
+        <source>active set</source>
+        <translation>aktiver Satz</translation>
+    </message>
+    <message>
+        <source>set of the set pointer</source>
+        <translation>Satz des Satzzeigers</translation>
+    </message>
+    <message>
+        <source>set selection %1</source>
+        <translation>Satzauswahl %1</translation>
+    </message>
+</context>
+<context>
+    <name>Telegram</name>
+    <message>
+        <source>unspecified</source>
+        <translation>nicht festgelegt</translation>
+    </message>
+    <message>
+        <source>status interrogation</source>
+        <translation>Statusabfrage</translation>
+    </message>
+    <message>
+        <source>DIN66019 value</source>
+        <translation>DIN66019-Wert</translation>
+    </message>
+    <message>
+        <source>value (set mask)</source>
+        <translation>Wert (Satzmaske)</translation>
+    </message>
+    <message>
+        <source>value (standard set)</source>
+        <translation>Wert (Standardsatz)</translation>
+    </message>
+    <message>
+        <source>limits</source>
+        <translation>Grenzen</translation>
+    </message>
+    <message>
+        <source>default value</source>
+        <translation>Defaultwert</translation>
+    </message>
+    <message>
+        <source>properties</source>
+        <translation>Eigenschaften</translation>
+    </message>
+    <message>
+        <source>display scaling</source>
+        <translation>Anzeigenormierung</translation>
+    </message>
+    <message>
+        <source>parameter name</source>
+        <translation>Parametername</translation>
+    </message>
+    <message>
+        <source>plaintext indices</source>
+        <translation>Klartextindizes</translation>
+    </message>
+    <message>
+        <source>display plaintext</source>
+        <translation>Anzeigeklartext</translation>
+    </message>
+    <message>
+        <source>plaintext</source>
+        <translation>Klartext</translation>
+    </message>
+    <message>
+        <source>group properties</source>
+        <translation>Gruppeneigenschaften</translation>
+    </message>
+    <message>
+        <source>group name</source>
+        <translation>Gruppenname</translation>
+    </message>
+    <message>
+        <source>plaintext definition</source>
+        <translation>Klartextdefinition</translation>
+    </message>
+    <message>
+        <source>field-bus function</source>
+        <translation>Feldbusfunktion</translation>
+    </message>
+    <message>
+        <source>value (subindex)</source>
+        <translation>Wert (Subindex)</translation>
+    </message>
+    <message>
+        <source>process data 2x32</source>
+        <translation>Prozessdaten 2x32</translation>
+    </message>
+    <message>
+        <source>process data 4x16</source>
+        <translation>Prozessdaten 4x16</translation>
+    </message>
+    <message>
+        <source>scope</source>
+        <translation>Scope</translation>
+    </message>
+    <message>
+        <source>process data type 4</source>
+        <translation>Prozessdaten Typ 4</translation>
+    </message>
+    <message>
+        <source>process data type 5</source>
+        <translation>Prozessdaten Typ 5</translation>
+    </message>
+    <message>
+        <source>scope record</source>
+        <translation>Scope-Aufzeichnung</translation>
+    </message>
+    <message>
+        <source>default (set mask)</source>
+        <translation>Defaultwert (Satzmaske)</translation>
+    </message>
+    <message>
+        <source>default (standard set)</source>
+        <translation>Defaultwert (Standardsatz)</translation>
+    </message>
+    <message>
+        <source>duplex process data 2x32</source>
+        <translation>Duplex-Prozessdaten 2x32</translation>
+    </message>
+    <message>
+        <source>duplex process data 4x16</source>
+        <translation>Duplex-Prozessdaten 4x16</translation>
+    </message>
+    <message>
+        <source>duplex process data + parameter</source>
+        <translation>Duplex-Prozessdaten + Parameter</translation>
+    </message>
+    <message>
+        <source>duplex process data type 4</source>
+        <translation>Duplex-Prozessdaten Typ 4</translation>
+    </message>
+    <message>
+        <source>duplex process data type 5</source>
+        <translation>Duplex-Prozessdaten Typ 5</translation>
+    </message>
+    <message>
+        <source>duplex process data type 6</source>
+        <translation>Duplex-Prozessdaten Typ 6</translation>
+    </message>
+    <message>
+        <source>service %1</source>
+        <translation>Dienst %1</translation>
+    </message>
+</context>
+<context>
+    <name>TelegramText</name>
+    <message>
+        <source> (subindex %1)</source>
+        <translation> (Subindex %1)</translation>
+    </message>
+    <message>
+        <source>write %1 = %2%3</source>
+        <translation>schreibe %1 = %2%3</translation>
+    </message>
+    <message>
+        <source>read %1%2</source>
+        <translation>lies %1%2</translation>
+    </message>
+    <message>
+        <source>reset %1 to its default%2</source>
+        <translation>setze %1 auf den Defaultwert%2</translation>
+    </message>
+    <message>
+        <source>check whether %1 holds its default%2</source>
+        <translation>prüfe, ob %1 den Defaultwert hat%2</translation>
+    </message>
+    <message>
+        <source>read the limits of %1</source>
+        <translation>lies die Grenzen von %1</translation>
+    </message>
+    <message>
+        <source>read the default of %1</source>
+        <translation>lies den Defaultwert von %1</translation>
+    </message>
+    <message>
+        <source>read the properties of %1</source>
+        <translation>lies die Eigenschaften von %1</translation>
+    </message>
+    <message>
+        <source>read the display scaling of %1</source>
+        <translation>lies die Anzeigenormierung von %1</translation>
+    </message>
+    <message>
+        <source>read the name of group %1</source>
+        <translation>lies den Namen der Gruppe %1</translation>
+    </message>
+    <message>
+        <source>read the name of %1</source>
+        <translation>lies den Namen von %1</translation>
+    </message>
+    <message>
+        <source>read the plaintext indices of %1</source>
+        <translation>lies die Klartextindizes von %1</translation>
+    </message>
+    <message>
+        <source>read the properties of group %1</source>
+        <translation>lies die Eigenschaften der Gruppe %1</translation>
+    </message>
+    <message>
+        <source>read plaintext %1.%2.%3</source>
+        <translation>lies Klartext %1.%2.%3</translation>
+    </message>
+    <message>
+        <source>read plaintext definition %1.%2</source>
+        <translation>lies Klartextdefinition %1.%2</translation>
+    </message>
+    <message>
+        <source>read display plaintext %1.%2 for %3</source>
+        <translation>lies Anzeigeklartext %1.%2 für %3</translation>
+    </message>
+    <message>
+        <source>write %1</source>
+        <translation>schreibe %1</translation>
+    </message>
+    <message>
+        <source>read %1</source>
+        <translation>lies %1</translation>
+    </message>
+    <message>
+        <source>write %1: %2</source>
+        <translation>schreibe %1: %2</translation>
+    </message>
+    <message>
+        <source>read %1: %2</source>
+        <translation>lies %1: %2</translation>
+    </message>
+    <message>
+        <source>written: %1 = %2%3</source>
+        <translation>geschrieben: %1 = %2%3</translation>
+    </message>
+    <message>
+        <source>%1: %2%3</source>
+        <translation>%1: %2%3</translation>
+    </message>
+    <message>
+        <source>%1 reset to its default%2</source>
+        <translation>%1 auf den Defaultwert gesetzt%2</translation>
+    </message>
+    <message>
+        <source>%1 holds its default%2</source>
+        <translation>%1 hat den Defaultwert%2</translation>
+    </message>
+    <message>
+        <source>limits of %1: %2 .. %3</source>
+        <translation>Grenzen von %1: %2 .. %3</translation>
+    </message>
+    <message>
+        <source>default of %1: %2</source>
+        <translation>Defaultwert von %1: %2</translation>
+    </message>
+    <message>
+        <source>properties of %1: %2, %3</source>
+        <translation>Eigenschaften von %1: %2, %3</translation>
+    </message>
+    <message>
+        <source>display scaling of %1: divisor %2, multiplier %3, offset %4, flags %5</source>
+        <translation>Anzeigenormierung von %1: Divisor %2, Multiplikator %3, Offset %4, Flags %5</translation>
+    </message>
+    <message>
+        <source>name of group %1: &quot;%2&quot;</source>
+        <translation>Name der Gruppe %1: „%2“</translation>
+    </message>
+    <message>
+        <source>name of %1: &quot;%2&quot;</source>
+        <translation>Name von %1: „%2“</translation>
+    </message>
+    <message>
+        <source>plaintext indices of %1: display %2 (%3), COMBIVIS %4 (%5)</source>
+        <translation>Klartextindizes von %1: Anzeige %2 (%3), COMBIVIS %4 (%5)</translation>
+    </message>
+    <message>
+        <source>group %1: id %2, order %3, highest number %4, count %5</source>
+        <translation>Gruppe %1: Kennung %2, Reihenfolge %3, höchste Nummer %4, Anzahl %5</translation>
+    </message>
+    <message>
+        <source>plaintext %1.%2.%3: %4 = &quot;%5&quot;</source>
+        <translation>Klartext %1.%2.%3: %4 = „%5“</translation>
+    </message>
+    <message>
+        <source>plaintext definition %1.%2: mask %3, count %4, &quot;%5&quot;</source>
+        <translation>Klartextdefinition %1.%2: Maske %3, Anzahl %4, „%5“</translation>
+    </message>
+    <message>
+        <source>scope at %1 ms: %2, %3, %4, %5</source>
+        <translation>Scope bei %1 ms: %2, %3, %4, %5</translation>
+    </message>
+    <message>
+        <source>%1: done</source>
+        <translation>%1: erledigt</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>to drive %1: %2</source>
+        <translation>an Umrichter %1: %2</translation>
+    </message>
+    <message>
+        <source>answer to no open request: %1</source>
+        <translation>Antwort ohne offene Anfrage: %1</translation>
+    </message>
+    <message>
+        <source>answer to no open request: %1, %2</source>
+        <translation>Antwort ohne offene Anfrage: %1, %2</translation>
+    </message>
+    <message>
+        <source>%1 refused: %2</source>
+        <translation>%1 abgelehnt: %2</translation>
+    </message>
+</context>
+<context>
     <name>TrafficFile</name>
     <message>
         <source>Cannot save the telegrams to %1: %2</source>
@@ -2820,6 +3228,14 @@ Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
     <message>
         <source>error</source>
         <translation>Fehler</translation>
+    </message>
+    <message>
+        <source>inverter request: %1</source>
+        <translation>Anfrage des Umrichters: %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 </TS>

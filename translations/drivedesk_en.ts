@@ -235,6 +235,10 @@
         <source>Password level: %1</source>
         <translation>Password level: %1</translation>
     </message>
+    <message>
+        <source>the connection closed before the drive answered</source>
+        <translation>the connection closed before the drive answered</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::AccessFeature</name>
@@ -253,6 +257,10 @@
     <message>
         <source>Password level: %1</source>
         <translation>Password level: %1</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>not connected</translation>
     </message>
 </context>
 <context>
@@ -494,6 +502,14 @@
     <message>
         <source>timeout %1 ms</source>
         <translation>timeout %1 ms</translation>
+    </message>
+    <message>
+        <source>no answer within %1 ms (attempt %2 of %3), asking again</source>
+        <translation>no answer within %1 ms (attempt %2 of %3), asking again</translation>
+    </message>
+    <message>
+        <source>no answer within %1 ms (attempt %2 of %3), given up</source>
+        <translation>no answer within %1 ms (attempt %2 of %3), given up</translation>
     </message>
 </context>
 <context>
@@ -773,25 +789,6 @@
     </message>
 </context>
 <context>
-    <name>DriveDesk::DriveSearch</name>
-    <message>
-        <source>the addresses %1..%2 hold no drive address (drives are 0..239)</source>
-        <translation>the addresses %1..%2 hold no drive address (drives are 0..239)</translation>
-    </message>
-    <message>
-        <source>drive %1: %2</source>
-        <translation>drive %1: %2</translation>
-    </message>
-    <message>
-        <source>drive %1 answered</source>
-        <translation>drive %1 answered</translation>
-    </message>
-    <message>
-        <source>no drive at %1</source>
-        <translation>no drive at %1</translation>
-    </message>
-</context>
-<context>
     <name>DriveDesk::DriveSession</name>
     <message>
         <source>the scan was cancelled</source>
@@ -972,6 +969,10 @@
             <numerusform>cancelled, %n values not read</numerusform>
         </translation>
     </message>
+    <message>
+        <source>; the drive changes this value itself, so the write cannot be undone</source>
+        <translation>; the drive changes this value itself, so the write cannot be undone</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::EditingFeature</name>
@@ -1098,10 +1099,6 @@
         <translation>&amp;Differs from Default</translation>
     </message>
     <message>
-        <source>Only parameters whose value differs from the default</source>
-        <translation>Only parameters whose value differs from the default</translation>
-    </message>
-    <message>
         <source>F&amp;avourites</source>
         <translation>F&amp;avourites</translation>
     </message>
@@ -1136,6 +1133,10 @@
     <message>
         <source>Show the raw integers the drive holds instead of scaled values and plaintexts</source>
         <translation>Show the raw integers the drive holds instead of scaled values and plaintexts</translation>
+    </message>
+    <message>
+        <source>Only settings whose value differs from the default (not read-only or live values)</source>
+        <translation>Only settings whose value differs from the default (not read-only or live values)</translation>
     </message>
 </context>
 <context>
@@ -1193,10 +1194,6 @@
         <translation>Stopped.</translation>
     </message>
     <message>
-        <source>Stopped after %1 of %2 addresses.</source>
-        <translation>Stopped after %1 of %2 addresses.</translation>
-    </message>
-    <message>
         <source>The search stopped: %1</source>
         <translation>The search stopped: %1</translation>
     </message>
@@ -1212,12 +1209,31 @@
         </translation>
     </message>
     <message>
-        <source>Drive at address %1</source>
-        <translation>Drive at address %1</translation>
-    </message>
-    <message>
         <source>Could not search: %1</source>
         <translation>Could not search: %1</translation>
+    </message>
+    <message>
+        <source>Stopping...</source>
+        <translation>Stopping...</translation>
+    </message>
+    <message>
+        <source>Drive %1, connected now</source>
+        <translation>Drive %1, connected now</translation>
+    </message>
+    <message>
+        <source>Drive %1</source>
+        <translation>Drive %1</translation>
+    </message>
+    <message>
+        <source>gave no identification</source>
+        <translation>gave no identification</translation>
+    </message>
+    <message numerus="yes">
+        <source>Stopped after %1 of %2 addresses: %n drive(s) answered.</source>
+        <translation>
+            <numerusform>Stopped after %1 of %2 addresses: %n drive answered.</numerusform>
+            <numerusform>Stopped after %1 of %2 addresses: %n drives answered.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1393,10 +1409,6 @@
         <translation>&amp;View</translation>
     </message>
     <message>
-        <source>&amp;Language</source>
-        <translation>&amp;Language</translation>
-    </message>
-    <message>
         <source>&amp;Help</source>
         <translation>&amp;Help</translation>
     </message>
@@ -1457,6 +1469,14 @@
             <numerusform>The drive has %n group.</numerusform>
             <numerusform>The drive has %n groups.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>&amp;Language (from the next start)</source>
+        <translation>&amp;Language (from the next start)</translation>
+    </message>
+    <message>
+        <source>Takes effect when DriveDesk starts again</source>
+        <translation>Takes effect when DriveDesk starts again</translation>
     </message>
 </context>
 <context>
@@ -1542,10 +1562,6 @@
     <message>
         <source>%1 is read-only</source>
         <translation>%1 is read-only</translation>
-    </message>
-    <message>
-        <source>%1 needs password level %2</source>
-        <translation>%1 needs password level %2</translation>
     </message>
     <message>
         <source>%1: no set chosen</source>
@@ -1642,6 +1658,22 @@
         <source>Access</source>
         <translation>Access</translation>
     </message>
+    <message>
+        <source>%1 needs password level %2 (in force: %3)</source>
+        <translation>%1 needs password level %2 (in force: %3)</translation>
+    </message>
+    <message>
+        <source>The drive runs with this set (active set, Fr.02)</source>
+        <translation>The drive runs with this set (active set, Fr.02)</translation>
+    </message>
+    <message>
+        <source>Value / set 0 (active)</source>
+        <translation>Value / set 0 (active)</translation>
+    </message>
+    <message>
+        <source>Set %1 (active)</source>
+        <translation>Set %1 (active)</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::PasswordDialog</name>
@@ -1668,6 +1700,14 @@
     <message>
         <source>not read yet</source>
         <translation>not read yet</translation>
+    </message>
+    <message>
+        <source>Asking the drive ...</source>
+        <translation>Asking the drive ...</translation>
+    </message>
+    <message>
+        <source>Not accepted: %1</source>
+        <translation>Not accepted: %1</translation>
     </message>
 </context>
 <context>
@@ -2082,6 +2122,41 @@ The DriveDesk parameter editor. Without --connect it opens the connection dialog
     <message>
         <source>Type %1, software %2, serial number %3</source>
         <translation>Type %1, software %2, serial number %3</translation>
+    </message>
+</context>
+<context>
+    <name>FindDrivesJob</name>
+    <message>
+        <source>inverter identifier %1</source>
+        <translation>inverter identifier %1</translation>
+    </message>
+    <message>
+        <source>software %1</source>
+        <translation>software %1</translation>
+    </message>
+    <message>
+        <source>serial number %1</source>
+        <translation>serial number %1</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <source>the addresses %1..%2 hold no drive address (drives are 0..239)</source>
+        <translation>the addresses %1..%2 hold no drive address (drives are 0..239)</translation>
+    </message>
+    <message>
+        <source>drive %1: %2</source>
+        <translation>drive %1: %2</translation>
+    </message>
+    <message>
+        <source>drive %1 answered</source>
+        <translation>drive %1 answered</translation>
+    </message>
+    <message>
+        <source>no drive at %1</source>
+        <translation>no drive at %1</translation>
     </message>
 </context>
 <context>
@@ -2777,6 +2852,339 @@ The DriveDesk parameter editor. Without --connect it opens the connection dialog
     </message>
 </context>
 <context>
+    <name>SetList</name>
+    <message>
+        <source>no set</source>
+        <translation>no set</translation>
+    </message>
+    <message>
+        <source>all sets</source>
+        <translation>all sets</translation>
+    </message>
+    <message>
+        <source>set %1</source>
+        <translation>set %1</translation>
+    </message>
+    <message>
+        <source>sets %1</source>
+        <translation>sets %1</translation>
+    </message>
+    <message>
+        <source>active set</source>
+        <translation>active set</translation>
+    </message>
+    <message>
+        <source>set of the set pointer</source>
+        <translation>set of the set pointer</translation>
+    </message>
+    <message>
+        <source>set selection %1</source>
+        <translation>set selection %1</translation>
+    </message>
+</context>
+<context>
+    <name>Telegram</name>
+    <message>
+        <source>unspecified</source>
+        <translation>unspecified</translation>
+    </message>
+    <message>
+        <source>status interrogation</source>
+        <translation>status interrogation</translation>
+    </message>
+    <message>
+        <source>DIN66019 value</source>
+        <translation>DIN66019 value</translation>
+    </message>
+    <message>
+        <source>value (set mask)</source>
+        <translation>value (set mask)</translation>
+    </message>
+    <message>
+        <source>value (standard set)</source>
+        <translation>value (standard set)</translation>
+    </message>
+    <message>
+        <source>limits</source>
+        <translation>limits</translation>
+    </message>
+    <message>
+        <source>default value</source>
+        <translation>default value</translation>
+    </message>
+    <message>
+        <source>properties</source>
+        <translation>properties</translation>
+    </message>
+    <message>
+        <source>display scaling</source>
+        <translation>display scaling</translation>
+    </message>
+    <message>
+        <source>parameter name</source>
+        <translation>parameter name</translation>
+    </message>
+    <message>
+        <source>plaintext indices</source>
+        <translation>plaintext indices</translation>
+    </message>
+    <message>
+        <source>display plaintext</source>
+        <translation>display plaintext</translation>
+    </message>
+    <message>
+        <source>plaintext</source>
+        <translation>plaintext</translation>
+    </message>
+    <message>
+        <source>group properties</source>
+        <translation>group properties</translation>
+    </message>
+    <message>
+        <source>group name</source>
+        <translation>group name</translation>
+    </message>
+    <message>
+        <source>plaintext definition</source>
+        <translation>plaintext definition</translation>
+    </message>
+    <message>
+        <source>field-bus function</source>
+        <translation>field-bus function</translation>
+    </message>
+    <message>
+        <source>value (subindex)</source>
+        <translation>value (subindex)</translation>
+    </message>
+    <message>
+        <source>process data 2x32</source>
+        <translation>process data 2x32</translation>
+    </message>
+    <message>
+        <source>process data 4x16</source>
+        <translation>process data 4x16</translation>
+    </message>
+    <message>
+        <source>scope</source>
+        <translation>scope</translation>
+    </message>
+    <message>
+        <source>process data type 4</source>
+        <translation>process data type 4</translation>
+    </message>
+    <message>
+        <source>process data type 5</source>
+        <translation>process data type 5</translation>
+    </message>
+    <message>
+        <source>scope record</source>
+        <translation>scope record</translation>
+    </message>
+    <message>
+        <source>default (set mask)</source>
+        <translation>default (set mask)</translation>
+    </message>
+    <message>
+        <source>default (standard set)</source>
+        <translation>default (standard set)</translation>
+    </message>
+    <message>
+        <source>duplex process data 2x32</source>
+        <translation>duplex process data 2x32</translation>
+    </message>
+    <message>
+        <source>duplex process data 4x16</source>
+        <translation>duplex process data 4x16</translation>
+    </message>
+    <message>
+        <source>duplex process data + parameter</source>
+        <translation>duplex process data + parameter</translation>
+    </message>
+    <message>
+        <source>duplex process data type 4</source>
+        <translation>duplex process data type 4</translation>
+    </message>
+    <message>
+        <source>duplex process data type 5</source>
+        <translation>duplex process data type 5</translation>
+    </message>
+    <message>
+        <source>duplex process data type 6</source>
+        <translation>duplex process data type 6</translation>
+    </message>
+    <message>
+        <source>service %1</source>
+        <translation>service %1</translation>
+    </message>
+</context>
+<context>
+    <name>TelegramText</name>
+    <message>
+        <source> (subindex %1)</source>
+        <translation> (subindex %1)</translation>
+    </message>
+    <message>
+        <source>write %1 = %2%3</source>
+        <translation>write %1 = %2%3</translation>
+    </message>
+    <message>
+        <source>read %1%2</source>
+        <translation>read %1%2</translation>
+    </message>
+    <message>
+        <source>reset %1 to its default%2</source>
+        <translation>reset %1 to its default%2</translation>
+    </message>
+    <message>
+        <source>check whether %1 holds its default%2</source>
+        <translation>check whether %1 holds its default%2</translation>
+    </message>
+    <message>
+        <source>read the limits of %1</source>
+        <translation>read the limits of %1</translation>
+    </message>
+    <message>
+        <source>read the default of %1</source>
+        <translation>read the default of %1</translation>
+    </message>
+    <message>
+        <source>read the properties of %1</source>
+        <translation>read the properties of %1</translation>
+    </message>
+    <message>
+        <source>read the display scaling of %1</source>
+        <translation>read the display scaling of %1</translation>
+    </message>
+    <message>
+        <source>read the name of group %1</source>
+        <translation>read the name of group %1</translation>
+    </message>
+    <message>
+        <source>read the name of %1</source>
+        <translation>read the name of %1</translation>
+    </message>
+    <message>
+        <source>read the plaintext indices of %1</source>
+        <translation>read the plaintext indices of %1</translation>
+    </message>
+    <message>
+        <source>read the properties of group %1</source>
+        <translation>read the properties of group %1</translation>
+    </message>
+    <message>
+        <source>read plaintext %1.%2.%3</source>
+        <translation>read plaintext %1.%2.%3</translation>
+    </message>
+    <message>
+        <source>read plaintext definition %1.%2</source>
+        <translation>read plaintext definition %1.%2</translation>
+    </message>
+    <message>
+        <source>read display plaintext %1.%2 for %3</source>
+        <translation>read display plaintext %1.%2 for %3</translation>
+    </message>
+    <message>
+        <source>write %1</source>
+        <translation>write %1</translation>
+    </message>
+    <message>
+        <source>read %1</source>
+        <translation>read %1</translation>
+    </message>
+    <message>
+        <source>write %1: %2</source>
+        <translation>write %1: %2</translation>
+    </message>
+    <message>
+        <source>read %1: %2</source>
+        <translation>read %1: %2</translation>
+    </message>
+    <message>
+        <source>written: %1 = %2%3</source>
+        <translation>written: %1 = %2%3</translation>
+    </message>
+    <message>
+        <source>%1: %2%3</source>
+        <translation>%1: %2%3</translation>
+    </message>
+    <message>
+        <source>%1 reset to its default%2</source>
+        <translation>%1 reset to its default%2</translation>
+    </message>
+    <message>
+        <source>%1 holds its default%2</source>
+        <translation>%1 holds its default%2</translation>
+    </message>
+    <message>
+        <source>limits of %1: %2 .. %3</source>
+        <translation>limits of %1: %2 .. %3</translation>
+    </message>
+    <message>
+        <source>default of %1: %2</source>
+        <translation>default of %1: %2</translation>
+    </message>
+    <message>
+        <source>properties of %1: %2, %3</source>
+        <translation>properties of %1: %2, %3</translation>
+    </message>
+    <message>
+        <source>display scaling of %1: divisor %2, multiplier %3, offset %4, flags %5</source>
+        <translation>display scaling of %1: divisor %2, multiplier %3, offset %4, flags %5</translation>
+    </message>
+    <message>
+        <source>name of group %1: &quot;%2&quot;</source>
+        <translation>name of group %1: &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <source>name of %1: &quot;%2&quot;</source>
+        <translation>name of %1: &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <source>plaintext indices of %1: display %2 (%3), COMBIVIS %4 (%5)</source>
+        <translation>plaintext indices of %1: display %2 (%3), COMBIVIS %4 (%5)</translation>
+    </message>
+    <message>
+        <source>group %1: id %2, order %3, highest number %4, count %5</source>
+        <translation>group %1: id %2, order %3, highest number %4, count %5</translation>
+    </message>
+    <message>
+        <source>plaintext %1.%2.%3: %4 = &quot;%5&quot;</source>
+        <translation>plaintext %1.%2.%3: %4 = &quot;%5&quot;</translation>
+    </message>
+    <message>
+        <source>plaintext definition %1.%2: mask %3, count %4, &quot;%5&quot;</source>
+        <translation>plaintext definition %1.%2: mask %3, count %4, &quot;%5&quot;</translation>
+    </message>
+    <message>
+        <source>scope at %1 ms: %2, %3, %4, %5</source>
+        <translation>scope at %1 ms: %2, %3, %4, %5</translation>
+    </message>
+    <message>
+        <source>%1: done</source>
+        <translation>%1: done</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>to drive %1: %2</source>
+        <translation>to drive %1: %2</translation>
+    </message>
+    <message>
+        <source>answer to no open request: %1</source>
+        <translation>answer to no open request: %1</translation>
+    </message>
+    <message>
+        <source>answer to no open request: %1, %2</source>
+        <translation>answer to no open request: %1, %2</translation>
+    </message>
+    <message>
+        <source>%1 refused: %2</source>
+        <translation>%1 refused: %2</translation>
+    </message>
+</context>
+<context>
     <name>TrafficFile</name>
     <message>
         <source>Cannot save the telegrams to %1: %2</source>
@@ -2820,6 +3228,14 @@ The DriveDesk parameter editor. Without --connect it opens the connection dialog
     <message>
         <source>error</source>
         <translation>error</translation>
+    </message>
+    <message>
+        <source>inverter request: %1</source>
+        <translation>inverter request: %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 </TS>
