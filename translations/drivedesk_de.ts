@@ -1136,7 +1136,7 @@
     </message>
     <message>
         <source>Only settings whose value differs from the default (not read-only or live values)</source>
-        <translation>Nur Einstellungen, deren Wert vom Defaultwert abweicht (keine schreibgeschützten oder laufend gemessenen Werte)</translation>
+        <translation>Nur Einstellungen, deren Wert vom Vorgabewert abweicht (keine schreibgeschützten oder laufend gemessenen Werte)</translation>
     </message>
 </context>
 <context>
@@ -2910,7 +2910,7 @@ Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
     </message>
     <message>
         <source>default value</source>
-        <translation>Defaultwert</translation>
+        <translation>Vorgabewert</translation>
     </message>
     <message>
         <source>properties</source>
@@ -2982,11 +2982,11 @@ Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
     </message>
     <message>
         <source>default (set mask)</source>
-        <translation>Defaultwert (Satzmaske)</translation>
+        <translation>Vorgabewert (Satzmaske)</translation>
     </message>
     <message>
         <source>default (standard set)</source>
-        <translation>Defaultwert (Standardsatz)</translation>
+        <translation>Vorgabewert (Standardsatz)</translation>
     </message>
     <message>
         <source>duplex process data 2x32</source>
@@ -3033,11 +3033,11 @@ Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
     </message>
     <message>
         <source>reset %1 to its default%2</source>
-        <translation>setze %1 auf den Defaultwert%2</translation>
+        <translation>setze %1 auf den Vorgabewert%2</translation>
     </message>
     <message>
         <source>check whether %1 holds its default%2</source>
-        <translation>prüfe, ob %1 den Defaultwert hat%2</translation>
+        <translation>prüfe, ob %1 den Vorgabewert hat%2</translation>
     </message>
     <message>
         <source>read the limits of %1</source>
@@ -3045,7 +3045,7 @@ Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
     </message>
     <message>
         <source>read the default of %1</source>
-        <translation>lies den Defaultwert von %1</translation>
+        <translation>lies den Vorgabewert von %1</translation>
     </message>
     <message>
         <source>read the properties of %1</source>
@@ -3109,11 +3109,11 @@ Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
     </message>
     <message>
         <source>%1 reset to its default%2</source>
-        <translation>%1 auf den Defaultwert gesetzt%2</translation>
+        <translation>%1 auf den Vorgabewert gesetzt%2</translation>
     </message>
     <message>
         <source>%1 holds its default%2</source>
-        <translation>%1 hat den Defaultwert%2</translation>
+        <translation>%1 hat den Vorgabewert%2</translation>
     </message>
     <message>
         <source>limits of %1: %2 .. %3</source>
@@ -3121,7 +3121,7 @@ Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
     </message>
     <message>
         <source>default of %1: %2</source>
-        <translation>Defaultwert von %1: %2</translation>
+        <translation>Vorgabewert von %1: %2</translation>
     </message>
     <message>
         <source>properties of %1: %2, %3</source>

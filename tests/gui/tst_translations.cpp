@@ -1,3 +1,5 @@
+#include "tst_mainwindow_support.h"
+
 #include "bus/LinkFactory.h"
 #include "client/Reply.h"
 #include "edit/EditController.h"
@@ -16,6 +18,7 @@
 #include <QSet>
 #include <QSignalSpy>
 #include <QTest>
+#include <QToolBar>
 #include <QTranslator>
 #include <QUndoStack>
 #include <QXmlStreamReader>
@@ -157,6 +160,28 @@ private slots:
         QVERIFY(m_english.load(QStringLiteral(":/i18n/drivedesk_en.qm")));
         QVERIFY(!installTranslations(QStringLiteral("xx")));
         QVERIFY(installTranslations(QStringLiteral("de")));
+    }
+
+    // The German texts are longer: the toolbar still shows every action at the window's first
+    // size, none hidden behind the overflow arrow.
+    void theToolbarFitsInGerman()
+    {
+        MainWindowTest::IsolatedSettings settings;
+        MainWindow window(Language::German);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        auto *bar = window.findChild<QToolBar *>(QStringLiteral("mainToolBar"));
+        QVERIFY(bar);
+        QVERIFY(bar->actions().first()->text().startsWith(QLatin1String("&Verbinden")));
+        const auto *overflow = bar->findChild<QWidget *>(QStringLiteral("qt_toolbar_ext_button"));
+        QVERIFY(overflow);
+        QVERIFY(!overflow->isVisible());
+        for (QAction *action : bar->actions()) {
+            if (!action->isSeparator())
+                QVERIFY2(bar->widgetForAction(action)->isVisible(), qPrintable(action->text()));
+        }
+        QVERIFY(bar->widgetForAction(window.findChild<QAction *>(QStringLiteral("monitorAction")))
+                    ->isVisible());
     }
 
     void monitorColumnsAreGerman()

@@ -27,6 +27,7 @@ AccessFeature::AccessFeature(WindowFrame &frame, QObject *parent)
     QMenu *edit = frame.menu(WindowFrame::Menu::Edit);
     edit->addSeparator();
     edit->addAction(m_passwordAction);
+    m_passwordAction->setPriority(QAction::LowPriority); // icon only: the toolbar must fit
     QToolBar *bar = frame.toolBar();
     bar->addSeparator();
     bar->addAction(m_passwordAction);

@@ -70,6 +70,9 @@ EditingFeature::EditingFeature(WindowFrame &frame, QObject *parent)
     edit->addAction(m_resetAction);
     edit->addAction(m_writeSetsAction);
     edit->addAction(m_copySetAction);
+    // Icons only in the toolbar (see MainWindow::createMenus): it must fit in every language.
+    for (QAction *action : { m_undoAction, m_redoAction, m_resetAction })
+        action->setPriority(QAction::LowPriority);
     QToolBar *bar = frame.toolBar();
     bar->addSeparator();
     bar->addAction(m_undoAction);

@@ -125,6 +125,11 @@ void MainWindow::finishMenus()
 
     m_toolBar->addSeparator();
     m_toolBar->addAction(m_driveInfoAction);
+    // Only the most used actions (connect, refresh, polling) show their text beside the icon:
+    // the others show the icon and say what they do in the tooltip, so that the toolbar fits
+    // the window in every language instead of hiding actions behind its overflow arrow.
+    m_disconnectAction->setPriority(QAction::LowPriority);
+    m_driveInfoAction->setPriority(QAction::LowPriority);
 }
 
 QMenu *MainWindow::menu(Menu menu)

@@ -27,6 +27,7 @@ MonitorFeature::MonitorFeature(WindowFrame &frame, QObject *parent)
     QMenu *view = frame.menu(WindowFrame::Menu::View);
     view->addSeparator();
     view->addAction(action);
+    action->setPriority(QAction::LowPriority); // icon only: the toolbar must fit
     frame.toolBar()->addAction(action);
 }
 
