@@ -1,6 +1,7 @@
 #include "tst_mainwindow_support.h"
 
 #include "bus/LinkFactory.h"
+#include "main/ConnectionDialog.h"
 #include "client/Reply.h"
 #include "edit/EditController.h"
 #include "link/ConnectionSettings.h"
@@ -18,6 +19,8 @@
 #include <QSet>
 #include <QSignalSpy>
 #include <QTest>
+#include <QTabBar>
+#include <QTabWidget>
 #include <QToolBar>
 #include <QTranslator>
 #include <QUndoStack>
@@ -182,6 +185,27 @@ private slots:
         }
         QVERIFY(bar->widgetForAction(window.findChild<QAction *>(QStringLiteral("monitorAction")))
                     ->isVisible());
+    }
+
+    void theConnectionDialogsTabsAreWhole()
+    {
+        MainWindowTest::IsolatedSettings settings;
+        ConnectionDialog dialog;
+        auto *tabs = dialog.findChild<QTabWidget *>();
+        QVERIFY(tabs);
+        tabs->setCurrentIndex(tabs->count() - 1);
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        dialog.resize(1, 1); // as narrow as the dialog lets itself be
+        QTRY_VERIFY(dialog.width() < 1000);
+        QTabBar *bar = tabs->tabBar();
+        QCOMPARE(bar->tabText(0), QStringLiteral("&Serielle Schnittstelle"));
+        for (int i = 0; i < bar->count(); ++i) {
+            const QString text = bar->tabText(i).remove(QLatin1Char('&'));
+            QVERIFY2(bar->rect().contains(bar->tabRect(i)), qPrintable(text));
+            QVERIFY2(bar->tabRect(i).width() > bar->fontMetrics().horizontalAdvance(text),
+                     qPrintable(text));
+        }
     }
 
     void monitorColumnsAreGerman()

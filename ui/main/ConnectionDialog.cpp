@@ -17,6 +17,8 @@
 #include <QPushButton>
 #include <QSerialPortInfo>
 #include <QSpinBox>
+#include <QStyle>
+#include <QTabBar>
 #include <QTabWidget>
 #include <QVBoxLayout>
 
@@ -53,6 +55,12 @@ ConnectionDialog::ConnectionDialog(QWidget *parent)
     m_tabs->insertTab(SerialTab, createSerialPage(), tr("&Serial port"));
     m_tabs->insertTab(TcpTab, createTcpPage(), tr("&TCP"));
     m_tabs->insertTab(SimulatedTab, createSimulatedPage(), tr("Si&mulated drive"));
+    // Every tab's title whole, in every language: no eliding, and no scroll arrows that push
+    // the first tab half out of sight when the last one is chosen.
+    m_tabs->setElideMode(Qt::ElideNone);
+    m_tabs->setUsesScrollButtons(false);
+    m_tabs->setMinimumWidth(m_tabs->tabBar()->sizeHint().width()
+                            + 2 * style()->pixelMetric(QStyle::PM_DefaultFrameWidth));
 
     m_protocol = new QComboBox;
     m_protocol->setObjectName(QStringLiteral("protocol"));
