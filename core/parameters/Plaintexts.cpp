@@ -117,6 +117,13 @@ QString Plaintexts::text(qint32 raw) const
     return parts.isEmpty() ? noText : parts.join(kSeparator);
 }
 
+qint32 Plaintexts::withField(qint32 raw, qsizetype index, qint32 fieldValue) const
+{
+    Q_ASSERT(index >= 0 && index < m_definitions.size());
+    const quint32 mask = effectiveMask(m_definitions.at(index));
+    return qint32((quint32(raw) & ~mask) | (quint32(fieldValue) & mask));
+}
+
 QStringList Plaintexts::allowedTexts() const
 {
     QStringList texts;

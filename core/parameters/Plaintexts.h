@@ -59,6 +59,11 @@ public:
     std::optional<qint32> value(const QString &text, QString *error = nullptr,
                                 qint32 current = 0) const;
 
+    // A bit-field value with one field chosen: the bits under the mask of definition `index`
+    // taken from `fieldValue` (in place, as entry values are), every other bit kept from `raw`.
+    // How an editor of the fields composes the value, one field at a time.
+    qint32 withField(qint32 raw, qsizetype index, qint32 fieldValue) const;
+
     // Every text in definition order, e.g. for a combo box.
     QStringList allowedTexts() const;
 

@@ -79,6 +79,20 @@ private slots:
         }
     }
 
+    void oneFieldIsChosenKeepingEveryOtherBit()
+    {
+        const Plaintexts texts = seedExample();
+        // Direction to reverse: released, brake and the stray bit 10h stay.
+        QCOMPARE(texts.withField(0x1B, 1, 0x4), 0x1D);
+        QCOMPARE(texts.withField(0x1D, 0, 0x0), 0x1C);
+        // Only the field's own bits are taken from the value given.
+        QCOMPARE(texts.withField(0x0, 2, -1), 0x8);
+        QCOMPARE(texts.withField(qint32(0x80000000), 1, 0x2), qint32(0x80000002));
+        const Plaintexts whole({ definition(0, "Mode", { { 3, "three" } }),
+                                 definition(0x10, "Flag", { { 0x10, "on" } }) });
+        QCOMPARE(whole.withField(0x1234, 0, 3), 3); // a mask of 0 covers every bit
+    }
+
     void unknownTextsListWhatIsAllowed()
     {
         const Plaintexts texts = seedExample();
