@@ -1,5 +1,6 @@
 #include "../parameters/EditorSampleDrive.h"
 
+#include "delegate/BitFieldEditor.h"
 #include "delegate/HexValueEdit.h"
 #include "delegate/ParameterDelegate.h"
 #include "delegate/PlaintextEditors.h"
@@ -7,7 +8,11 @@
 #include "model/ParameterFilterModel.h"
 #include "model/ParameterModel.h"
 
+#include <QApplication>
+#include <QDialogButtonBox>
+#include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QStandardItemModel>
 #include <QTest>
@@ -172,26 +177,178 @@ private slots:
         QCOMPARE(m_model->valueIndex(kSource, 0).data().toString(), QStringLiteral("bus"));
     }
 
-    void bitFieldsGetOneComboBoxPerDefinition()
+    void aPickedTextIsWrittenWithoutEnter()
+    {
+        auto *combo = qobject_cast<PlaintextComboBox *>(openEditor(kSource));
+        QVERIFY(combo);
+        QSignalSpy edited(m_model.get(), &ParameterModel::valueEdited);
+        combo->showPopup();
+        QAbstractItemView *list = combo->view();
+        QTRY_VERIFY(list->isVisible());
+        const QRect bus = list->visualRect(list->model()->index(2, 0));
+        QTest::mouseMove(list->viewport(), bus.center());
+        QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, bus.center());
+        QTRY_COMPARE(edited.size(), 1);
+        QCOMPARE(edited.at(0).at(0).value<quint16>(), kSource);
+        QCOMPARE(edited.at(0).at(2).value<qint32>(), 2);
+        QTRY_VERIFY(!m_view->indexWidget(viewIndex(kSource))); // closed
+        QCOMPARE(m_model->valueIndex(kSource, 0).data().toString(), QStringLiteral("bus"));
+    }
+
+    void steppingAClosedComboBoxWritesOnlyOnEnter()
+    {
+        auto *combo = qobject_cast<PlaintextComboBox *>(openEditor(kSource));
+        QVERIFY(combo);
+        QSignalSpy edited(m_model.get(), &ParameterModel::valueEdited);
+        QCOMPARE(combo->currentText(), QStringLiteral("analog"));
+        QTest::keyClick(combo, Qt::Key_Down);
+        QCOMPARE(combo->currentText(), QStringLiteral("bus"));
+        QCOMPARE(edited.size(), 0);
+        QCOMPARE(m_view->indexWidget(viewIndex(kSource)), combo);
+        QTest::keyClick(combo, Qt::Key_Return);
+        QTRY_COMPARE(edited.size(), 1);
+        QCOMPARE(edited.at(0).at(2).value<qint32>(), 2);
+    }
+
+    void bitFieldsOpenAPopupWithALabelPerDefinition()
     {
         m_model->setValue(kControl, 0, 0x0105); // bit 8 belongs to no definition
+        const QModelIndex cell = viewIndex(kControl);
         auto *editor = qobject_cast<BitFieldEditor *>(openEditor(kControl));
         QVERIFY(editor);
+        QTRY_VERIFY(editor->isVisible());
+        QVERIFY(editor->isWindow()); // not clipped by the cell, nor by the view
+
+        QCOMPARE(editor->labels().size(), 2);
         QCOMPARE(editor->fields().size(), 2);
+        QCOMPARE(editor->labels().at(0)->text(), QStringLiteral("Direction:"));
+        QCOMPARE(editor->labels().at(1)->text(), QStringLiteral("Release:"));
+        QCOMPARE(editor->labels().at(0)->buddy(), editor->fields().at(0));
+        QCOMPARE(editor->fields().at(0)->currentText(), QStringLiteral("forward"));
+        QCOMPARE(editor->fields().at(1)->currentText(), QStringLiteral("released"));
+        QVERIFY(editor->findChild<QLabel *>()->text().startsWith(QStringLiteral("Pn.05")));
+
+        // Room for everything it holds, and more than the cell.
+        const QRect cellRect = m_view->visualRect(cell);
+        QVERIFY(editor->width() >= editor->sizeHint().width());
+        QVERIFY(editor->width() > cellRect.width());
+        QList<QWidget *> shown;
+        for (QLabel *label : editor->findChildren<QLabel *>())
+            shown << label;
+        for (QComboBox *field : editor->fields())
+            shown << field;
+        for (QPushButton *button : editor->findChildren<QPushButton *>())
+            shown << button;
+        for (QWidget *widget : std::as_const(shown)) {
+            if (widget->isHidden())
+                continue;
+            const QRect within(widget->mapTo(editor, QPoint(0, 0)), widget->size());
+            QVERIFY2(editor->rect().contains(within), qPrintable(widget->objectName()));
+            QVERIFY(widget->width() >= widget->sizeHint().width()
+                    || (qobject_cast<QLabel *>(widget)
+                        && qobject_cast<QLabel *>(widget)->wordWrap()));
+            const int needed = widget->hasHeightForWidth() ? widget->heightForWidth(widget->width())
+                                                           : widget->sizeHint().height();
+            QVERIFY2(widget->height() >= needed,
+                     qPrintable(QStringLiteral("%1 '%2': %3 < %4")
+                                    .arg(QString::fromLatin1(widget->metaObject()->className()),
+                                         widget->property("text").toString())
+                                    .arg(widget->height())
+                                    .arg(needed)));
+        }
+        // Opens where the cell is.
+        QCOMPARE(editor->pos(), m_view->viewport()->mapToGlobal(cellRect.topLeft()));
+
+        // Tab goes from field to field.
+        QTRY_COMPARE(QApplication::focusWidget(), editor->fields().at(0));
+        QTest::keyClick(editor->fields().at(0), Qt::Key_Tab);
+        QCOMPARE(QApplication::focusWidget(), editor->fields().at(1));
+        QCOMPARE(m_view->indexWidget(cell), editor);
+    }
+
+    void enterWritesTheComposedBitField()
+    {
+        m_model->setValue(kControl, 0, 0x0105);
+        auto *editor = qobject_cast<BitFieldEditor *>(openEditor(kControl));
+        QVERIFY(editor);
+        QSignalSpy edited(m_model.get(), &ParameterModel::valueEdited);
         QComboBox *direction = editor->fields().at(0);
         QComboBox *release = editor->fields().at(1);
-        QCOMPARE(direction->toolTip(), QStringLiteral("Direction"));
-        QCOMPARE(direction->currentText(), QStringLiteral("forward"));
-        QCOMPARE(release->currentText(), QStringLiteral("released"));
-
-        QSignalSpy edited(m_model.get(), &ParameterModel::valueEdited);
         direction->setCurrentIndex(direction->findText(QStringLiteral("reverse")));
         release->setCurrentIndex(release->findText(QStringLiteral("locked")));
-        QTest::keyClick(editor, Qt::Key_Return);
+        QVERIFY(editor->findChildren<QLabel *>().last()->text().contains(
+            QStringLiteral("reverse | locked | other bits 0100h")));
+        QCOMPARE(edited.size(), 0);
+        QTest::keyClick(release, Qt::Key_Return);
         QTRY_COMPARE(edited.size(), 1);
+        QCOMPARE(edited.at(0).at(0).value<quint16>(), kControl);
+        QCOMPARE(edited.at(0).at(1).value<quint8>(), quint8(0x01));
         QCOMPARE(edited.at(0).at(2).value<qint32>(), 0x0102);
+        QTRY_VERIFY(!m_view->indexWidget(viewIndex(kControl)));
         QCOMPARE(m_model->valueIndex(kControl, 0).data().toString(),
                  QStringLiteral("reverse | locked | other bits 0100h"));
+
+        // OK writes as Enter does.
+        editor = qobject_cast<BitFieldEditor *>(openEditor(kControl));
+        QVERIFY(editor);
+        editor->fields().at(0)->setCurrentIndex(0); // stop
+        auto *buttons = editor->findChild<QDialogButtonBox *>();
+        QVERIFY(buttons);
+        QTest::mouseClick(buttons->button(QDialogButtonBox::Ok), Qt::LeftButton);
+        QTRY_COMPARE(edited.size(), 2);
+        QCOMPARE(edited.at(1).at(2).value<qint32>(), 0x0100);
+    }
+
+    void aBitFieldPopupClosedWithoutEnterWritesNothing()
+    {
+        QSignalSpy edited(m_model.get(), &ParameterModel::valueEdited);
+        auto pickReverse = [this](int set) {
+            auto *editor = qobject_cast<BitFieldEditor *>(openEditor(kControl, set));
+            if (editor)
+                editor->fields().at(0)->setCurrentIndex(2);
+            return editor;
+        };
+
+        BitFieldEditor *editor = pickReverse(0);
+        QVERIFY(editor);
+        QTest::keyClick(editor->fields().at(0), Qt::Key_Escape);
+        QTRY_VERIFY(!m_view->indexWidget(viewIndex(kControl)));
+
+        editor = pickReverse(0);
+        QVERIFY(editor);
+        QTest::mouseClick(editor->findChild<QDialogButtonBox *>()->button(
+                              QDialogButtonBox::Cancel),
+                          Qt::LeftButton);
+        QTRY_VERIFY(!m_view->indexWidget(viewIndex(kControl)));
+
+        editor = pickReverse(0);
+        QVERIFY(editor);
+        editor->close(); // as a click outside the popup closes it
+        QTRY_VERIFY(!m_view->indexWidget(viewIndex(kControl)));
+
+        QTest::qWait(50);
+        QCOMPARE(edited.size(), 0);
+        QCOMPARE(m_model->editState(kControl, 0), EditState::None);
+        QCOMPARE(m_model->valueIndex(kControl, 0).data().toString(),
+                 QStringLiteral("forward | released"));
+    }
+
+    void aBitFieldOutsideTheLimitsIsRefused()
+    {
+        // Below the minimum 0 already: left alone it may stay, changed it may not.
+        m_model->setValue(kControl, 0, qint32(0x80000005));
+        QSignalSpy edited(m_model.get(), &ParameterModel::valueEdited);
+        QSignalSpy refused(m_delegate.get(), &ParameterDelegate::editRefused);
+        auto *editor = qobject_cast<BitFieldEditor *>(openEditor(kControl));
+        QVERIFY(editor);
+        editor->fields().at(0)->setCurrentIndex(editor->fields().at(0)->findText(
+            QStringLiteral("reverse")));
+        QTest::keyClick(editor->fields().at(0), Qt::Key_Return);
+        QCOMPARE(refused.size(), 1);
+        QVERIFY(refused.at(0).at(1).toString().contains(QStringLiteral("outside the limits")));
+        QCOMPARE(m_view->indexWidget(viewIndex(kControl)), editor); // still open
+        QTest::qWait(50);
+        QCOMPARE(edited.size(), 0);
     }
 
     void hexadecimalParametersGetAHexLineEdit()

@@ -3,8 +3,6 @@
 #include "ValueEditor.h"
 
 #include <QComboBox>
-#include <QList>
-#include <QWidget>
 
 namespace DriveDesk {
 
@@ -17,32 +15,19 @@ class PlaintextComboBox : public QComboBox, public ValueEditor
 public:
     explicit PlaintextComboBox(const ParameterFormat &format, QWidget *parent = nullptr);
 
-protected:
-    void setRawValue(qint32 raw) override;
-    std::optional<qint32> editedValue(QString *problem) const override;
-};
-
-// A bit-field parameter (several plaintext definitions, each over its own bits): one combo box
-// per definition, the value composed from their masks. Bits no definition with texts covers
-// keep their starting value.
-class BitFieldEditor : public QWidget, public ValueEditor
-{
-    Q_OBJECT
-public:
-    explicit BitFieldEditor(const ParameterFormat &format, QWidget *parent = nullptr);
-
-    // One combo box per definition with texts, in definition order.
-    const QList<QComboBox *> &fields() const { return m_fields; }
+signals:
+    // The user picked a text from the list (a click, or Enter in the open list): write it.
+    // Stepping the closed combo box with the keyboard or the wheel picks nothing yet.
+    void picked();
 
 protected:
     void setRawValue(qint32 raw) override;
     std::optional<qint32> editedValue(QString *problem) const override;
+    void keyPressEvent(QKeyEvent *event) override;
+    void wheelEvent(QWheelEvent *event) override;
 
 private:
-    QList<QComboBox *> m_fields;
-    QList<PlaintextDefinition> m_definitions; // those with texts, one per field
-    quint32 m_covered = 0;
-    qint32 m_start = 0;
+    bool m_stepping = false;
 };
 
 } // namespace DriveDesk
