@@ -1,5 +1,6 @@
 // drivedesk-sim: simulated KEB drives on TCP or on a pseudo-terminal, for DriveDesk and for
 // any other program that talks HSP5 or DIN66019(II).
+#include "bus/SimulatedBus.h"
 #include "bus/SimulatorServer.h"
 #include "link/TcpTarget.h"
 
@@ -280,9 +281,18 @@ int main(int argc, char *argv[])
     // A signal handler must never block, even if signals pile up.
     ::fcntl(g_signalPipe[1], F_SETFL, ::fcntl(g_signalPipe[1], F_GETFL) | O_NONBLOCK);
     QSocketNotifier signalNotifier(qintptr(g_signalPipe[0]), QSocketNotifier::Read);
-    QObject::connect(&signalNotifier, &QSocketNotifier::activated, &app, [] {
+    SimulatorServer server(options.protocol, options.simulation);
+    // SIGUSR1 freezes the drives (the connection stays open, nothing is answered) and thaws
+    // them again: a drive that stops answering, on demand.
+    QObject::connect(&signalNotifier, &QSocketNotifier::activated, &app, [&server] {
         char byte = 0;
         [[maybe_unused]] const ssize_t n = ::read(g_signalPipe[0], &byte, 1);
+        if (byte == char(SIGUSR1)) {
+            server.bus().setSilent(!server.bus().isSilent());
+            say(server.bus().isSilent() ? tr("the drives stopped answering (SIGUSR1 again: answer)")
+                                        : tr("the drives answer again"));
+            return;
+        }
         QCoreApplication::quit();
     });
     struct sigaction action {};
@@ -291,8 +301,8 @@ int main(int argc, char *argv[])
     action.sa_flags = SA_RESTART;
     ::sigaction(SIGINT, &action, nullptr);
     ::sigaction(SIGTERM, &action, nullptr);
+    ::sigaction(SIGUSR1, &action, nullptr);
 
-    SimulatorServer server(options.protocol, options.simulation);
     const bool listening = options.tcpPort >= 0
                                ? server.listenTcp(options.tcpHost, quint16(options.tcpPort), &error)
                                : server.listenPty(options.ptyPath, &error);

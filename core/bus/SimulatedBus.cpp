@@ -83,11 +83,26 @@ qint64 SimulatedBus::idleGapNs() const
     return std::max(kMinimumIdleGapNs, lineTimeNs(10));
 }
 
+void SimulatedBus::setSilent(bool silent)
+{
+    if (silent == m_silent)
+        return;
+    m_silent = silent;
+    if (!silent) {
+        m_decoder->reset();
+        m_lostStep = false;
+    }
+}
+
 void SimulatedBus::receive(QByteArrayView bytes, qint64 nowNs)
 {
     if (bytes.isEmpty())
         return;
     m_counters.bytesToDrive += bytes.size();
+    if (m_silent) {
+        m_counters.ignoredWhileSilent += bytes.size();
+        return;
+    }
     // The chunk occupies the line before any answer to it can start (DIN: a shared line).
     const Timeline &line = inbound();
     const qint64 first = occupy(inbound(), nowNs, bytes.size());

@@ -36,6 +36,7 @@ struct BusCounters {
     int busyReplies = 0;
     int unsolicitedRequests = 0; // HSP5 requests the inverter started
     int unsolicitedAnswers = 0;  // the operator's answers to them, consumed
+    qint64 ignoredWhileSilent = 0; // bytes from the operator no drive took: the bus was silent
 };
 
 // One telegram on its way from the drives to the operator. Times in ns on the bus clock:
@@ -73,6 +74,12 @@ public:
     // The bytes of every transmission due at nowNs, in order, and where the operator's UART
     // flagged a character (indices into the result, see BusTransmission).
     QByteArray takeDue(qint64 nowNs, QList<qsizetype> *lineErrors = nullptr);
+
+    // A frozen drive (a fault injected at run time): while silent, the drives take nothing
+    // from the line and answer nothing, and the line itself stays open. Answers already on
+    // their way still arrive. Coming back, the drives start on a fresh telegram.
+    void setSilent(bool silent);
+    bool isSilent() const { return m_silent; }
 
     // A new operator on the line: drops partial input, pending output and the selection.
     // The drives keep their state.
@@ -149,6 +156,7 @@ private:
     // quiet, as a real drive must, and whatever was pipelined behind is lost.
     bool m_lostStep = false;
     int m_selection = -1;
+    bool m_silent = false;
     quint8 m_inverterInvoke = 0;      // HSP5: INV-ID-FU of the last unsolicited request
     quint16 m_pendingUnsolicited = 0; // HSP5: bit n set = INV-ID-FU n awaits its answer
 };

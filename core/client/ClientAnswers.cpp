@@ -25,6 +25,10 @@ void ClientWorker::onReceived(const QByteArray &bytes)
     if (m_state != DriveClient::State::Connected)
         return;
     m_sinceLastByte.restart();
+    if (!bytes.isEmpty()) {
+        ++m_receptions;
+        setDriveSilent(false); // whatever came, the drive is there
+    }
     m_decoder->feed(bytes);
     if (m_draining)
         return;
@@ -347,6 +351,11 @@ void ClientWorker::complete(PendingRequest &request, Reply::Status status, const
         reply.response = completeAnswer(request.wire, *answer);
     reply.attempts = request.attempts;
     reply.detail = detail.isEmpty() ? transportDetail(request, status) : detail;
+    // Every attempt timed out and not a byte came since the first went out: the drive is silent.
+    if (status == Reply::Status::Timeout && m_state == DriveClient::State::Connected
+        && !request.options.probe && request.timeouts > 0
+        && !request.heard && request.receptionsBefore == m_receptions)
+        setDriveSilent(true);
     const Completion done = std::move(request.done);
     request.done = nullptr;
     done(reply, request.heard);

@@ -67,7 +67,22 @@ void ClientWorker::setState(DriveClient::State state)
     if (m_state == state)
         return;
     m_state = state;
+    if (state != DriveClient::State::Connected)
+        setDriveSilent(false); // a drive that is not connected is not "silent"
     emit stateChanged(state);
+}
+
+void ClientWorker::setDriveSilent(bool silent)
+{
+    if (silent == m_driveSilent)
+        return;
+    m_driveSilent = silent;
+    if (silent) {
+        record(TrafficRecord::Kind::Error, {},
+               tr("the drive has gone silent: a request was given up after every attempt and "
+                  "nothing came from the drive since"));
+    }
+    emit driveSilentChanged(silent);
 }
 
 void ClientWorker::connectToDrive()
@@ -203,6 +218,7 @@ quint64 ClientWorker::submitProbe(const Telegram &request, quint64 owner, Comple
     RequestOptions options;
     options.owner = owner;
     options.retries = 0;
+    options.probe = true;
     options.timeoutMs = std::min(probeTimeoutMs(m_settings, m_options,
                                                 requestCharacters + kProbeAnswerCharacters),
                                  m_answerTimeoutMs);
@@ -309,6 +325,8 @@ bool ClientWorker::expectsAnswer(const PendingRequest &request) const
 
 void ClientWorker::transmit(PendingRequest &request)
 {
+    if (request.attempts == 0)
+        request.receptionsBefore = m_receptions;
     ++request.attempts;
     request.wire = request.request;
     request.wire.direction = Direction::Request;

@@ -68,12 +68,14 @@ signals:
     void connected();
     void connectionFailed(const QString &reason);
     void linkLost(const QString &reason);
+    void driveSilentChanged(bool silent);
     void traffic(const DriveDesk::TrafficRecord &record);
 
 private:
     using Request = std::unique_ptr<PendingRequest>;
 
     void setState(DriveClient::State state);
+    void setDriveSilent(bool silent);
     void onLinkOpened();
     void onLinkFailed(const QString &reason);
     void dropLink();
@@ -133,6 +135,8 @@ private:
     QElapsedTimer m_sinceLastSend;
     const int m_quietLineMs = 0;
     quint64 m_answersMatched = 0;
+    quint64 m_receptions = 0; // chunks of bytes received from the drive
+    bool m_driveSilent = false;
     bool m_recovering = false;
     quint8 m_lastInvokeId = 0;
     int m_selectedDrive = -1; // DIN66019(II): the drive the last EOT selected, -1 unknown

@@ -41,6 +41,7 @@ DriveClient::DriveClient(ConnectionSettings settings, LinkMaker makeLink, Client
     connect(m_worker, &ClientWorker::connected, this, &DriveClient::connected);
     connect(m_worker, &ClientWorker::connectionFailed, this, &DriveClient::connectionFailed);
     connect(m_worker, &ClientWorker::linkLost, this, &DriveClient::linkLost);
+    connect(m_worker, &ClientWorker::driveSilentChanged, this, &DriveClient::setDriveSilent);
     connect(m_worker, &ClientWorker::traffic, this, &DriveClient::traffic);
     m_thread->start();
 }
@@ -59,6 +60,14 @@ void DriveClient::setState(State state)
         return;
     m_state = state;
     emit stateChanged(state);
+}
+
+void DriveClient::setDriveSilent(bool silent)
+{
+    if (m_driveSilent == silent)
+        return;
+    m_driveSilent = silent;
+    emit driveSilentChanged(silent);
 }
 
 void DriveClient::connectToDrive()

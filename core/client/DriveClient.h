@@ -75,6 +75,10 @@ public:
 
     const ConnectionSettings &settings() const { return m_settings; }
     State state() const { return m_state; }
+    // Connected, but the drive stopped answering: a request was given up after every attempt
+    // and nothing at all came from the drive since it was first sent. Clears by itself with
+    // the next byte from the drive, and whenever the connection ends.
+    bool isDriveSilent() const { return m_driveSilent; }
 
     void connectToDrive();
     void disconnectFromDrive();
@@ -110,16 +114,19 @@ signals:
     void connected();
     void connectionFailed(const QString &reason);
     void linkLost(const QString &reason);
+    void driveSilentChanged(bool silent);
     void traffic(const DriveDesk::TrafficRecord &record);
 
 private:
     void setState(State state);
+    void setDriveSilent(bool silent);
     void start(std::shared_ptr<RequestJobBase> job);
 
     ConnectionSettings m_settings;
     ClientOptions m_options;
     LinkMaker m_makeLink;
     std::atomic<State> m_state = State::Disconnected; // read from any thread
+    std::atomic<bool> m_driveSilent = false;          // read from any thread
     QThread *m_thread = nullptr; // owned; stopped and joined in the destructor
     ClientWorker *m_worker = nullptr; // owned by its thread, deleted on finished
 };

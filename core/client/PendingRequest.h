@@ -13,6 +13,7 @@ struct RequestOptions {
     int timeoutMs = 0;  // 0: the client's answer timeout
     int retries = -1;   // -1: ClientOptions::retries
     quint64 owner = 0;  // ClientWorker::cancelOwner() drops the requests of one job
+    bool probe = false; // may go unanswered (no drive at the address): says nothing of silence
 };
 
 // How a request ended. `heard`: something came back while it waited, even a garbled answer,
@@ -41,6 +42,7 @@ struct PendingRequest {
     Stage stage = Stage::Queued;
     QDeadlineTimer deadline;
     quint64 answersBefore = 0; // answers the client had matched when this attempt went out
+    quint64 receptionsBefore = 0; // bytes the client had received when it first went out
 
     int attempts = 0;
     int timeouts = 0;

@@ -107,6 +107,26 @@ private slots:
         QCOMPARE(bus.counters().partialDrops, 1);
     }
 
+    void aSilentBusTakesNothingAndAnswersNothing()
+    {
+        SimulatedBus bus(Protocol::Hsp5, quietOptions());
+        Operator op(Protocol::Hsp5);
+        bus.setSilent(true);
+        QVERIFY(bus.isSilent());
+        const QByteArray request = op.encode(readValue(kStateAddress, 1));
+        QCOMPARE(exchange(bus, request), QByteArray());
+        // Half a telegram while frozen is not the start of the next one.
+        bus.receive(request.first(3), 1'000'000);
+        QCOMPARE(bus.counters().requests, 0);
+        QCOMPARE(bus.counters().ignoredWhileSilent, request.size() + 3);
+
+        bus.setSilent(false);
+        const QList<Telegram> replies = ask(bus, op, readValue(kStateAddress, 2), 2'000'000);
+        QCOMPARE(replies.size(), 1);
+        QCOMPARE(replies[0].operatorInvoke, quint8(2));
+        QCOMPARE(replies[0].ack, Ack::Ok);
+    }
+
     void dinNoAnswerWithoutSelection()
     {
         SimulatedBus bus(Protocol::Din66019II, quietOptions());

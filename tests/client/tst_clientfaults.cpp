@@ -1,7 +1,9 @@
 #include "ClientTestSupport.h"
 
 #include "bus/LinkFactory.h"
+#include "bus/SimulatedBus.h"
 #include "bus/SimulatorServer.h"
+#include "client/FindDrivesJob.h"
 
 #include <QTest>
 
@@ -183,6 +185,55 @@ private slots:
         QCOMPARE(s.client->state(), DriveClient::State::Lost);
         QCOMPARE(replyOf(s.client->readValue(kMaxSpeedForward, 1)).status,
                  Reply::Status::NotConnected);
+    }
+
+    void silentDriveIsReportedAndClearsWhenItAnswers()
+    {
+        // The drive freezes behind an open TCP connection: no answers, no closed socket.
+        SimulatorServer server(Protocol::Hsp5, fast());
+        QString error;
+        QVERIFY2(server.listenTcp(QStringLiteral("127.0.0.1"), 0, &error), qPrintable(error));
+        ConnectionSettings settings;
+        settings.kind = ConnectionSettings::Kind::Tcp;
+        settings.host = QStringLiteral("127.0.0.1");
+        settings.port = server.tcpPort();
+        settings.protocol = Protocol::Hsp5;
+        ClientOptions options;
+        options.timeoutMs = 50;
+        Session s(settings, options);
+        QVERIFY(s.connected());
+        QSignalSpy silence(s.client.get(), &DriveClient::driveSilentChanged);
+        QVERIFY(s.call(s.client->readValue(kMotorVoltage, 1)).ok());
+        QVERIFY(!s.client->isDriveSilent());
+
+        server.bus().setSilent(true);
+        const Reply unanswered = s.call(s.client->readValue(kMotorVoltage, 1));
+        QCOMPARE(unanswered.status, Reply::Status::Timeout);
+        QTRY_VERIFY(s.client->isDriveSilent());
+        QCOMPARE(silence.size(), 1);
+        QCOMPARE(silence.first().at(0).toBool(), true);
+        QCOMPARE(s.client->state(), DriveClient::State::Connected); // the link is still open
+        QVERIFY(server.bus().counters().ignoredWhileSilent > 0);
+
+        server.bus().setSilent(false);
+        const Reply answered = s.call(s.client->readValue(kMotorVoltage, 1));
+        QVERIFY2(answered.ok(), qPrintable(describeReply(answered)));
+        QTRY_VERIFY(!s.client->isDriveSilent());
+        QCOMPARE(silence.size(), 2);
+        QCOMPARE(silence.last().at(0).toBool(), false);
+    }
+
+    void probesThatGoUnansweredDoNotMakeTheDriveSilent()
+    {
+        // A search asks addresses where no drive is: that is no silence of the connected drive.
+        Session s(simulated(Protocol::Din66019II, fast()));
+        QVERIFY(s.connected());
+        const QFuture<FoundDrive> search
+            = s.client->run(std::make_shared<FindDrivesJob>(s.client->settings(), 2, 4));
+        QVERIFY(waitFinished(search));
+        QVERIFY(s.call(s.client->readValue(kMotorVoltage, 1)).ok());
+        QCoreApplication::processEvents();
+        QVERIFY(!s.client->isDriveSilent());
     }
 
     void refusedConnectionIsReported()

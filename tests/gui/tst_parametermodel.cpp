@@ -3,6 +3,8 @@
 #include "model/ParameterModel.h"
 
 #include <QAbstractItemModelTester>
+#include <QDateTime>
+#include <QFont>
 #include <QGuiApplication>
 #include <QIcon>
 #include <QPalette>
@@ -185,6 +187,49 @@ private slots:
         QVERIFY(!model.setValue(0x0999, 0, 1));
         QVERIFY(!model.setValue(kMaxFrequency, 8, 1));
         QCOMPARE(changed.size(), 501);
+    }
+
+    void valuesNotReadSinceTheDriveFellSilentAreStale()
+    {
+        ParameterModel model;
+        model.setDescription(drive());
+        QAbstractItemModelTester tester(&model);
+        QVERIFY(model.setValue(kFrequency, 0, 100));
+        const QModelIndex cell = model.valueIndex(kFrequency, 0);
+        const QDateTime read = cell.data(ParameterModel::LastReadRole).toDateTime();
+        QVERIFY(read.isValid());
+        QVERIFY(!cell.data(ParameterModel::StaleRole).toBool());
+        const QVariant freshForeground = cell.data(Qt::ForegroundRole);
+
+        QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
+        model.setStaleSince(read.toMSecsSinceEpoch() + 1000);
+        QVERIFY(!changed.isEmpty());
+        QVERIFY(model.isStale(kFrequency));
+        QVERIFY(cell.data(ParameterModel::StaleRole).toBool());
+        QVERIFY(cell.data(Qt::FontRole).value<QFont>().italic());
+        QVERIFY(cell.data(Qt::ForegroundRole) != freshForeground);
+        const QString tip = cell.data(Qt::ToolTipRole).toString();
+        QVERIFY2(tip.startsWith(QStringLiteral("Last read %1; the drive is not answering")
+                                    .arg(read.toString(QStringLiteral("HH:mm:ss")))),
+                 qPrintable(tip));
+        // Only value cells: the id and the name are not values of the drive.
+        QVERIFY(!model.indexOf(kFrequency).data(ParameterModel::StaleRole).toBool());
+
+        // The drive answers again: nothing is stale.
+        model.setStaleSince(0);
+        QVERIFY(!cell.data(ParameterModel::StaleRole).toBool());
+        QVERIFY(!cell.data(Qt::FontRole).value<QFont>().italic());
+        QVERIFY(!cell.data(Qt::ToolTipRole).toString().contains(QStringLiteral("not answering")));
+
+        // A value read after the drive fell silent is fresh, even when it did not change.
+        const qint64 since = read.toMSecsSinceEpoch() + 1;
+        model.setStaleSince(since);
+        QVERIFY(model.isStale(kFrequency));
+        changed.clear();
+        QTRY_VERIFY(QDateTime::currentMSecsSinceEpoch() > since);
+        QVERIFY(model.setValue(kFrequency, 0, 100));
+        QVERIFY(!model.isStale(kFrequency));
+        QCOMPARE(changed.size(), 1); // its row, so that the mark goes
     }
 
     void editingEmitsValueEditedAndMarksThePendingCell()

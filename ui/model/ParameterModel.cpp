@@ -3,6 +3,10 @@
 #include "parameters/ParameterAccess.h"
 #include "parameters/ParameterId.h"
 
+#include <QDateTime>
+
+#include <algorithm>
+
 namespace DriveDesk {
 
 namespace {
@@ -32,6 +36,7 @@ void ParameterModel::setDescription(const DriveDescription &drive)
     m_drive.groups = {};
     m_groups.reserve(std::size_t(drive.groups.size()));
     m_locations.reserve(drive.parameterCount());
+    const qint64 now = QDateTime::currentMSecsSinceEpoch();
     for (const GroupDescription &source : drive.groups) {
         Group group;
         group.description = source;
@@ -42,6 +47,9 @@ void ParameterModel::setDescription(const DriveDescription &drive)
             m_locations.insert(parameter.address, { groupRow, int(group.rows.size()) });
             group.rows.emplace_back(parameter, idFor(source, parameter.address));
             group.rows.back().searchText(m_raw); // built now, so that a keystroke only compares
+            const auto &values = parameter.values;
+            if (std::any_of(values.begin(), values.end(), [](const auto &v) { return v.has_value(); }))
+                group.rows.back().markRead(now);
         }
         m_groups.push_back(std::move(group));
     }
@@ -98,11 +106,36 @@ bool ParameterModel::setValue(quint16 address, int set, qint32 raw)
     if (!row || set < 0 || set >= kParameterSets)
         return false;
     const int cell = row->cellOf(set);
-    if (row->setValue(cell, raw)) {
-        const QModelIndex changed = indexOf(address, columnOfSet(cell));
-        emit dataChanged(changed, changed);
+    const bool wasStale = m_staleSinceMs != 0 && isStale(*row);
+    row->markRead(QDateTime::currentMSecsSinceEpoch());
+    if (row->setValue(cell, raw) || wasStale) {
+        if (wasStale) {
+            emitRowChanged(address);
+        } else {
+            const QModelIndex changed = indexOf(address, columnOfSet(cell));
+            emit dataChanged(changed, changed);
+        }
     }
     return true;
+}
+
+void ParameterModel::setStaleSince(qint64 msecsSinceEpoch)
+{
+    if (msecsSinceEpoch == m_staleSinceMs)
+        return;
+    m_staleSinceMs = msecsSinceEpoch;
+    emitAllChanged({ Qt::ForegroundRole, Qt::FontRole, Qt::ToolTipRole, StaleRole });
+}
+
+bool ParameterModel::isStale(quint16 address) const
+{
+    const ParameterRow *row = rowAt(address);
+    return row && isStale(*row);
+}
+
+bool ParameterModel::isStale(const ParameterRow &row) const
+{
+    return m_staleSinceMs != 0 && row.readAtMs() != 0 && row.readAtMs() < m_staleSinceMs;
 }
 
 bool ParameterModel::setValues(quint16 address, quint8 setMask, qint32 raw)

@@ -51,6 +51,8 @@ public:
         RawModeRole, // bool: values are shown raw
         GroupIdRole, // QString: a group row's id ("ru")
         EditRefusalRole, // QString: why the user may not change this parameter; empty if he may
+        StaleRole, // bool: a value cell not read since the drive stopped answering
+        LastReadRole, // QDateTime: when a value of the parameter last came from the drive
     };
 
     explicit ParameterModel(QObject *parent = nullptr);
@@ -68,6 +70,13 @@ public:
     // The same value for every set in the mask (a read over several sets).
     bool setValues(quint16 address, quint8 setMask, qint32 raw);
     std::optional<qint32> value(quint16 address, int set) const;
+
+    // The drive stopped answering at `msecsSinceEpoch`: the values not read since are stale,
+    // shown greyed and italic with when they were last read. 0: the drive answers, nothing is
+    // stale. A value read later is fresh again.
+    void setStaleSince(qint64 msecsSinceEpoch);
+    qint64 staleSince() const { return m_staleSinceMs; }
+    bool isStale(quint16 address) const;
     const ParameterDescription *parameter(quint16 address) const;
 
     // Asks for a write: checks that the user may edit the parameter and that the value lies
@@ -153,6 +162,7 @@ private:
     QString accessText(const ParameterRow &row) const;
     QString valueText(const ParameterRow &row, qint32 raw) const; // as the value cells show it
     bool isAboveLevel(const ParameterRow &row) const;
+    bool isStale(const ParameterRow &row) const;
     bool isEditable(const ParameterRow &row) const;
     // Why the user may not change the parameter (read-only, above the level in force); empty
     // when he may.
@@ -169,6 +179,7 @@ private:
     PasswordLevel m_level = PasswordLevel::Supervisor;
     int m_activeSet = -1;
     bool m_raw = false;
+    qint64 m_staleSinceMs = 0;
     CellDecoration m_decoration;
 };
 

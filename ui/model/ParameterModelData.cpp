@@ -3,6 +3,7 @@
 
 #include "parameters/ParameterId.h"
 
+#include <QDateTime>
 #include <QFont>
 
 namespace DriveDesk {
@@ -81,9 +82,20 @@ QVariant ParameterModel::parameterData(const ParameterRow &row, int column, int 
             return m_decoration.readOnlyBackground();
         return {};
     case Qt::ForegroundRole:
-        if (isAboveLevel(row))
+        if (isAboveLevel(row) || (cell >= 0 && isStale(row)))
             return m_decoration.lockedText();
         return {};
+    case Qt::FontRole:
+        if (cell >= 0 && isStale(row)) {
+            QFont font;
+            font.setItalic(true);
+            return font;
+        }
+        return {};
+    case StaleRole:
+        return cell >= 0 && isStale(row);
+    case LastReadRole:
+        return row.readAtMs() != 0 ? QDateTime::fromMSecsSinceEpoch(row.readAtMs()) : QDateTime();
     case RawValueRole:
         if (cell >= 0) {
             const std::optional<qint32> shown = row.shownValue(cell);
@@ -181,6 +193,12 @@ QVariant ParameterModel::toolTip(const ParameterRow &row, int column) const
                                                : tr("Not read: %1").arg(description.error);
         } else {
             text = tr("raw %1 = %2h").arg(*raw).arg(QString::number(quint32(*raw), 16).toUpper());
+        }
+        if (isStale(row)) {
+            const QString time = QDateTime::fromMSecsSinceEpoch(row.readAtMs())
+                                     .toString(QStringLiteral("HH:mm:ss"));
+            text = tr("Last read %1; the drive is not answering").arg(time) + QLatin1Char('\n')
+                   + text;
         }
         if (const QString refusal = editRefusal(row); !refusal.isEmpty())
             text += QLatin1Char('\n') + refusal;

@@ -44,6 +44,9 @@ public:
     std::optional<qint32> shownValue(int cell) const;
     // Stores what the drive reported; false when the drive's value did not change.
     bool setValue(int cell, qint32 raw);
+    // When a value of this parameter last came from the drive (ms since the epoch; 0: never).
+    qint64 readAtMs() const { return m_readAtMs; }
+    void markRead(qint64 msecsSinceEpoch) { m_readAtMs = msecsSinceEpoch; }
 
     EditState editState(int cell) const { return m_states[std::size_t(cell)]; }
     std::optional<qint32> requestedValue(int cell) const;
@@ -73,6 +76,7 @@ private:
     std::array<EditState, kParameterSets> m_states {};
     std::array<qint32, kParameterSets> m_requested {};
     std::array<QString, kParameterSets> m_failures;
+    qint64 m_readAtMs = 0;
 
     // Built when first asked for; a changed value drops its cell's text and the search text.
     mutable std::array<QString, kParameterSets> m_texts;
