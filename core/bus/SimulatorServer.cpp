@@ -7,6 +7,7 @@
 #include <QHostAddress>
 #include <QTcpServer>
 #include <QTcpSocket>
+#include <QTimer>
 
 namespace DriveDesk {
 
@@ -73,6 +74,11 @@ bool SimulatorServer::listenPty(const QString &linkPath, QString *error)
 void SimulatorServer::close()
 {
     m_server->close();
+    if (QTcpSocket *waiting = m_waiting) {
+        m_waiting = nullptr;
+        waiting->abort();
+        waiting->deleteLater();
+    }
     dropClient();
     m_pty->close();
     m_clock->resetLine();
@@ -106,30 +112,54 @@ QString SimulatorServer::ptyDevice() const
 void SimulatorServer::acceptConnections()
 {
     while (QTcpSocket *socket = m_server->nextPendingConnection()) {
-        if (m_client) {
-            // One operator per bus, as on a serial line: tell the second one by closing.
-            const QString peer = peerName(socket);
-            qInfo("simulated drives: refused a connection from %s: already serving %s",
-                  qPrintable(peer), qPrintable(m_clientPeer));
-            connect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
-            socket->disconnectFromHost();
-            emit connectionRefused(peer);
+        if (!m_client) {
+            take(socket);
             continue;
         }
-        m_client = socket;
-        m_clientPeer = peerName(socket);
-        socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
-        connect(socket, &QTcpSocket::readyRead, this, [this, socket] {
-            fromOperator(Route::Tcp, socket->readAll());
+        if (m_waiting) {
+            refuse(socket);
+            continue;
+        }
+        // An operator that closed its connection and opened a new one at once: the close and
+        // the new connection reach this event loop in either order. The newcomer waits a moment
+        // for the one served to go; one still there then keeps the bus.
+        m_waiting = socket;
+        QTimer::singleShot(kHandOverMs, this, [this, socket] {
+            if (m_waiting == socket) {
+                m_waiting = nullptr;
+                refuse(socket);
+            }
         });
-        connect(socket, &QTcpSocket::disconnected, this, [this, socket] {
-            if (socket == m_client)
-                dropClient();
-        });
-        // A new operator starts on a quiet line.
-        m_clock->resetLine();
-        emit clientConnected(m_clientPeer);
     }
+}
+
+void SimulatorServer::refuse(QTcpSocket *socket)
+{
+    // One operator per bus, as on a serial line: tell the second one by closing.
+    const QString peer = peerName(socket);
+    qInfo("simulated drives: refused a connection from %s: already serving %s",
+          qPrintable(peer), qPrintable(m_clientPeer));
+    connect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
+    socket->disconnectFromHost();
+    emit connectionRefused(peer);
+}
+
+void SimulatorServer::take(QTcpSocket *socket)
+{
+    m_client = socket;
+    m_clientPeer = peerName(socket);
+    socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
+    connect(socket, &QTcpSocket::readyRead, this,
+            [this, socket] { fromOperator(Route::Tcp, socket->readAll()); });
+    connect(socket, &QTcpSocket::disconnected, this, [this, socket] {
+        if (socket == m_client)
+            dropClient();
+    });
+    // A new operator starts on a quiet line; what it sent while it waited is its first word.
+    m_clock->resetLine();
+    emit clientConnected(m_clientPeer);
+    if (socket->bytesAvailable() > 0)
+        fromOperator(Route::Tcp, socket->readAll());
 }
 
 void SimulatorServer::dropClient()
@@ -145,6 +175,13 @@ void SimulatorServer::dropClient()
     socket->deleteLater();
     m_clock->resetLine();
     emit clientDisconnected(peer);
+    if (QTcpSocket *next = m_waiting) {
+        m_waiting = nullptr;
+        if (next->state() == QAbstractSocket::ConnectedState)
+            take(next);
+        else
+            next->deleteLater();
+    }
 }
 
 void SimulatorServer::fromOperator(Route route, const QByteArray &bytes)

@@ -52,7 +52,12 @@ signals:
 private:
     enum class Route : quint8 { Tcp, Pty };
 
+    // How long a new connection waits for the one served to close before it is refused.
+    static constexpr int kHandOverMs = 500;
+
     void acceptConnections();
+    void take(QTcpSocket *socket);
+    void refuse(QTcpSocket *socket);
     void dropClient();
     void fromOperator(Route route, const QByteArray &bytes);
     void toOperator(const QByteArray &bytes);
@@ -62,6 +67,7 @@ private:
     QTcpServer *m_server = nullptr;
     QPointer<QTcpSocket> m_client;
     QString m_clientPeer;
+    QPointer<QTcpSocket> m_waiting; // a new connection waiting for m_client to close
     PseudoTerminal *m_pty = nullptr;
     Route m_route = Route::Tcp;
 };

@@ -14,6 +14,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPointer>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -380,6 +381,106 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(m_window->isReady(), kWaitMs);
         QVERIFY(!m_window->noticeBar()->isVisible());
         QVERIFY(m_window->browser()->view()->editTriggers() != QAbstractItemView::NoEditTriggers);
+        QCOMPARE(m_window->model()->rowCount(), kSimulatedGroups);
+    }
+
+    void aDriveThatStopsAnsweringIsShownAsSuchAndRecovers()
+    {
+        SimulationOptions options;
+        options.replyLatencyUs = 0;
+        ServedDrive server(Protocol::Hsp5, options);
+        QString error;
+        QVERIFY2(server.listen(0, &error), qPrintable(error));
+        const bool read = connectAndRead(*m_window, server.settings(Protocol::Hsp5));
+        QVERIFY2(read, qPrintable(m_window->noticeBar()->text()));
+        auto *polling = m_window->findChild<QAction *>(QStringLiteral("pollingAction"));
+        polling->setChecked(true);
+        PollingController *controller = m_window->session()->pollingController();
+        QTRY_VERIFY_WITH_TIMEOUT(controller->roundsCompleted() > 0, kWaitMs);
+        const QModelIndex live = m_window->model()->valueIndex(kInverterState, 0);
+        QVERIFY(!live.data(ParameterModel::StaleRole).toBool());
+
+        // Frozen behind an open connection: the window says so, without waiting for the user.
+        server.setSilent(true);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->noticeBar()->kind(), NoticeBar::Kind::Problem, kWaitMs);
+        QVERIFY(m_window->noticeBar()->isVisible());
+        QVERIFY2(m_window->noticeBar()->text().contains(QStringLiteral("not answering")),
+                 qPrintable(m_window->noticeBar()->text()));
+        auto *reconnect
+            = m_window->noticeBar()->findChild<QPushButton *>(QStringLiteral("noticeReconnect"));
+        QVERIFY(reconnect && reconnect->isVisible());
+        QVERIFY2(statusLabel("connectionState").contains(QStringLiteral("not answering")),
+                 qPrintable(statusLabel("connectionState")));
+        QVERIFY(live.data(ParameterModel::StaleRole).toBool());
+        QVERIFY(live.data(ParameterModel::LastReadRole).toDateTime().isValid());
+        QVERIFY(live.data(Qt::ToolTipRole).toString().contains(QStringLiteral("not answering")));
+        QVERIFY(polling->isChecked());
+
+        // It answers again: everything clears by itself.
+        server.setSilent(false);
+        QTRY_VERIFY_WITH_TIMEOUT(!m_window->noticeBar()->isVisible(), kWaitMs);
+        QTRY_VERIFY_WITH_TIMEOUT(!live.data(ParameterModel::StaleRole).toBool(), kWaitMs);
+        QVERIFY(!statusLabel("connectionState").contains(QStringLiteral("not answering")));
+        QVERIFY(statusLabel("connectionState").startsWith(QStringLiteral("Connected")));
+        QVERIFY(m_window->isReady());
+    }
+
+    void connectingAgainClosesTheOldLinkFirst()
+    {
+        // A device server that serves one connection at a time, as the simulator does.
+        SimulationOptions options;
+        options.replyLatencyUs = 0;
+        ServedDrive server(Protocol::Hsp5, options);
+        QString error;
+        QVERIFY2(server.listen(0, &error), qPrintable(error));
+        const bool read = connectAndRead(*m_window, server.settings(Protocol::Hsp5));
+        QVERIFY2(read, qPrintable(m_window->noticeBar()->text()));
+        for (int round = 0; round < 4; ++round) {
+            QPointer<DriveSession> old = m_window->session();
+            m_window->connectTo(server.settings(Protocol::Hsp5));
+            QTRY_VERIFY_WITH_TIMEOUT(old.isNull() && m_window->isReady(), kWaitMs);
+            QVERIFY2(!m_window->noticeBar()->isVisible()
+                         || m_window->noticeBar()->kind() != NoticeBar::Kind::Problem,
+                     qPrintable(m_window->noticeBar()->text()));
+            QCOMPARE(m_window->model()->rowCount(), kSimulatedGroups);
+        }
+    }
+
+    void aFailedConnectKeepsWhatWasShown()
+    {
+        SimulationOptions options;
+        options.replyLatencyUs = 0;
+        ServedDrive server(Protocol::Hsp5, options);
+        QString error;
+        QVERIFY2(server.listen(0, &error), qPrintable(error));
+        const bool read = connectAndRead(*m_window, server.settings(Protocol::Hsp5));
+        QVERIFY2(read, qPrintable(m_window->noticeBar()->text()));
+        const std::optional<qint32> before = m_window->model()->value(kDemoPeriod, 0);
+        QVERIFY(before);
+        const QString title = m_window->windowTitle();
+
+        // A gateway where nothing listens.
+        ServedDrive gone(Protocol::Hsp5, options);
+        QVERIFY2(gone.listen(0, &error), qPrintable(error));
+        const ConnectionSettings nowhere = gone.settings(Protocol::Hsp5);
+        gone.close();
+        m_window->connectTo(nowhere);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->noticeBar()->kind(), NoticeBar::Kind::Problem, kWaitMs);
+        QVERIFY2(m_window->noticeBar()->text().contains(QStringLiteral("Could not connect")),
+                 qPrintable(m_window->noticeBar()->text()));
+        QCOMPARE(m_window->model()->rowCount(), kSimulatedGroups);
+        QCOMPARE(m_window->model()->value(kDemoPeriod, 0), before);
+        QCOMPARE(m_window->windowTitle(), title);
+        const auto *reconnect
+            = m_window->noticeBar()->findChild<QPushButton *>(QStringLiteral("noticeReconnect"));
+        const auto *connectButton
+            = m_window->noticeBar()->findChild<QPushButton *>(QStringLiteral("noticeConnect"));
+        QVERIFY(reconnect->isVisible() && connectButton->isVisible());
+        QVERIFY(!m_window->isReady());
+
+        // Back to the first gateway: the drive is read again.
+        m_window->connectTo(server.settings(Protocol::Hsp5));
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->isReady(), kWaitMs);
         QCOMPARE(m_window->model()->rowCount(), kSimulatedGroups);
     }
 

@@ -1,6 +1,8 @@
 #pragma once
 
+#include "bus/SimulatedBus.h"
 #include "bus/SimulatorServer.h"
+#include "main/DriveSession.h"
 #include "main/MainWindow.h"
 #include "main/ParameterBrowser.h"
 #include "main/ParameterView.h"
@@ -9,6 +11,7 @@
 
 #include <QCoreApplication>
 #include <QDir>
+#include <QPointer>
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QTest>
@@ -93,6 +96,13 @@ public:
         QMetaObject::invokeMethod(
             m_server, [this] { m_server->close(); }, Qt::BlockingQueuedConnection);
     }
+    // Freezes the drives (the connection stays open, nothing is answered) or thaws them.
+    void setSilent(bool silent)
+    {
+        QMetaObject::invokeMethod(
+            m_server, [this, silent] { m_server->bus().setSilent(silent); },
+            Qt::BlockingQueuedConnection);
+    }
     quint16 port() const { return m_port; }
     ConnectionSettings settings(Protocol protocol) const
     {
@@ -121,8 +131,10 @@ inline ConnectionSettings simulated(Protocol protocol = Protocol::Hsp5)
 // Connects and waits until the scan filled the model and the level and sets were read.
 inline bool connectAndRead(MainWindow &window, const ConnectionSettings &settings)
 {
+    // A session still connected closes its link first: the new one is ready when it is gone.
+    const QPointer<DriveSession> old = window.session();
     window.connectTo(settings);
-    return QTest::qWaitFor([&window] { return window.isReady(); }, kWaitMs);
+    return QTest::qWaitFor([&window, old] { return old.isNull() && window.isReady(); }, kWaitMs);
 }
 
 template<typename T> bool waitFinished(const QFuture<T> &future)

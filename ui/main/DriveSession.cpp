@@ -28,7 +28,14 @@ DriveSession::DriveSession(const ConnectionSettings &settings, ParameterModel *m
     m_polling->setGroup(kLiveGroup);
     m_access = new AccessController(m_client, model, this);
 
-    connect(m_client, &DriveClient::stateChanged, this, &DriveSession::stateChanged);
+    connect(m_client, &DriveClient::stateChanged, this, [this](DriveClient::State state) {
+        emit stateChanged(state);
+        if (m_reconnecting && state == DriveClient::State::Disconnected) {
+            m_reconnecting = false;
+            m_client->connectToDrive();
+        }
+    });
+    connect(m_client, &DriveClient::driveSilentChanged, this, &DriveSession::driveSilentChanged);
     connect(m_client, &DriveClient::connected, this, &DriveSession::onConnected);
     connect(m_client, &DriveClient::connectionFailed, this, &DriveSession::connectionFailed);
     connect(m_client, &DriveClient::linkLost, this, [this](const QString &reason) {
@@ -68,6 +75,17 @@ DriveSession::~DriveSession()
 void DriveSession::start()
 {
     m_client->connectToDrive();
+}
+
+void DriveSession::reconnect()
+{
+    const DriveClient::State state = m_client->state();
+    if (state != DriveClient::State::Connected && state != DriveClient::State::Connecting) {
+        start();
+        return;
+    }
+    m_reconnecting = true;
+    disconnectFromDrive();
 }
 
 void DriveSession::disconnectFromDrive()

@@ -34,9 +34,13 @@ public:
     AccessController *accessController() const { return m_access; }
     const ConnectionSettings &settings() const { return m_client->settings(); }
     DriveClient::State state() const { return m_client->state(); }
+    // Connected, but the drive does not answer (DriveClient::isDriveSilent()).
+    bool isDriveSilent() const { return m_client->isDriveSilent(); }
 
     // Connects; the first time the drive is scanned into the model, later its values re-read.
     void start();
+    // Closes the link where it is open, waits until it is closed, and connects again.
+    void reconnect();
     void disconnectFromDrive();
     void cancelScan();
     // Reads the drive into the model: metadata from the cache where the drive is of a cached
@@ -61,6 +65,8 @@ signals:
     void connected();
     void connectionFailed(const QString &reason);
     void linkLost(const QString &reason);
+    // The drive stopped answering while the link stays open (true), or answers again.
+    void driveSilentChanged(bool silent);
     void scanStarted();
     void scanProgress(int value, int maximum, const QString &text);
     // The model holds the drive now. `drive` is the scan's result (metadata and values).
@@ -86,6 +92,7 @@ private:
     std::optional<quint16> m_setPointer;
     bool m_described = false;
     bool m_pollingWanted = false;
+    bool m_reconnecting = false; // reconnect(): connect once the old link is closed
 };
 
 } // namespace DriveDesk

@@ -16,6 +16,7 @@
 #include <QAction>
 #include <QCloseEvent>
 #include <QCryptographicHash>
+#include <QDateTime>
 #include <QDockWidget>
 #include <QFile>
 #include <QIcon>
@@ -152,16 +153,35 @@ bool MainWindow::isReady() const
 void MainWindow::connectTo(ConnectionSettings settings)
 {
     settings.language = m_language;
+    m_nextSettings = settings;
+    const DriveClient::State state = m_session ? m_session->state() : DriveClient::State::Lost;
+    if (state == DriveClient::State::Connected || state == DriveClient::State::Connecting) {
+        // A device server may serve one connection at a time: the old link is closed first,
+        // and the new one opened once the client reports it closed (onStateChanged).
+        m_notice->showProgress(tr("Closing the connection to %1...")
+                                   .arg(RecentConnections::describe(m_session->settings())),
+                               0, 0);
+        m_session->disconnectFromDrive();
+        return;
+    }
+    openNextSession();
+}
+
+void MainWindow::openNextSession()
+{
+    if (!m_nextSettings)
+        return;
+    const ConnectionSettings settings = *m_nextSettings;
+    m_nextSettings.reset();
     if (m_session) {
         for (WindowFeature *feature : std::as_const(m_features))
             feature->attach(nullptr);
+        // The undo history holds the old session's writes.
+        m_undoStack->clear();
         delete m_session;
         m_session = nullptr;
     }
-    m_model->clear();
-    m_undoStack->clear();
-    m_favouritesKey.clear();
-    setWindowTitle(tr("DriveDesk"));
+    // The model keeps what was read until the new drive is connected.
 
     m_session = new DriveSession(settings, m_model, m_undoStack, this);
     DriveSession *session = m_session;
@@ -169,6 +189,10 @@ void MainWindow::connectTo(ConnectionSettings settings)
     connect(session, &DriveSession::connected, this, [this, session] {
         RecentConnections::remember(session->settings());
         if (!session->hasDescription()) {
+            // Another drive, or the same one anew: what the last one showed goes now.
+            m_model->clear();
+            m_favouritesKey.clear();
+            setWindowTitle(tr("DriveDesk"));
             m_notice->showProgress(tr("Connected. Reading the drive..."), 0, 0);
             return;
         }
@@ -179,6 +203,7 @@ void MainWindow::connectTo(ConnectionSettings settings)
     });
     connect(session, &DriveSession::connectionFailed, this, &MainWindow::onConnectionFailed);
     connect(session, &DriveSession::linkLost, this, &MainWindow::onLinkLost);
+    connect(session, &DriveSession::driveSilentChanged, this, &MainWindow::onDriveSilentChanged);
     connect(session, &DriveSession::scanStarted, this, [this] {
         m_notice->showProgress(tr("Reading the drive..."), 0, 1000);
         m_browser->setEmptyText(tr("Reading the drive..."));
@@ -209,7 +234,10 @@ void MainWindow::onStateChanged(DriveClient::State state)
         text = tr("Connecting...");
         break;
     case DriveClient::State::Connected:
-        text = tr("Connected: %1").arg(RecentConnections::describe(m_session->settings()));
+        text = m_session->isDriveSilent()
+                   ? tr("Connected: %1; the drive is not answering")
+                         .arg(RecentConnections::describe(m_session->settings()))
+                   : tr("Connected: %1").arg(RecentConnections::describe(m_session->settings()));
         break;
     case DriveClient::State::Lost:
         text = tr("Connection lost");
@@ -217,6 +245,11 @@ void MainWindow::onStateChanged(DriveClient::State state)
     }
     m_stateLabel->setText(text);
     updateActions();
+    // connectTo() waits for the old link to close; the session may not go from inside its own
+    // signal.
+    if (m_nextSettings && state != DriveClient::State::Connected
+        && state != DriveClient::State::Connecting)
+        QMetaObject::invokeMethod(this, &MainWindow::openNextSession, Qt::QueuedConnection);
 }
 
 void MainWindow::onScanProgress(int value, int maximum, const QString &text)
@@ -283,11 +316,41 @@ void MainWindow::onLinkLost(const QString &reason)
     updateActions();
 }
 
+void MainWindow::onDriveSilentChanged(bool silent)
+{
+    if (silent) {
+        const QDateTime now = QDateTime::currentDateTime();
+        m_model->setStaleSince(now.toMSecsSinceEpoch());
+        m_silenceNotice
+            = tr("The drive is not answering: the connection to %1 is open, but nothing came "
+                 "from the drive since %2. The values shown are the last read and are marked "
+                 "stale. This clears by itself when the drive answers again.")
+                  .arg(RecentConnections::describe(m_session->settings()),
+                       now.toString(QStringLiteral("HH:mm:ss")));
+        m_notice->showProblem(m_silenceNotice);
+        showMessage(tr("The drive is not answering"));
+    } else {
+        m_model->setStaleSince(0);
+        if (!m_silenceNotice.isEmpty() && m_notice->isVisible()
+            && m_notice->text() == m_silenceNotice) {
+            m_notice->hide();
+            if (m_session && m_session->state() == DriveClient::State::Connected)
+                showMessage(tr("The drive answers again."));
+        }
+        m_silenceNotice.clear();
+    }
+    onStateChanged(m_session ? m_session->state() : DriveClient::State::Disconnected);
+}
+
 void MainWindow::onConnectionFailed(const QString &reason)
 {
     m_browser->setEmptyText(tr("Could not connect: %1").arg(reason));
-    m_notice->showProblem(tr("Could not connect to %1: %2")
-                              .arg(RecentConnections::describe(m_session->settings()), reason));
+    const QString target = RecentConnections::describe(m_session->settings());
+    // What an earlier connection read stays shown.
+    m_notice->showProblem(m_model->rowCount() > 0
+                              ? tr("Could not connect to %1: %2. What was shown before stays.")
+                                    .arg(target, reason)
+                              : tr("Could not connect to %1: %2").arg(target, reason));
     showMessage(tr("Could not connect: %1").arg(reason));
     updateActions();
 }
@@ -326,7 +389,7 @@ void MainWindow::reconnect()
     }
     m_notice->showProgress(
         tr("Connecting to %1...").arg(RecentConnections::describe(m_session->settings())), 0, 0);
-    m_session->start();
+    m_session->reconnect();
 }
 
 void MainWindow::disconnectFromDrive()

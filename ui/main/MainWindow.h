@@ -6,6 +6,8 @@
 
 #include <QMainWindow>
 
+#include <optional>
+
 class QActionGroup;
 class QLabel;
 
@@ -30,7 +32,9 @@ public:
     explicit MainWindow(Language language = Language::English, QWidget *parent = nullptr);
     ~MainWindow() override;
 
-    // Drops the current connection (if any) and connects to `settings`, then scans the drive.
+    // Closes the current connection (if any), waits until its link is closed, then connects to
+    // `settings` and scans the drive. What the window shows stays until the new connection
+    // stands: a connection that fails loses nothing.
     void connectTo(ConnectionSettings settings);
     // The connection dialog, filled with the last connection; connects when accepted. It opens
     // without waiting (open()) and closes itself.
@@ -72,12 +76,14 @@ private:
     void chooseLanguage(Language language);
     void about();
     // MainWindow.cpp
+    void openNextSession();
     void onStateChanged(DriveClient::State state);
     void onScanProgress(int value, int maximum, const QString &text);
     void onScanFinished(const QString &problem);
     void onDescribed(const DriveDescription &drive);
     void onLinkLost(const QString &reason);
     void onConnectionFailed(const QString &reason);
+    void onDriveSilentChanged(bool silent);
     void updateSetsLabel();
     void reconnect();
     void disconnectFromDrive();
@@ -92,8 +98,11 @@ private:
     ParameterBrowser *m_browser = nullptr;
     NoticeBar *m_notice = nullptr;
     DriveSession *m_session = nullptr; // owned; replaced on every connectTo()
+    // connectTo() while connected: where to connect once the old link is closed.
+    std::optional<ConnectionSettings> m_nextSettings;
     QList<WindowFeature *> m_features; // children
     QString m_favouritesKey; // the drive's key in QSettings "favourites/"
+    QString m_silenceNotice; // the notice shown while the drive does not answer
 
     QMenu *m_driveMenu = nullptr;
     QMenu *m_editMenu = nullptr;
