@@ -273,6 +273,14 @@
         <source>%1 (no plaintext)</source>
         <translation>%1 (kein Klartext)</translation>
     </message>
+    <message>
+        <source>%1:</source>
+        <translation>%1:</translation>
+    </message>
+    <message>
+        <source>Value: %1</source>
+        <translation>Wert: %1</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::CliRunner</name>
@@ -510,6 +518,10 @@
     <message>
         <source>no answer within %1 ms (attempt %2 of %3), given up</source>
         <translation>keine Antwort innerhalb von %1 ms (Versuch %2 von %3), aufgegeben</translation>
+    </message>
+    <message>
+        <source>the drive has gone silent: a request was given up after every attempt and nothing came from the drive since</source>
+        <translation>der Umrichter schweigt: eine Anfrage wurde nach allen Versuchen aufgegeben, und seitdem kam nichts vom Umrichter</translation>
     </message>
 </context>
 <context>
@@ -1321,10 +1333,6 @@
         <translation>Nichts gelesen: %1. Aktualisieren (%2) drücken, um den Umrichter einzulesen.</translation>
     </message>
     <message>
-        <source>The drive was read only in part: %1</source>
-        <translation>Der Umrichter wurde nur teilweise eingelesen: %1</translation>
-    </message>
-    <message>
         <source>The connection to the drive was lost: %1. What was read stays shown; editing is off until the drive is reconnected.</source>
         <translation>Die Verbindung zum Umrichter ist abgebrochen: %1. Das Gelesene bleibt sichtbar; Bearbeiten ist gesperrt, bis der Umrichter wieder verbunden ist.</translation>
     </message>
@@ -1478,6 +1486,45 @@
         <source>Takes effect when DriveDesk starts again</source>
         <translation>Gilt ab dem nächsten Start von DriveDesk</translation>
     </message>
+    <message>
+        <source>Closing the connection to %1...</source>
+        <translation>Die Verbindung zu %1 wird geschlossen...</translation>
+    </message>
+    <message>
+        <source>Connected: %1; the drive is not answering</source>
+        <translation>Verbunden: %1; der Umrichter antwortet nicht</translation>
+    </message>
+    <message numerus="yes">
+        <source>the table shows the %n parameter(s) read</source>
+        <translation>
+            <numerusform>die Tabelle zeigt den %n gelesenen Parameter</numerusform>
+            <numerusform>die Tabelle zeigt die %n gelesenen Parameter</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The drive was read only in part (%1): %2. Read it again with Drive &gt; Read Metadata Again.</source>
+        <translation>Der Umrichter wurde nur teilweise gelesen (%1): %2. Umrichter &gt; Metadaten neu lesen liest ihn neu.</translation>
+    </message>
+    <message>
+        <source>Incomplete: %1</source>
+        <translation>Unvollständig: %1</translation>
+    </message>
+    <message>
+        <source>The drive is not answering: the connection to %1 is open, but nothing came from the drive since %2. The values shown are the last read and are marked stale. This clears by itself when the drive answers again.</source>
+        <translation>Der Umrichter antwortet nicht: die Verbindung zu %1 ist offen, aber seit %2 kam nichts vom Umrichter. Die angezeigten Werte sind die zuletzt gelesenen und als veraltet markiert. Das verschwindet von selbst, sobald der Umrichter wieder antwortet.</translation>
+    </message>
+    <message>
+        <source>The drive is not answering</source>
+        <translation>Der Umrichter antwortet nicht</translation>
+    </message>
+    <message>
+        <source>The drive answers again.</source>
+        <translation>Der Umrichter antwortet wieder.</translation>
+    </message>
+    <message>
+        <source>Could not connect to %1: %2. What was shown before stays.</source>
+        <translation>Keine Verbindung zu %1: %2. Was vorher angezeigt wurde, bleibt stehen.</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::MonitorFeature</name>
@@ -1551,6 +1598,11 @@
     <message>
         <source>this parameter cannot be changed now</source>
         <translation>dieser Parameter kann jetzt nicht geändert werden</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <comment>parameter, set</comment>
+        <translation>%1, %2</translation>
     </message>
 </context>
 <context>
@@ -1673,6 +1725,10 @@
     <message>
         <source>Set %1 (active)</source>
         <translation>Satz %1 (aktiv)</translation>
+    </message>
+    <message>
+        <source>Last read %1; the drive is not answering</source>
+        <translation>Zuletzt gelesen %1; der Umrichter antwortet nicht</translation>
     </message>
 </context>
 <context>

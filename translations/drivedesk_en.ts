@@ -273,6 +273,14 @@
         <source>%1 (no plaintext)</source>
         <translation>%1 (no plaintext)</translation>
     </message>
+    <message>
+        <source>%1:</source>
+        <translation>%1:</translation>
+    </message>
+    <message>
+        <source>Value: %1</source>
+        <translation>Value: %1</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::CliRunner</name>
@@ -510,6 +518,10 @@
     <message>
         <source>no answer within %1 ms (attempt %2 of %3), given up</source>
         <translation>no answer within %1 ms (attempt %2 of %3), given up</translation>
+    </message>
+    <message>
+        <source>the drive has gone silent: a request was given up after every attempt and nothing came from the drive since</source>
+        <translation>the drive has gone silent: a request was given up after every attempt and nothing came from the drive since</translation>
     </message>
 </context>
 <context>
@@ -1321,10 +1333,6 @@
         <translation>Nothing was read: %1. Press Refresh (%2) to read the drive.</translation>
     </message>
     <message>
-        <source>The drive was read only in part: %1</source>
-        <translation>The drive was read only in part: %1</translation>
-    </message>
-    <message>
         <source>The connection to the drive was lost: %1. What was read stays shown; editing is off until the drive is reconnected.</source>
         <translation>The connection to the drive was lost: %1. What was read stays shown; editing is off until the drive is reconnected.</translation>
     </message>
@@ -1478,6 +1486,45 @@
         <source>Takes effect when DriveDesk starts again</source>
         <translation>Takes effect when DriveDesk starts again</translation>
     </message>
+    <message>
+        <source>Closing the connection to %1...</source>
+        <translation>Closing the connection to %1...</translation>
+    </message>
+    <message>
+        <source>Connected: %1; the drive is not answering</source>
+        <translation>Connected: %1; the drive is not answering</translation>
+    </message>
+    <message numerus="yes">
+        <source>the table shows the %n parameter(s) read</source>
+        <translation>
+            <numerusform>the table shows the %n parameter read</numerusform>
+            <numerusform>the table shows the %n parameters read</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The drive was read only in part (%1): %2. Read it again with Drive &gt; Read Metadata Again.</source>
+        <translation>The drive was read only in part (%1): %2. Read it again with Drive &gt; Read Metadata Again.</translation>
+    </message>
+    <message>
+        <source>Incomplete: %1</source>
+        <translation>Incomplete: %1</translation>
+    </message>
+    <message>
+        <source>The drive is not answering: the connection to %1 is open, but nothing came from the drive since %2. The values shown are the last read and are marked stale. This clears by itself when the drive answers again.</source>
+        <translation>The drive is not answering: the connection to %1 is open, but nothing came from the drive since %2. The values shown are the last read and are marked stale. This clears by itself when the drive answers again.</translation>
+    </message>
+    <message>
+        <source>The drive is not answering</source>
+        <translation>The drive is not answering</translation>
+    </message>
+    <message>
+        <source>The drive answers again.</source>
+        <translation>The drive answers again.</translation>
+    </message>
+    <message>
+        <source>Could not connect to %1: %2. What was shown before stays.</source>
+        <translation>Could not connect to %1: %2. What was shown before stays.</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::MonitorFeature</name>
@@ -1551,6 +1598,11 @@
     <message>
         <source>this parameter cannot be changed now</source>
         <translation>this parameter cannot be changed now</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <comment>parameter, set</comment>
+        <translation>%1, %2</translation>
     </message>
 </context>
 <context>
@@ -1673,6 +1725,10 @@
     <message>
         <source>Set %1 (active)</source>
         <translation>Set %1 (active)</translation>
+    </message>
+    <message>
+        <source>Last read %1; the drive is not answering</source>
+        <translation>Last read %1; the drive is not answering</translation>
     </message>
 </context>
 <context>

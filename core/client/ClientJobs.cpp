@@ -66,7 +66,18 @@ void ClientWorker::scan(const ScanOptions &options,
                 scanner->deleteLater();
             });
     watcher->setFuture(promise->future());
+    m_scanners.removeAll(QPointer<DriveScanner>()); // the finished ones
+    m_scanners.append(scanner);
     scanner->start();
+}
+
+void ClientWorker::stopScans()
+{
+    const QList<QPointer<DriveScanner>> running = m_scanners;
+    for (const QPointer<DriveScanner> &scanner : running) {
+        if (scanner)
+            scanner->cancel();
+    }
 }
 
 void ClientWorker::runJob(std::shared_ptr<RequestJobBase> job)

@@ -7,6 +7,8 @@
 #include "protocol/Codec.h"
 
 #include <QElapsedTimer>
+#include <QList>
+#include <QPointer>
 #include <QPromise>
 
 #include <deque>
@@ -16,6 +18,8 @@
 class QTimer;
 
 namespace DriveDesk {
+
+class DriveScanner;
 
 // The protocol work of a DriveClient: the link, the request queue with timeouts and retries,
 // invoke ids, the DIN66019II drive selection, and the check of every answer against its
@@ -47,6 +51,9 @@ public:
     // request from the queue, or has its answer ignored when it is already on the wire.
     void submitForFuture(const Telegram &request, std::shared_ptr<QPromise<Reply>> promise);
     void scan(const ScanOptions &options, std::shared_ptr<QPromise<DriveDescription>> promise);
+    // Ends every running scan now with what it has read (incompleteReason "cancelled"), unlike
+    // a cancelled future, which drops the result.
+    void stopScans();
     // A job of many requests on a sink of its own, so that its cancel drops only its requests.
     void runJob(std::shared_ptr<RequestJobBase> job);
 
@@ -137,6 +144,7 @@ private:
     quint64 m_answersMatched = 0;
     quint64 m_receptions = 0; // chunks of bytes received from the drive
     bool m_driveSilent = false;
+    QList<QPointer<DriveScanner>> m_scanners; // running
     bool m_recovering = false;
     quint8 m_lastInvokeId = 0;
     int m_selectedDrive = -1; // DIN66019(II): the drive the last EOT selected, -1 unknown

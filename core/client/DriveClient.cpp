@@ -133,6 +133,12 @@ void DriveClient::start(std::shared_ptr<RequestJobBase> job)
         worker, [worker, job = std::move(job)] { worker->runJob(job); }, Qt::QueuedConnection);
 }
 
+void DriveClient::stopScan()
+{
+    ClientWorker *worker = m_worker;
+    QMetaObject::invokeMethod(worker, [worker] { worker->stopScans(); }, Qt::QueuedConnection);
+}
+
 QFuture<DriveDescription> DriveClient::scan(ScanOptions options)
 {
     auto promise = startedPromise<DriveDescription>();

@@ -95,6 +95,9 @@ public:
 
     // Discovers groups, parameters, metadata and values. Progress in 0..1000; cancellable.
     QFuture<DriveDescription> scan(ScanOptions options = {});
+    // Ends the running scan with what it has read so far: its future gets the description,
+    // incompleteReason "cancelled" (cancelling the future instead gives no result at all).
+    void stopScan();
 
     // Runs a job of many requests in the client's thread, on the client's queue, and returns
     // its future. Cancelling the future stops the job.

@@ -97,8 +97,9 @@ void DriveSession::disconnectFromDrive()
 
 void DriveSession::cancelScan()
 {
+    // Stopped, not cancelled: what the scan has read so far still reaches the table.
     if (m_scan.isRunning())
-        m_scan.cancel();
+        m_client->stopScan();
 }
 
 void DriveSession::rescan(MetadataSource metadata)

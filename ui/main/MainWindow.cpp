@@ -300,7 +300,14 @@ void MainWindow::onScanFinished(const QString &problem)
             tr("Nothing was read: %1. Press Refresh (%2) to read the drive.")
                 .arg(problem, m_refreshAction->shortcut().toString(QKeySequence::NativeText)));
     } else {
-        m_notice->showProblem(tr("The drive was read only in part: %1").arg(problem));
+        int parameters = 0;
+        for (int group = 0; group < m_model->rowCount(); ++group)
+            parameters += m_model->rowCount(m_model->index(group, 0));
+        const QString shown = tr("the table shows the %n parameter(s) read", nullptr, parameters);
+        m_notice->showProblem(tr("The drive was read only in part (%1): %2. Read it again with "
+                                 "Drive > Read Metadata Again.")
+                                  .arg(problem, shown));
+        showMessage(tr("Incomplete: %1").arg(shown));
     }
     updateActions();
     emit driveRead();
