@@ -18,6 +18,7 @@ PasswordDialog::PasswordDialog(QWidget *parent)
     , m_buttons(new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this))
 {
     setWindowTitle(tr("Enter Password"));
+    setMinimumWidth(fontMetrics().averageCharWidth() * 45); // the drive's reason fits on a line
     m_level->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_password->setEchoMode(QLineEdit::Password);
     m_password->setValidator(new QIntValidator(0, kHighestPassword, m_password));
@@ -65,6 +66,7 @@ void PasswordDialog::accept()
     setChecking(true);
     m_answer->setText(tr("Asking the drive ..."));
     m_answer->show();
+    adjustSize();
     emit passwordEntered(*number);
 }
 
@@ -79,6 +81,7 @@ void PasswordDialog::passwordRefused(const QString &reason)
     setChecking(false);
     m_answer->setText(tr("Not accepted: %1").arg(reason));
     m_answer->show();
+    adjustSize(); // room for the reason, however long
     m_password->selectAll();
     m_password->setFocus();
 }
