@@ -78,6 +78,24 @@ void DriveScanner::cancel()
 
 void DriveScanner::enqueue(Service service, ServiceData data, QString what, Handler handle)
 {
+    switch (service) {
+    case Service::Properties:
+        ++m_values.asked;
+        break;
+    case Service::ParameterValue:
+    case Service::ParameterValueStandard:
+        ++m_values.reads;
+        break;
+    case Service::PlaintextIndices:
+        ++m_plaintexts.asked;
+        break;
+    case Service::PlaintextDefinition:
+    case Service::CombivisPlaintext:
+        ++m_plaintexts.reads;
+        break;
+    default:
+        break;
+    }
     m_queue.push_back({Telegram::request(service, Access::Read, std::move(data)), std::move(what),
                        std::move(handle)});
     ++m_enqueued;
@@ -116,10 +134,16 @@ void DriveScanner::submitQueued()
         QueuedRequest next = std::move(m_queue.front());
         m_queue.pop_front();
         ++m_submitted;
-        m_sink.submit(next.telegram, [self, what = next.what, handle = next.handle](
-                                         const Reply &reply) {
-            if (self)
-                self->onReplied(reply, what, handle);
+        m_sink.submit(next.telegram, [self, service = next.telegram.service, what = next.what,
+                                      handle = next.handle](const Reply &reply) {
+            if (!self)
+                return;
+            // Counted before the handler runs: it enqueues what the answer leads to.
+            if (service == Service::Properties)
+                ++self->m_values.answered;
+            else if (service == Service::PlaintextIndices)
+                ++self->m_plaintexts.answered;
+            self->onReplied(reply, what, handle);
         });
         if (!self)
             return;
@@ -180,12 +204,20 @@ DriveDescription DriveScanner::result(const QString &reason)
 
 int DriveScanner::total() const
 {
-    // Each parameter still to be found costs its name, services 2-5, 7 and one value read.
-    const int perParameter = 1 + 4 + (m_options.plaintexts ? 1 : 0) + (m_options.values ? 1 : 0);
-    int expected = 0;
+    // What is enqueued, plus an estimate of what is still to come: a parameter still to be
+    // named costs its name, a name on its way services 2, 3, 4, 5 (and 7); the answer to its properties leads
+    // to its value reads (one, or one per set), the answer to its plaintext indices to the
+    // plaintext tables not read yet. Those follow-ups are estimated from the answers so far,
+    // so that the bar follows the telegrams instead of racing ahead and stalling.
+    const double values = m_options.values ? m_values.perAnswer(1.0) : 0.0;
+    const double plaintexts = m_options.plaintexts ? m_plaintexts.perAnswer(1.0) : 0.0;
+    const double afterName = 4 + (m_options.plaintexts ? 1 : 0) + values + plaintexts;
+    double expected = 0;
     for (const auto &[page, group] : m_state.groups)
-        expected += group.namesToAsk() * perParameter;
-    return m_enqueued + expected;
+        expected += group.namesToAsk() * (1 + afterName) + group.namesPending * afterName;
+    expected += (m_values.asked - m_values.answered) * values;
+    expected += (m_plaintexts.asked - m_plaintexts.answered) * plaintexts;
+    return m_enqueued + int(expected);
 }
 
 void DriveScanner::probeGroup(quint8 page)

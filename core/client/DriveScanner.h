@@ -118,6 +118,16 @@ private:
     int m_submitted = 0;                // handed to the sink, `done` not yet run
     int m_enqueued = 0;
     int m_done = 0;
+    // What the answers to properties and plaintext indices brought so far: the reads of
+    // values and of plaintexts each one led to, for the estimate of those still to come.
+    struct FollowUps {
+        int asked = 0;    // properties (or plaintext indices) requests enqueued
+        int answered = 0; // ... and answered
+        int reads = 0;    // value (or plaintext) reads enqueued
+        double perAnswer(double guess) const { return answered ? double(reads) / answered : guess; }
+    };
+    FollowUps m_values;
+    FollowUps m_plaintexts;
     bool m_started = false;
     bool m_finished = false;
     bool m_submitting = false; // a sink may run `done` inside submit()

@@ -2,7 +2,10 @@
 
 #include "bus/LinkFactory.h"
 
+#include <QFutureWatcher>
 #include <QTest>
+
+#include <cmath>
 
 using namespace DriveDesk;
 using namespace DriveDesk::ClientTest;
@@ -68,6 +71,62 @@ private slots:
         const Reply reply = replyOf(mine);
         QVERIFY2(reply.ok(), qPrintable(describeReply(reply)));
         QCOMPARE(reply.data<ParameterValue>()->value, kMaxSpeedDefault);
+    }
+
+    // The bar follows the telegrams: at every step it stands near the share of the scan's
+    // telegrams sent so far, with no long stall near the start or the end.
+    void progressFollowsTheTelegrams()
+    {
+        // Slow enough for many steps: the future reports progress at most every few ms.
+        SimulationOptions simulation;
+        simulation.replyLatencyUs = 1000;
+        Session s(simulated(Protocol::Hsp5, simulation));
+        QVERIFY(s.connected());
+        int sent = 0;
+        QObject::connect(s.client.get(), &DriveClient::traffic, s.client.get(),
+                         [&sent](const TrafficRecord &record) {
+                             sent += record.kind == TrafficRecord::Kind::Sent;
+                         });
+        QList<std::pair<int, int>> steps; // progress, telegrams sent by then
+        QFutureWatcher<DriveDescription> watcher;
+        QObject::connect(&watcher, &QFutureWatcherBase::progressValueChanged, &watcher,
+                         [&](int value) { steps.append({ value, sent }); });
+        ScanOptions options;
+        options.metadata = MetadataSource::Drive;
+        watcher.setFuture(s.client->scan(options));
+        QVERIFY(waitFinished(watcher.future(), 60000));
+        QCoreApplication::processEvents();
+        QVERIFY(sent > 1000);
+        QVERIFY(steps.size() > 10);
+        double worst = 0;
+        for (const auto &[value, sentThen] : std::as_const(steps)) {
+            if (value >= 1000)
+                continue;
+            worst = std::max(worst, std::abs(value / 1000.0 - double(sentThen) / sent));
+        }
+        QVERIFY2(worst < 0.15,
+                 qPrintable(QStringLiteral("%1 telegrams; worst gap %2").arg(sent).arg(worst)));
+    }
+
+    // Stopped, not cancelled: the scan hands over what it has read, marked incomplete.
+    void aStoppedScanGivesWhatItRead()
+    {
+        SimulationOptions simulation;
+        simulation.replyLatencyUs = 2000;
+        Session s(simulated(Protocol::Hsp5, simulation));
+        QVERIFY(s.connected());
+        ScanOptions options;
+        options.metadata = MetadataSource::Drive;
+        QFuture<DriveDescription> scan = s.client->scan(options);
+        QTRY_VERIFY_WITH_TIMEOUT(scan.progressValue() > 500, 60000);
+        s.client->stopScan();
+        QVERIFY(waitFinished(scan, 5000));
+        QVERIFY(!scan.isCanceled());
+        QCOMPARE(scan.resultCount(), 1);
+        const DriveDescription drive = scan.result();
+        QVERIFY(!drive.incompleteReason.isEmpty());
+        QVERIFY(drive.parameterCount() > 0);
+        QVERIFY(drive.parameterCount() < 205);
     }
 
     void scanWithoutConnectionSaysSo()

@@ -207,6 +207,9 @@ void FindDrivesDialog::onFinished()
     const QFuture<FoundDrive> future = m_watcher.future();
     const int found = m_drives->count();
     const bool complete = m_watcher.progressValue() >= m_watcher.progressMaximum();
+    // The future reports progress at most every few milliseconds: the bar takes the final
+    // count here, so that it says what the text says.
+    m_progress->setValue(m_watcher.progressValue());
     if (future.isCanceled() || (m_stopRequested && !complete)) {
         m_status->setText(tr("Stopped after %1 of %2 addresses: %n drive(s) answered.", nullptr,
                              found)
