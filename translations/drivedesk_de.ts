@@ -2282,6 +2282,25 @@ Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
     </message>
 </context>
 <context>
+    <name>ParameterComparison</name>
+    <message>
+        <source>?</source>
+        <translation>?</translation>
+    </message>
+    <message>
+        <source>different</source>
+        <translation>verschieden</translation>
+    </message>
+    <message>
+        <source>only in A</source>
+        <translation>nur in A</translation>
+    </message>
+    <message>
+        <source>only in B</source>
+        <translation>nur in B</translation>
+    </message>
+</context>
+<context>
     <name>ParameterDocument</name>
     <message>
         <source>expected an object</source>
@@ -2778,6 +2797,24 @@ Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
     <message>
         <source>parameters</source>
         <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>set</source>
+        <translation>Satz</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n difference(s)</source>
+        <translation>
+            <numerusform>%n Unterschied</numerusform>
+            <numerusform>%n Unterschiede</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) on both sides</source>
+        <translation>
+            <numerusform>%n Parameter auf beiden Seiten</numerusform>
+            <numerusform>%n Parameter auf beiden Seiten</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -2282,6 +2282,25 @@ The DriveDesk parameter editor. Without --connect it opens the connection dialog
     </message>
 </context>
 <context>
+    <name>ParameterComparison</name>
+    <message>
+        <source>?</source>
+        <translation>?</translation>
+    </message>
+    <message>
+        <source>different</source>
+        <translation>different</translation>
+    </message>
+    <message>
+        <source>only in A</source>
+        <translation>only in A</translation>
+    </message>
+    <message>
+        <source>only in B</source>
+        <translation>only in B</translation>
+    </message>
+</context>
+<context>
     <name>ParameterDocument</name>
     <message>
         <source>expected an object</source>
@@ -2778,6 +2797,24 @@ The DriveDesk parameter editor. Without --connect it opens the connection dialog
     <message>
         <source>parameters</source>
         <translation>parameters</translation>
+    </message>
+    <message>
+        <source>set</source>
+        <translation>set</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n difference(s)</source>
+        <translation>
+            <numerusform>%n difference</numerusform>
+            <numerusform>%n differences</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) on both sides</source>
+        <translation>
+            <numerusform>%n parameter on both sides</numerusform>
+            <numerusform>%n parameters on both sides</numerusform>
+        </translation>
     </message>
 </context>
 <context>

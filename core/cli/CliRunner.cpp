@@ -42,6 +42,8 @@ CliRunner::~CliRunner() = default;
 
 void CliRunner::start()
 {
+    if (m_request.command == CliRequest::Command::Diff)
+        return runDiff();
     ClientOptions options;
     options.timeoutMs = m_request.timeoutMs;
     m_client = std::make_unique<DriveClient>(m_request.connection, everyLink(), options);
@@ -81,6 +83,7 @@ void CliRunner::runCommand()
     case CliRequest::Command::Scan: runScan(); break;
     case CliRequest::Command::Read: runRead(); break;
     case CliRequest::Command::Write: runWrite(); break;
+    case CliRequest::Command::Diff: runDiff(); break;
     }
 }
 

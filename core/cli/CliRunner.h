@@ -36,6 +36,8 @@ private:
     void runRead();
     void runWrite();
     void runLegacy();
+    // Two parameter files, no drive: exit 0 equal, 1 different, 2 a file that cannot be read.
+    void runDiff();
     // Finds the parameter named on the command line and reads its metadata, then calls next.
     void lookUpParameter(std::function<void(const GroupDescription &, const ParameterDescription &)> next);
     void report(const QString &id, const ParameterDescription &parameter, qint32 raw,

@@ -37,7 +37,12 @@ QString usage()
         "  read PARAM [--set N]         one value; PARAM is ru.3, ru.03 or 0x0203\n"
         "  write PARAM VALUE [--sets LIST] [--raw]\n"
         "                               VALUE in display units (12.50) or a plaintext,\n"
-        "                               raw with --raw; LIST like 0,2-4 or all\n");
+        "                               raw with --raw; LIST like 0,2-4 or all\n"
+        "  diff FILE_A FILE_B [--format json|table]\n"
+        "                               every value that differs between two parameter\n"
+        "                               files (scan --format json --values writes one);\n"
+        "                               needs no --connect. Exit 0 equal, 1 different,\n"
+        "                               2 a file that cannot be read\n");
 }
 
 } // namespace
@@ -108,7 +113,12 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     helpText->clear();
 
     CliRequest request;
-    if (!connection.settings(parser, &request.connection, error))
+    // Two files are compared without a drive: the connection is needed only when given.
+    const bool diff = parser.positionalArguments().value(0).compare(QLatin1String("diff"),
+                                                                    Qt::CaseInsensitive)
+        == 0;
+    if ((!diff || parser.isSet(QStringLiteral("connect")))
+        && !connection.settings(parser, &request.connection, error))
         return std::nullopt;
     int setNumber = -1;
     if (!ConnectionOptions::integer(parser, timeout, 1, 600000, &request.timeoutMs, error)
@@ -151,6 +161,7 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     const QString command = positional.value(0).toLower();
     const qsizetype expected = command == QLatin1String("read")    ? 2
                                : command == QLatin1String("write") ? 3
+                               : command == QLatin1String("diff")  ? 3
                                                                   : 1;
     if (command == QLatin1String("info")) {
         request.command = CliRequest::Command::Info;
@@ -160,10 +171,13 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
         request.command = CliRequest::Command::Read;
     } else if (command == QLatin1String("write")) {
         request.command = CliRequest::Command::Write;
+    } else if (command == QLatin1String("diff")) {
+        request.command = CliRequest::Command::Diff;
     } else {
-        *error = command.isEmpty() ? QStringLiteral("no command: use info, scan, read or write")
-                                   : QStringLiteral("unknown command '%1': use info, scan, read or write")
-                                         .arg(positional.value(0));
+        *error = command.isEmpty()
+            ? QStringLiteral("no command: use info, scan, read, write or diff")
+            : QStringLiteral("unknown command '%1': use info, scan, read, write or diff")
+                  .arg(positional.value(0));
         return std::nullopt;
     }
     if (positional.size() != expected) {
@@ -171,11 +185,23 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
                      ? QStringLiteral("read takes one parameter, e.g. read ru.03")
                  : command == QLatin1String("write")
                      ? QStringLiteral("write takes a parameter and a value, e.g. write uF.07 70.0")
+                 : command == QLatin1String("diff")
+                     ? QStringLiteral("diff takes two parameter files, e.g. diff a.json b.json")
                      : QStringLiteral("%1 takes no arguments").arg(command);
         return std::nullopt;
     }
     request.parameter = positional.value(1);
     request.value = positional.value(2);
+    if (request.command == CliRequest::Command::Diff) {
+        request.parameter.clear();
+        request.value.clear();
+        request.files = { positional.value(1), positional.value(2) };
+        if (request.files.contains(QStringLiteral("drive"))) {
+            *error = QStringLiteral("diff compares two parameter files; for a drive, write its "
+                                    "file first: scan --format json --values > FILE");
+            return std::nullopt;
+        }
+    }
     if (request.command != CliRequest::Command::Write && (request.raw || parser.isSet(sets))) {
         *error = QStringLiteral("--raw and --sets belong to write");
         return std::nullopt;

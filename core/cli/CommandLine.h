@@ -12,7 +12,7 @@ namespace DriveDesk {
 
 // What `drivedesk-cli` was asked to do, parsed and checked before anything is sent.
 struct CliRequest {
-    enum class Command : quint8 { Info, Scan, Read, Write };
+    enum class Command : quint8 { Info, Scan, Read, Write, Diff };
     enum class Format : quint8 { Table, Json };
 
     ConnectionSettings connection;
@@ -21,6 +21,7 @@ struct CliRequest {
     bool values = false;      // scan: read the value of every set
     QString parameter;        // read/write: "ru.3", "ru.03", "0x0203"
     QString value;            // write: in display units or a plaintext, raw with --raw
+    QStringList files;        // diff: the two parameter files
     std::optional<int> set;   // read --set N
     quint8 setMask = 0;       // write --sets LIST; 0: the active set (service 1)
     bool raw = false;

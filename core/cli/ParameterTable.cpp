@@ -128,4 +128,23 @@ QString info(const DriveDescription &drive, const DriveDescription &system)
     return text + counts(drive.groups.size(), total);
 }
 
+QString differences(const ParameterComparison &comparison, const QString &a, const QString &b)
+{
+    QList<QStringList> rows;
+    rows << QStringList{ TableText::tr("parameter"), TableText::tr("name"), TableText::tr("set"),
+                         a, b };
+    for (const ParameterDifference &d : comparison.differences) {
+        const QString set = d.set >= 0 ? QString::number(d.set)
+                                       : ParameterComparison::kindText(d.kind);
+        rows << QStringList{ d.id, d.name, set, d.a.isEmpty() ? QStringLiteral("-") : d.a,
+                             d.b.isEmpty() ? QStringLiteral("-") : d.b };
+    }
+    const int count = int(comparison.differences.size());
+    QString text = count ? align(rows) : QString();
+    text += TableText::tr("%n difference(s)", nullptr, count) + QStringLiteral(", ")
+        + TableText::tr("%n parameter(s) on both sides", nullptr, comparison.compared)
+        + QLatin1Char('\n');
+    return text;
+}
+
 } // namespace DriveDesk::ParameterTable

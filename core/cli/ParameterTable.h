@@ -1,6 +1,7 @@
 #pragma once
 
 #include "parameters/DriveDescription.h"
+#include "parameters/ParameterComparison.h"
 
 #include <QString>
 
@@ -15,6 +16,8 @@ QString valueText(const ParameterDescription &parameter, qint32 raw, bool withUn
 QString scan(const DriveDescription &drive, bool withValues);
 // Identification, groups and parameter counts; `system` holds the Sy group with values.
 QString info(const DriveDescription &drive, const DriveDescription &system);
+// Each difference of two parameter files on a line: id, name, set, both values, then a count.
+QString differences(const ParameterComparison &comparison, const QString &a, const QString &b);
 
 } // namespace ParameterTable
 

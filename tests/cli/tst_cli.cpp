@@ -2,6 +2,7 @@
 #include "parameters/ParameterDocument.h"
 
 #include <QDir>
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -90,6 +91,71 @@ private slots:
 
         const QJsonArray groups = root.value(QStringLiteral("groups")).toArray();
         QCOMPARE(groups.first().toObject().value(QStringLiteral("id")).toString(), drive->groups.first().id);
+    }
+
+    // Two files, no drive: each differing value and set in display form, and the exit status
+    // a script tests.
+    void diffListsWhatDiffersBetweenTwoFiles()
+    {
+        const Run scan = sim({QStringLiteral("scan"), QStringLiteral("--format"),
+                              QStringLiteral("json"), QStringLiteral("--values")});
+        QVERIFY2(scan.exitCode == 0, qPrintable(explain(scan)));
+        auto drive = ParameterDocument::fromJson(scan.out.toUtf8());
+        QVERIFY(drive);
+        QTemporaryDir dir;
+        const QString a = dir.filePath(QStringLiteral("a.json"));
+        const QString b = dir.filePath(QStringLiteral("b.json"));
+        const QString broken = dir.filePath(QStringLiteral("broken.json"));
+        QVERIFY(ParameterDocument::save(a, *drive));
+        // b: op.11 set 2 changed, Sy.11 missing.
+        for (GroupDescription &group : drive->groups) {
+            for (ParameterDescription &parameter : group.parameters) {
+                if (parameter.address == 0x030B)
+                    parameter.values[2] = 2600;
+            }
+            group.parameters.removeIf(
+                [](const ParameterDescription &p) { return p.address == 0x000B; });
+        }
+        QVERIFY(ParameterDocument::save(b, *drive));
+        QFile file(broken);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write("{\n  \"format\": ");
+        file.close();
+
+        const Run same = cli({QStringLiteral("diff"), a, a});
+        QVERIFY2(same.exitCode == 0, qPrintable(explain(same)));
+        QVERIFY2(same.out.startsWith(QStringLiteral("0 difference")), qPrintable(same.out));
+
+        const Run differ = cli({QStringLiteral("diff"), a, b});
+        QVERIFY2(differ.exitCode == 1, qPrintable(explain(differ)));
+        const QStringList lines = differ.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 4); // heading, two differences, the count
+        QVERIFY2(lines[1].contains(QRegularExpression(QStringLiteral("^Sy\\.11 .* only in A +250000 +-$"))),
+                 qPrintable(lines[1]));
+        QVERIFY2(lines[2].contains(QRegularExpression(
+                     QStringLiteral("^op\\.11 +Maximum speed forward +2 +3000 1/min +2600 1/min$"))),
+                 qPrintable(lines[2]));
+
+        const Run json = cli({QStringLiteral("diff"), a, b, QStringLiteral("--format"),
+                              QStringLiteral("json")});
+        QCOMPARE(json.exitCode, 1);
+        const QJsonArray differences = QJsonDocument::fromJson(json.out.toUtf8())
+                                           .object()
+                                           .value(QStringLiteral("differences"))
+                                           .toArray();
+        QCOMPARE(differences.size(), 2);
+        const QJsonObject op11 = differences[1].toObject();
+        QCOMPARE(op11.value(QStringLiteral("id")).toString(), QStringLiteral("op.11"));
+        QCOMPARE(op11.value(QStringLiteral("set")).toInt(), 2);
+        QCOMPARE(op11.value(QStringLiteral("b")).toString(), QStringLiteral("2600 1/min"));
+
+        const Run bad = cli({QStringLiteral("diff"), a, broken});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY2(bad.err.contains(broken) && bad.err.contains(QStringLiteral("line")),
+                 qPrintable(bad.err));
+        QVERIFY(bad.out.isEmpty());
+        QCOMPARE(cli({QStringLiteral("diff"), a}).exitCode, 2);
+        QCOMPARE(cli({QStringLiteral("diff"), a, QStringLiteral("drive")}).exitCode, 2);
     }
 
     void scanTableShowsGroupsAndUnits()

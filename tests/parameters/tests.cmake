@@ -22,3 +22,8 @@ drivedesk_add_test(NAME tst_parameterformat LABELS unit
 # How telegrams read for a user (the telegram monitor's meanings).
 drivedesk_add_test(NAME tst_telegramtext LABELS unit
     SOURCES parameters/tst_telegramtext.cpp LIBS drivedesk_parameters)
+
+# Comparing two descriptions of a drive (the diff of two parameter files).
+drivedesk_add_test(NAME tst_parametercomparison LABELS unit
+    SOURCES parameters/tst_parametercomparison.cpp parameters/EditorSampleDrive.h
+    LIBS drivedesk_parameters)
