@@ -428,6 +428,11 @@ private slots:
         QVERIFY(QTest::qWaitFor([&] { return scan.isFinished(); }, kWaitMs));
         const DriveDescription drive = scan.result();
         QVERIFY(drive.find(kActualLoad));
+        // The scan's records may still be on their way to this thread. The client reports in
+        // order: once the answer to a read sent after the scan is shown, all of them are in.
+        QVERIFY(finished(client.readValueStandard(kActualLoad, 0)));
+        QTRY_VERIFY(meaningsOf(shown, QStringLiteral("← drive")).constLast().startsWith(
+            QStringLiteral("020Dh: ")));
         m_monitor->clear();
         m_monitor->setDrive(std::make_shared<const DriveDescription>(drive));
 
@@ -436,13 +441,17 @@ private slots:
         const Reply reply = load.result();
         QVERIFY(reply.response.as<ParameterValue>());
         const qint32 raw = reply.response.as<ParameterValue>()->value;
-        QTRY_COMPARE(meaningsOf(shown, QStringLiteral("← drive")).size(), 1);
+        // On a loaded machine a try may time out and be asked again: the rows of this read are
+        // there, whatever else the line saw.
+        const QString expected = QStringLiteral("ru.13 Actual load: %1 %").arg(raw);
+        QTRY_VERIFY(meaningsOf(shown, QStringLiteral("← drive")).contains(expected));
         answers = meaningsOf(shown, QStringLiteral("← drive"));
         requests = meaningsOf(shown, QStringLiteral("→ drive"));
-        QCOMPARE(requests.size(), 1);
-        QVERIFY2(requests.first().endsWith(QStringLiteral("read ru.13 Actual load")),
-                 qPrintable(requests.first()));
-        QCOMPARE(answers, QStringList { QStringLiteral("ru.13 Actual load: %1 %").arg(raw) });
+        QVERIFY(!requests.isEmpty());
+        for (const QString &request : std::as_const(requests))
+            QVERIFY2(request.endsWith(QStringLiteral("read ru.13 Actual load")), qPrintable(request));
+        for (const QString &answer : std::as_const(answers))
+            QVERIFY2(!answer.contains(QStringLiteral("020Dh")), qPrintable(answer));
 
         // A write to set 0 is set 0 (mask 01h), its answer the value written; sets as a list.
         m_monitor->clear();
