@@ -4,6 +4,7 @@
 #include "cli/ParameterTable.h"
 #include "parameters/DriveIdentity.h"
 #include "parameters/MetadataCache.h"
+#include "parameters/ParameterCsv.h"
 #include "parameters/ParameterDocument.h"
 #include "parameters/ParameterFormat.h"
 #include "parameters/ParameterId.h"
@@ -203,6 +204,8 @@ void CliRunner::runScan()
     scan(options, [this](const DriveDescription &drive) {
         if (m_request.format == CliRequest::Format::Json)
             m_out << QString::fromUtf8(ParameterDocument::toJson(drive));
+        else if (m_request.format == CliRequest::Format::Csv)
+            m_out << QString::fromUtf8(parametersAsCsv(drive));
         else
             m_out << ParameterTable::scan(drive, m_request.values);
         m_out.flush();

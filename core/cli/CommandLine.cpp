@@ -32,8 +32,9 @@ QString usage()
         "\n"
         "Commands:\n"
         "  info                         identification, groups and parameter counts\n"
-        "  scan [--format json|table] [--values]\n"
-        "                               every parameter with its metadata (and values)\n"
+        "  scan [--format json|table|csv] [--values]\n"
+        "                               every parameter with its metadata (and values);\n"
+        "                               csv: id, name, unit and the value of each set\n"
         "  read PARAM [--set N]         one value; PARAM is ru.3, ru.03 or 0x0203\n"
         "  write PARAM VALUE [--sets LIST] [--raw]\n"
         "                               VALUE in display units (12.50) or a plaintext,\n"
@@ -135,11 +136,13 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     }
     if (parser.isSet(format)) {
         const QString f = parser.value(format).toLower();
-        if (f != QLatin1String("json") && f != QLatin1String("table")) {
-            *error = QStringLiteral("unknown format '%1': use json or table").arg(f);
+        if (f != QLatin1String("json") && f != QLatin1String("table")
+            && f != QLatin1String("csv")) {
+            *error = QStringLiteral("unknown format '%1': use json, table or csv").arg(f);
             return std::nullopt;
         }
-        request.format = f == QLatin1String("json") ? CliRequest::Format::Json
+        request.format = f == QLatin1String("json")  ? CliRequest::Format::Json
+                         : f == QLatin1String("csv") ? CliRequest::Format::Csv
                                                      : CliRequest::Format::Table;
     }
     if (parser.isSet(sets)) {
@@ -204,6 +207,11 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     }
     if (request.command != CliRequest::Command::Write && (request.raw || parser.isSet(sets))) {
         *error = QStringLiteral("--raw and --sets belong to write");
+        return std::nullopt;
+    }
+    if (request.command != CliRequest::Command::Scan
+        && request.format == CliRequest::Format::Csv) {
+        *error = QStringLiteral("--format csv belongs to scan");
         return std::nullopt;
     }
     if (request.command != CliRequest::Command::Read && request.set) {

@@ -13,7 +13,7 @@ namespace DriveDesk {
 // What `drivedesk-cli` was asked to do, parsed and checked before anything is sent.
 struct CliRequest {
     enum class Command : quint8 { Info, Scan, Read, Write, Diff };
-    enum class Format : quint8 { Table, Json };
+    enum class Format : quint8 { Table, Json, Csv };
 
     ConnectionSettings connection;
     Command command = Command::Info;

@@ -158,6 +158,35 @@ private slots:
         QCOMPARE(cli({QStringLiteral("diff"), a, QStringLiteral("drive")}).exitCode, 2);
     }
 
+    // For a spreadsheet: a heading, one row per parameter, values per set in display form,
+    // fields with a comma quoted.
+    void scanWritesCsvForSpreadsheets()
+    {
+        const Run run = sim({QStringLiteral("scan"), QStringLiteral("--format"),
+                             QStringLiteral("csv"), QStringLiteral("--values")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        const QStringList lines = run.out.split(QStringLiteral("\r\n"), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 1 + 205);
+        QCOMPARE(lines[0], QStringLiteral("id,name,unit,set 0,set 1,set 2,set 3,set 4,set 5,set 6,set 7"));
+        const auto row = [&lines](const QString &id) {
+            for (const QString &line : lines) {
+                if (line.startsWith(id + QLatin1Char(',')))
+                    return line;
+            }
+            return QString();
+        };
+        QCOMPARE(row(QStringLiteral("op.28")),
+                 QStringLiteral("op.28,Acceleration time,s,5.00,5.00,5.00,5.00,5.00,5.00,5.00,5.00"));
+        QCOMPARE(row(QStringLiteral("op.05")),
+                 QStringLiteral("op.05,Demo cycle period,s,20.0,,,,,,,"));
+        QCOMPARE(row(QStringLiteral("ru.00")).section(QLatin1Char(','), 0, 2),
+                 QStringLiteral("ru.00,Inverter state,"));
+        QCOMPARE(cli({QStringLiteral("diff"), QStringLiteral("a"), QStringLiteral("b"),
+                      QStringLiteral("--format"), QStringLiteral("csv")})
+                     .exitCode,
+                 2);
+    }
+
     void scanTableShowsGroupsAndUnits()
     {
         const Run run = sim({QStringLiteral("scan")});

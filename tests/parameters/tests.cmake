@@ -27,3 +27,7 @@ drivedesk_add_test(NAME tst_telegramtext LABELS unit
 drivedesk_add_test(NAME tst_parametercomparison LABELS unit
     SOURCES parameters/tst_parametercomparison.cpp parameters/EditorSampleDrive.h
     LIBS drivedesk_parameters)
+# The CSV export for spreadsheets.
+drivedesk_add_test(NAME tst_parametercsv LABELS unit
+    SOURCES parameters/tst_parametercsv.cpp parameters/EditorSampleDrive.h
+    LIBS drivedesk_parameters)

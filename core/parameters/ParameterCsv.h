@@ -1,0 +1,17 @@
+#pragma once
+
+#include "DriveDescription.h"
+
+#include <QByteArray>
+
+namespace DriveDesk {
+
+// A drive's values for a spreadsheet: one row per parameter with its id, name, unit and the
+// value of each set as the drive shows it (plaintext, or the scaled number without its unit),
+// "?" where a value was not read, empty for the sets a parameter without sets does not have.
+// Comma-separated, fields quoted where they hold a comma, a quote or a line break (RFC 4180),
+// UTF-8 with CRLF line ends. Numbers follow the default QLocale's decimal separator, so the
+// command line (C locale) writes "12.50".
+QByteArray parametersAsCsv(const DriveDescription &drive);
+
+} // namespace DriveDesk
