@@ -8,25 +8,27 @@ namespace DriveDesk {
 
 namespace {
 
-QString field(const QString &text)
-{
-    if (!text.contains(QLatin1Char(',')) && !text.contains(QLatin1Char('"'))
-        && !text.contains(QLatin1Char('\n')) && !text.contains(QLatin1Char('\r')))
-        return text;
-    QString quoted = text;
-    quoted.replace(QLatin1Char('"'), QLatin1String("\"\""));
-    return QLatin1Char('"') + quoted + QLatin1Char('"');
-}
-
 QByteArray line(const QStringList &fields)
 {
-    QStringList quoted;
-    for (const QString &text : fields)
-        quoted << field(text);
-    return quoted.join(QLatin1Char(',')).toUtf8() + "\r\n";
+    return csvRecord(fields).toUtf8() + "\r\n";
 }
 
 } // namespace
+
+QString csvRecord(const QStringList &fields)
+{
+    QStringList quoted;
+    quoted.reserve(fields.size());
+    for (QString field : fields) {
+        if (field.contains(QLatin1Char(',')) || field.contains(QLatin1Char('"'))
+            || field.contains(QLatin1Char('\n')) || field.contains(QLatin1Char('\r'))) {
+            field.replace(QLatin1Char('"'), QLatin1String("\"\""));
+            field = QLatin1Char('"') + field + QLatin1Char('"');
+        }
+        quoted << field;
+    }
+    return quoted.join(QLatin1Char(','));
+}
 
 QByteArray parametersAsCsv(const DriveDescription &drive)
 {

@@ -3,6 +3,8 @@
 #include "DriveDescription.h"
 
 #include <QByteArray>
+#include <QString>
+#include <QStringList>
 
 namespace DriveDesk {
 
@@ -13,5 +15,9 @@ namespace DriveDesk {
 // UTF-8 with CRLF line ends. Numbers follow the default QLocale's decimal separator, so the
 // command line (C locale) writes "12.50".
 QByteArray parametersAsCsv(const DriveDescription &drive);
+
+// One CSV record (RFC 4180) without its line end: the fields joined by commas, each quoted
+// where it holds a comma, a quote or a line break. The telegram monitor's CSV files use it too.
+QString csvRecord(const QStringList &fields);
 
 } // namespace DriveDesk

@@ -1,5 +1,7 @@
 #include "TrafficFile.h"
 
+#include "parameters/ParameterCsv.h"
+
 #include <QDir>
 #include <QSaveFile>
 
@@ -12,7 +14,7 @@ QString headerOf(TrafficFile::Format format)
     QStringList names;
     for (int field = 0; field < TrafficFormat::FieldCount; ++field)
         names << TrafficFormat::fieldName(TrafficFormat::Field(field));
-    return format == TrafficFile::Format::Csv ? TrafficFormat::csv(names)
+    return format == TrafficFile::Format::Csv ? csvRecord(names)
                                               : TrafficFormat::tabSeparated(names);
 }
 
@@ -42,7 +44,7 @@ bool TrafficFile::save(const QString &path, const QList<TrafficEntry> &entries, 
     QString text = headerOf(format) + QLatin1Char('\n');
     for (const TrafficEntry &entry : entries) {
         const QStringList fields = TrafficFormat::fields(entry, TrafficFormat::Clock::DateAndTime);
-        text += (format == Format::Csv ? TrafficFormat::csv(fields)
+        text += (format == Format::Csv ? csvRecord(fields)
                                        : TrafficFormat::tabSeparated(fields));
         text += QLatin1Char('\n');
         // Write as we go so that a long monitor does not need the whole file in memory twice.

@@ -134,21 +134,4 @@ QString TrafficFormat::tabSeparated(const QStringList &fields)
     return cleaned.join(QLatin1Char('\t'));
 }
 
-QString TrafficFormat::csv(const QStringList &fields)
-{
-    QStringList quoted;
-    quoted.reserve(fields.size());
-    for (QString field : fields) {
-        const bool needsQuotes = field.contains(QLatin1Char(','))
-            || field.contains(QLatin1Char('"')) || field.contains(QLatin1Char('\n'))
-            || field.contains(QLatin1Char('\r'));
-        if (needsQuotes) {
-            field.replace(QLatin1Char('"'), QStringLiteral("\"\""));
-            field = QLatin1Char('"') + field + QLatin1Char('"');
-        }
-        quoted << field;
-    }
-    return quoted.join(QLatin1Char(','));
-}
-
 } // namespace DriveDesk

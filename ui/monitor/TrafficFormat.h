@@ -50,8 +50,6 @@ public:
     static QStringList fields(const TrafficEntry &entry, Clock clock);
     // The visible fields joined by tabs: one line of a copy or a text file.
     static QString tabSeparated(const QStringList &fields);
-    // RFC 4180: quoted where a field holds a comma, a quote or a line break.
-    static QString csv(const QStringList &fields);
 };
 
 } // namespace DriveDesk
