@@ -287,11 +287,11 @@ void MainWindow::onScanFinished(const QString &problem)
     m_browser->setEmptyText(problem.isEmpty()
                                 ? tr("The drive reported no parameters.")
                                 : tr("Nothing was read from the drive: %1.").arg(problem));
+    int parameters = 0;
+    for (int group = 0; group < m_model->rowCount(); ++group)
+        parameters += m_model->rowCount(m_model->index(group, 0));
     if (problem.isEmpty()) {
         m_notice->hide();
-        int parameters = 0;
-        for (int group = 0; group < m_model->rowCount(); ++group)
-            parameters += m_model->rowCount(m_model->index(group, 0));
         // One sentence per count: the plural of each is its own.
         showMessage(tr("Read %n parameter(s).", nullptr, parameters) + QLatin1Char(' ')
                     + tr("The drive has %n group(s).", nullptr, m_model->rowCount()));
@@ -300,9 +300,6 @@ void MainWindow::onScanFinished(const QString &problem)
             tr("Nothing was read: %1. Press Refresh (%2) to read the drive.")
                 .arg(problem, m_refreshAction->shortcut().toString(QKeySequence::NativeText)));
     } else {
-        int parameters = 0;
-        for (int group = 0; group < m_model->rowCount(); ++group)
-            parameters += m_model->rowCount(m_model->index(group, 0));
         const QString shown = tr("the table shows the %n parameter(s) read", nullptr, parameters);
         m_notice->showProblem(tr("The drive was read only in part (%1): %2. Read it again with "
                                  "Drive > Read Metadata Again.")
