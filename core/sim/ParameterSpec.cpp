@@ -74,6 +74,15 @@ std::optional<ParameterFlags> parseFlags(const QString &letters, QChar *bad)
         case 'd':
             flags.plaintextOnly = true;
             break;
+        case 'a':
+            flags.writeAlways = true;
+            break;
+        case 'o':
+            flags.writeOnly = true;
+            break;
+        case 'l':
+            flags.listReadOnly = true;
+            break;
         default:
             if (bad)
                 *bad = c;
@@ -150,13 +159,17 @@ SimParameter buildParameter(const ParameterSpec &spec, QStringList &problems)
         p2 |= 1u << 4; // ENTER with dot
     if (live)
         p2 |= 1u << 6 | 1u << 9; // time-slot display filter; the inverter changes the value
+    if (f.writeAlways)
+        p2 |= 1u << 12;
+    if (f.writeOnly)
+        p2 |= 1u << 13;
     if (f.excluded)
         p2 |= 1u << 14;
     if (f.noProcessData || f.excluded)
         p2 |= 1u << 15; // not permitted as CP parameter
     if (f.plaintextOnly)
         p2 |= 1u << 16;
-    if (f.readOnly)
+    if (f.readOnly || f.listReadOnly)
         p2 |= 1u << 17; // read only for up/download lists
     p.properties2 = p2;
 

@@ -20,6 +20,9 @@ struct ParameterFlags
     bool noProcessData = false; // n: not permitted as process data / scope channel
     bool excluded = false; // x: excluded from the complete parameter list
     bool plaintextOnly = false; // d: decimal value of plaintexts suppressed
+    bool writeAlways = false; // a: a download writes it whatever the drive holds
+    bool writeOnly = false; // o: an upload does not read it, a download writes it
+    bool listReadOnly = false; // l: read only for up/download lists (writable otherwise)
 };
 
 // The flags `letters` name; nothing, with the offending letter in *bad, for an unknown one.

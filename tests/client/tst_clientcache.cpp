@@ -132,7 +132,7 @@ private slots:
         const Scanned standard = scan(simulated(Protocol::Hsp5, fast()), MetadataSource::Cache,
                                       cache.path());
         QVERIFY(standard.drive.metadataFromCache);
-        QCOMPARE(standard.drive.parameterCount(), 205);
+        QCOMPARE(standard.drive.parameterCount(), 206);
     }
 
     void eachLanguageIsItsOwnEntry()

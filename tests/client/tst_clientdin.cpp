@@ -149,9 +149,9 @@ private slots:
         QCOMPARE(first.address, 1);
         // What the drive says about itself: its identification parameters, as it shows them.
         QCOMPARE(first.inverterIdentifier, QStringLiteral("0F51h"));
-        QCOMPARE(first.softwareVersion, QStringLiteral("1.81"));
+        QCOMPARE(first.softwareVersion, QStringLiteral("1.82"));
         QVERIFY(!first.serialNumber.isEmpty());
-        QVERIFY2(first.identification().contains(QStringLiteral("software 1.81")),
+        QVERIFY2(first.identification().contains(QStringLiteral("software 1.82")),
                  qPrintable(first.identification()));
         watcher.cancel();
         QVERIFY(waitFinished(watcher.future()));
@@ -187,7 +187,7 @@ private slots:
         QVERIFY(waitFinished(search));
         QCOMPARE(addressesOf(search), QList<int>{3});
         // No service 5 in DIN66019: the values as they came.
-        QCOMPARE(search.resultAt(0).softwareVersion, QStringLiteral("181"));
+        QCOMPARE(search.resultAt(0).softwareVersion, QStringLiteral("182"));
     }
 
     void findDrivesCanBeCancelled()

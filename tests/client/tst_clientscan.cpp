@@ -126,7 +126,7 @@ private slots:
         const DriveDescription drive = scan.result();
         QVERIFY(!drive.incompleteReason.isEmpty());
         QVERIFY(drive.parameterCount() > 0);
-        QVERIFY(drive.parameterCount() < 205);
+        QVERIFY(drive.parameterCount() < 206);
     }
 
     void scanWithoutConnectionSaysSo()

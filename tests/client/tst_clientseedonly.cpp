@@ -63,10 +63,10 @@ private slots:
 
         const DriveDescription drive = scanned(s, {});
         QVERIFY2(drive.incompleteReason.isEmpty(), qPrintable(drive.incompleteReason));
-        QCOMPARE(drive.parameterCount(), 205);
+        QCOMPARE(drive.parameterCount(), 206);
         // No identification service over HSP5: the identification parameters name the drive.
         QCOMPARE(drive.identification, QString());
-        QVERIFY2(DriveIdentity::summary(drive).contains(QStringLiteral("software 1.81")),
+        QVERIFY2(DriveIdentity::summary(drive).contains(QStringLiteral("software 1.82")),
                  qPrintable(DriveIdentity::summary(drive)));
         QCOMPARE(drive.find(kMaxSpeedForward)->values[1], std::optional<qint32>(2500));
         QCOMPARE(drive.find(kMaxSpeedForward)->values[0], std::optional<qint32>(3000));

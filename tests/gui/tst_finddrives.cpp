@@ -109,7 +109,7 @@ private slots:
         // Sy.02 and In.06 as the simulated F5 shows them.
         QVERIFY2(identification.contains(QStringLiteral("inverter identifier 0F51h")),
                  qPrintable(identification));
-        QVERIFY2(identification.contains(QStringLiteral("software 1.81")),
+        QVERIFY2(identification.contains(QStringLiteral("software 1.82")),
                  qPrintable(identification));
         QVERIFY(first->text().contains(identification));
         // Searching through a connection of its own: no drive is connected now.

@@ -108,7 +108,7 @@ private slots:
         QVERIFY(statusLabel("parameterSets").contains(QStringLiteral("Set pointer (Fr.09): 0")));
         QVERIFY(statusLabel("connectionState").startsWith(QStringLiteral("Connected")));
         // Named by its identification parameters: HSP5 has no identification service.
-        QVERIFY2(m_window->windowTitle().contains(QStringLiteral("software 1.81, serial number")),
+        QVERIFY2(m_window->windowTitle().contains(QStringLiteral("software 1.82, serial number")),
                  qPrintable(m_window->windowTitle()));
         QCOMPARE(RecentConnections::last().kind, ConnectionSettings::Kind::Simulated);
     }

@@ -306,7 +306,7 @@ private slots:
             return line.label.endsWith(QStringLiteral("(In.06)"));
         });
         QVERIFY(version != lines.cend());
-        QCOMPARE(version->value, QStringLiteral("1.81"));
+        QCOMPARE(version->value, QStringLiteral("1.82"));
         for (const char *id : { "(Sy.02)", "(Sy.03)", "(In.06)", "(In.10)" }) {
             QVERIFY2(std::any_of(labels.cbegin(), labels.cend(),
                                  [id](const QString &label) {

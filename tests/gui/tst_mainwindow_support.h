@@ -30,7 +30,7 @@ constexpr quint16 kDemoPeriod = 0x0305; // op.05, one value, 4.0..600.0 s, defau
 constexpr quint16 kFixedSpeed1 = 0x0314; // op.20, -4000..4000 rpm, default 100, 8 sets
 constexpr quint16 kPassword = 0x0801; // ud.01
 constexpr int kSimulatedGroups = 16;
-constexpr int kSimulatedParameters = 205;
+constexpr int kSimulatedParameters = 206;
 
 // QSettings in a directory of the test's own, removed afterwards.
 class IsolatedSettings
