@@ -43,7 +43,10 @@ CliRunner::~CliRunner() = default;
 
 void CliRunner::start()
 {
-    if (m_request.command == CliRequest::Command::Diff)
+    if (!loadFiles())
+        return;
+    if (m_request.command == CliRequest::Command::Diff
+        && !m_request.files.contains(QStringLiteral("drive")))
         return runDiff();
     ClientOptions options;
     options.timeoutMs = m_request.timeoutMs;
@@ -85,15 +88,18 @@ void CliRunner::runCommand()
     case CliRequest::Command::Read: runRead(); break;
     case CliRequest::Command::Write: runWrite(); break;
     case CliRequest::Command::Diff: runDiff(); break;
+    case CliRequest::Command::Upload: runUpload(); break;
+    case CliRequest::Command::Download: runDownload(); break;
     }
 }
 
 // DIN66019 reads and writes values by address and nothing else: no names, limits or scaling.
 void CliRunner::runLegacy()
 {
-    if (m_request.command == CliRequest::Command::Info || m_request.command == CliRequest::Command::Scan) {
+    if (m_request.command != CliRequest::Command::Read
+        && m_request.command != CliRequest::Command::Write) {
         return fail(2, tr("DIN66019 carries parameter values only; use --protocol din66019ii "
-                          "for info and scan"));
+                          "for anything but read and write"));
     }
     QString error;
     const auto address = ParameterId::parse(m_request.parameter, QList<GroupAddress>{}, &error);

@@ -10,7 +10,9 @@
 
 namespace DriveDesk {
 
+struct DownloadPlan;
 struct WriteOutcome;
+class WriteChangesJob;
 
 // Runs one drivedesk-cli command against a drive: connects, does the work asynchronously
 // through the client, prints the result, and ends with finished(exit code).
@@ -24,6 +26,9 @@ public:
     ~CliRunner() override;
 
     void start();
+    // Ctrl+C: a download stops after the value on its way and reports what it wrote. False
+    // when nothing is under way that must end that way: the caller may just quit.
+    bool interrupt();
 
 signals:
     void finished(int exitCode);
@@ -36,8 +41,18 @@ private:
     void runRead();
     void runWrite();
     void runLegacy();
-    // Two parameter files, no drive: exit 0 equal, 1 different, 2 a file that cannot be read.
+    // Two sides (files, the drive, the defaults): exit 0 equal, 1 different, 2 a file that
+    // cannot be read (CliDiff.cpp).
     void runDiff();
+    void printDiff(const DriveDescription &a, const DriveDescription &b);
+    // The parameter files named on the command line, read before anything is sent; false
+    // (and finished with exit 2) for one that cannot be read.
+    bool loadFiles();
+    // Drive to file and file to drive (CliTransfer.cpp).
+    void runUpload();
+    void runDownload();
+    void writeDownload(const DownloadPlan &plan, const DriveDescription &drive);
+    void progressLine(int percent, const QString &text);
     // Finds the parameter named on the command line and reads its metadata, then calls next.
     void lookUpParameter(std::function<void(const GroupDescription &, const ParameterDescription &)> next);
     void report(const QString &id, const ParameterDescription &parameter, qint32 raw,
@@ -58,6 +73,9 @@ private:
     QTextStream m_err;
     bool m_finished = false;
     bool m_cacheNoted = false;
+    QList<DriveDescription> m_files; // loadFiles(): the files of diff, upload, download
+    std::shared_ptr<WriteChangesJob> m_download;
+    bool m_interrupted = false;
 };
 
 } // namespace DriveDesk

@@ -39,11 +39,23 @@ QString usage()
         "  write PARAM VALUE [--sets LIST] [--raw]\n"
         "                               VALUE in display units (12.50) or a plaintext,\n"
         "                               raw with --raw; LIST like 0,2-4 or all\n"
-        "  diff FILE_A FILE_B [--format json|table]\n"
-        "                               every value that differs between two parameter\n"
-        "                               files (scan --format json --values writes one);\n"
-        "                               needs no --connect. Exit 0 equal, 1 different,\n"
-        "                               2 a file that cannot be read\n");
+        "  upload FILE                  back the drive up to a parameter file: every\n"
+        "                               parameter a parameter list holds, with its values\n"
+        "  download FILE [--dry-run] [--force] [--sets LIST]\n"
+        "                               write the file's values that differ to the drive,\n"
+        "                               each read back; refused for a file of another kind\n"
+        "                               of drive, with parameters missing or values outside\n"
+        "                               the drive's limits unless --force; --dry-run shows\n"
+        "                               what would be written. Ctrl+C stops after the value\n"
+        "                               on its way and reports what was written\n"
+        "  diff A B [--format json|table]\n"
+        "                               every value that differs between A and B, each a\n"
+        "                               parameter file, drive (needs --connect) or defaults\n"
+        "                               (the other side's defaults). Exit 0 equal,\n"
+        "                               1 different, 2 a file that cannot be read\n"
+        "\n"
+        "Exit status: 0 done, 1 the drive refused or the work was not completed, 2 bad\n"
+        "input (nothing was sent), 3 no connection.\n");
 }
 
 } // namespace
@@ -90,7 +102,10 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     connection.addTo(parser);
     const QCommandLineOption noCache(QStringLiteral("no-cache"));
     const QCommandLineOption password(QStringLiteral("password"), {}, QStringLiteral("n"));
-    parser.addOptions({help, timeout, quiet, format, values, set, sets, raw, noCache, password});
+    const QCommandLineOption dryRun(QStringLiteral("dry-run"));
+    const QCommandLineOption force(QStringLiteral("force"));
+    parser.addOptions({help, timeout, quiet, format, values, set, sets, raw, noCache, password,
+                       dryRun, force});
     *helpText = usage();
 
     // A negative value ("write uF.07 -5") is not an option: shield such words from the parser.
@@ -114,11 +129,16 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     helpText->clear();
 
     CliRequest request;
-    // Two files are compared without a drive: the connection is needed only when given.
-    const bool diff = parser.positionalArguments().value(0).compare(QLatin1String("diff"),
-                                                                    Qt::CaseInsensitive)
-        == 0;
-    if ((!diff || parser.isSet(QStringLiteral("connect")))
+    // Two files are compared without a drive: the connection is needed only when given, or
+    // when a side is the drive.
+    const QStringList words = parser.positionalArguments();
+    const bool diff = words.value(0).compare(QLatin1String("diff"), Qt::CaseInsensitive) == 0;
+    const bool diffWithDrive = words.mid(1).contains(QStringLiteral("drive"), Qt::CaseInsensitive);
+    if (diff && diffWithDrive && !parser.isSet(QStringLiteral("connect"))) {
+        *error = QStringLiteral("diff with the drive needs --connect");
+        return std::nullopt;
+    }
+    if ((!diff || diffWithDrive || parser.isSet(QStringLiteral("connect")))
         && !connection.settings(parser, &request.connection, error))
         return std::nullopt;
     int setNumber = -1;
@@ -153,6 +173,8 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     }
     request.values = parser.isSet(values);
     request.raw = parser.isSet(raw);
+    request.dryRun = parser.isSet(dryRun);
+    request.force = parser.isSet(force);
     request.quiet = parser.isSet(quiet);
     request.useCache = !parser.isSet(noCache);
 
@@ -165,7 +187,9 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     const qsizetype expected = command == QLatin1String("read")    ? 2
                                : command == QLatin1String("write") ? 3
                                : command == QLatin1String("diff")  ? 3
-                                                                  : 1;
+                               : command == QLatin1String("upload") || command == QLatin1String("download")
+                                   ? 2
+                                   : 1;
     if (command == QLatin1String("info")) {
         request.command = CliRequest::Command::Info;
     } else if (command == QLatin1String("scan")) {
@@ -176,11 +200,15 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
         request.command = CliRequest::Command::Write;
     } else if (command == QLatin1String("diff")) {
         request.command = CliRequest::Command::Diff;
+    } else if (command == QLatin1String("upload")) {
+        request.command = CliRequest::Command::Upload;
+    } else if (command == QLatin1String("download")) {
+        request.command = CliRequest::Command::Download;
     } else {
+        const QString commands = QStringLiteral("info, scan, read, write, upload, download or diff");
         *error = command.isEmpty()
-            ? QStringLiteral("no command: use info, scan, read, write or diff")
-            : QStringLiteral("unknown command '%1': use info, scan, read, write or diff")
-                  .arg(positional.value(0));
+            ? QStringLiteral("no command: use %1").arg(commands)
+            : QStringLiteral("unknown command '%1': use %2").arg(positional.value(0), commands);
         return std::nullopt;
     }
     if (positional.size() != expected) {
@@ -189,7 +217,10 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
                  : command == QLatin1String("write")
                      ? QStringLiteral("write takes a parameter and a value, e.g. write uF.07 70.0")
                  : command == QLatin1String("diff")
-                     ? QStringLiteral("diff takes two parameter files, e.g. diff a.json b.json")
+                     ? QStringLiteral("diff takes two sides, e.g. diff a.json b.json or diff drive "
+                                      "a.json")
+                 : command == QLatin1String("upload") || command == QLatin1String("download")
+                     ? QStringLiteral("%1 takes a parameter file, e.g. %1 drive.json").arg(command)
                      : QStringLiteral("%1 takes no arguments").arg(command);
         return std::nullopt;
     }
@@ -199,14 +230,37 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
         request.parameter.clear();
         request.value.clear();
         request.files = { positional.value(1), positional.value(2) };
-        if (request.files.contains(QStringLiteral("drive"))) {
-            *error = QStringLiteral("diff compares two parameter files; for a drive, write its "
-                                    "file first: scan --format json --values > FILE");
+        for (QString &side : request.files) {
+            if (side.compare(QLatin1String("drive"), Qt::CaseInsensitive) == 0)
+                side = QStringLiteral("drive");
+            else if (side.compare(QLatin1String("defaults"), Qt::CaseInsensitive) == 0)
+                side = QStringLiteral("defaults");
+        }
+        if (request.files[0] == request.files[1]
+            && (request.files[0] == QLatin1String("drive")
+                || request.files[0] == QLatin1String("defaults"))) {
+            *error = QStringLiteral("diff compares two different sides");
             return std::nullopt;
         }
     }
-    if (request.command != CliRequest::Command::Write && (request.raw || parser.isSet(sets))) {
-        *error = QStringLiteral("--raw and --sets belong to write");
+    if (request.command == CliRequest::Command::Upload
+        || request.command == CliRequest::Command::Download) {
+        request.files = { positional.value(1) };
+        request.parameter.clear();
+    }
+    const bool download = request.command == CliRequest::Command::Download;
+    if (!download && (request.dryRun || request.force)) {
+        *error = QStringLiteral("--dry-run and --force belong to download");
+        return std::nullopt;
+    }
+    if (download && !parser.isSet(sets))
+        request.setMask = 0xFF;
+    if (request.command != CliRequest::Command::Write && request.raw) {
+        *error = QStringLiteral("--raw belongs to write");
+        return std::nullopt;
+    }
+    if (request.command != CliRequest::Command::Write && !download && parser.isSet(sets)) {
+        *error = QStringLiteral("--sets belongs to write and download");
         return std::nullopt;
     }
     if (request.command != CliRequest::Command::Scan

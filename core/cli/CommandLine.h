@@ -12,7 +12,7 @@ namespace DriveDesk {
 
 // What `drivedesk-cli` was asked to do, parsed and checked before anything is sent.
 struct CliRequest {
-    enum class Command : quint8 { Info, Scan, Read, Write, Diff };
+    enum class Command : quint8 { Info, Scan, Read, Write, Diff, Upload, Download };
     enum class Format : quint8 { Table, Json, Csv };
 
     ConnectionSettings connection;
@@ -21,10 +21,14 @@ struct CliRequest {
     bool values = false;      // scan: read the value of every set
     QString parameter;        // read/write: "ru.3", "ru.03", "0x0203"
     QString value;            // write: in display units or a plaintext, raw with --raw
-    QStringList files;        // diff: the two parameter files
+    // diff: the two sides, each a file, "drive" or "defaults" (the other side's defaults);
+    // upload, download: the one file
+    QStringList files;
     std::optional<int> set;   // read --set N
-    quint8 setMask = 0;       // write --sets LIST; 0: the active set (service 1)
+    quint8 setMask = 0;       // write, download --sets LIST; write's 0: the active set (service 1)
     bool raw = false;
+    bool dryRun = false;      // download: show what would be written, write nothing
+    bool force = false;       // download: write although the checks found problems
     int timeoutMs = 0;
     bool quiet = false;       // no progress on stderr
     bool useCache = true;     // metadata of a known kind of drive from the metadata cache

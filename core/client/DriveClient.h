@@ -40,6 +40,9 @@ struct ScanOptions {
     QList<quint16> onlyParameters; // non-empty: just these parameters of the groups found
     MetadataSource metadata = MetadataSource::Drive;
     QString cacheDirectory; // empty: MetadataCache::defaultDirectory()
+    // An upload: the result is what a parameter list holds (ParameterList::fromScan), and no
+    // value is read that a list does not read (excluded and write-only parameters).
+    bool parameterList = false;
 };
 
 // A note on the wire for the telegram monitor.

@@ -1,6 +1,7 @@
 #include "DriveScanner.h"
 
 #include "parameters/MetadataCache.h"
+#include "parameters/ParameterList.h"
 
 #include <QPointer>
 
@@ -199,6 +200,8 @@ DriveDescription DriveScanner::result(const QString &reason)
                 parameter.values.fill(std::nullopt);
         }
     }
+    if (m_options.parameterList)
+        return ParameterList::fromScan(drive);
     return drive;
 }
 

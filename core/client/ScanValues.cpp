@@ -2,6 +2,8 @@
 // the drive says the sets differ.
 #include "DriveScanner.h"
 
+#include "parameters/ParameterList.h"
+
 #include <bit>
 
 namespace DriveDesk {
@@ -43,6 +45,9 @@ std::pair<quint8, quint8> halves(quint8 mask)
 
 bool DriveScanner::wantsValue(quint8 page, quint8 number) const
 {
+    const ScanParameter &scanned = m_state.groups.at(page).parameters.at(number);
+    if (m_options.parameterList && !ParameterList::isReadByUpload(scanned.description))
+        return false;
     if (m_options.values)
         return true;
     // The identification parameters are read for the drive's identity (and the cache's key).

@@ -1,5 +1,6 @@
 #include "ParameterComparison.h"
 
+#include "ParameterAccess.h"
 #include "ParameterFormat.h"
 
 #include <QMap>
@@ -98,6 +99,26 @@ ParameterComparison compareDescriptions(const DriveDescription &a, const DriveDe
         }
     }
     return comparison;
+}
+
+ParameterComparison compareWithDefaults(const DriveDescription &drive, bool defaultsFirst)
+{
+    DriveDescription settings = drive;
+    for (GroupDescription &group : settings.groups) {
+        group.parameters.removeIf(
+            [](const ParameterDescription &parameter) { return !isUserSetting(parameter); });
+    }
+    DriveDescription defaults = settings;
+    for (GroupDescription &group : defaults.groups) {
+        for (ParameterDescription &parameter : group.parameters) {
+            parameter.values = {};
+            const int sets = parameter.isSetProgrammable() ? kParameterSets : 1;
+            for (int set = 0; set < sets; ++set)
+                parameter.values[std::size_t(set)] = parameter.defaultValue;
+        }
+    }
+    return defaultsFirst ? compareDescriptions(defaults, settings)
+                         : compareDescriptions(settings, defaults);
 }
 
 } // namespace DriveDesk

@@ -40,4 +40,9 @@ public:
 // per set. A value one side read and the other did not differs; two unread values do not.
 ParameterComparison compareDescriptions(const DriveDescription &a, const DriveDescription &b);
 
+// Compares the values a user sets (isUserSetting) with their defaults, set by set; the
+// defaults are side B, or side A with `defaultsFirst`. Live values and counters are left out:
+// they are no setting to go back to.
+ParameterComparison compareWithDefaults(const DriveDescription &drive, bool defaultsFirst = false);
+
 } // namespace DriveDesk

@@ -30,34 +30,25 @@ CopySetPlan planCopySet(const DriveDescription &drive, int from, int to, Passwor
     return plan;
 }
 
-CopySetJob::CopySetJob(Protocol protocol, CopySetPlan plan)
-    : m_protocol(protocol)
-    , m_plan(std::move(plan))
+namespace {
+
+QList<ValueChange> changesOf(const CopySetPlan &plan)
 {
-    promise().setProgressRange(0, int(m_plan.items.size()));
+    QList<ValueChange> changes;
+    changes.reserve(plan.items.size());
+    for (const CopySetPlan::Item &item : plan.items) {
+        ValueChange change;
+        change.address = item.address;
+        change.steps = {WriteStep{quint8(1u << plan.to), item.raw, false}};
+        changes << change;
+    }
+    return changes;
 }
 
-void CopySetJob::start()
-{
-    writeNext();
-}
+} // namespace
 
-void CopySetJob::writeNext()
-{
-    if (isCancelled() || isStopRequested() || m_next >= m_plan.items.size())
-        return end();
-    const int index = int(m_next++);
-    const CopySetPlan::Item &item = m_plan.items.at(index);
-    ValueChange change;
-    change.address = item.address;
-    change.steps = {WriteStep{quint8(1u << m_plan.to), item.raw, false}};
-    sendValueChange(sink(), m_protocol, change, [this, index](const WriteOutcome &outcome) {
-        promise().addResult(outcome, index);
-        promise().setProgressValue(index + 1);
-        if (outcome.connectionFailed && !outcome.anyAcknowledged())
-            return end();
-        writeNext();
-    });
-}
+CopySetJob::CopySetJob(Protocol protocol, const CopySetPlan &plan)
+    : WriteChangesJob(protocol, changesOf(plan))
+{ }
 
 } // namespace DriveDesk

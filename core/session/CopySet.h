@@ -3,7 +3,7 @@
 #include "client/RequestJob.h"
 #include "parameters/DriveDescription.h"
 #include "parameters/PasswordLevel.h"
-#include "session/ValueChange.h"
+#include "session/WriteChangesJob.h"
 
 #include <QList>
 
@@ -27,22 +27,13 @@ struct CopySetPlan
 
 CopySetPlan planCopySet(const DriveDescription &drive, int from, int to, PasswordLevel level);
 
-// Writes a plan's items to the target set one after the other, each read back; result i is
-// the outcome of items[i]. A lost connection stops the job. requestStop() sends nothing more
-// and still reports the write on its way, so that every item without a result was never
-// written.
-class CopySetJob : public RequestJob<WriteOutcome>
+// Writes a plan's items to the target set, each read back; result i is the outcome of
+// items[i] (WriteChangesJob: requestStop() and a lost connection leave every item without a
+// result unwritten).
+class CopySetJob : public WriteChangesJob
 {
 public:
-    CopySetJob(Protocol protocol, CopySetPlan plan);
-
-private:
-    void start() override;
-    void writeNext();
-
-    const Protocol m_protocol;
-    const CopySetPlan m_plan;
-    qsizetype m_next = 0;
+    CopySetJob(Protocol protocol, const CopySetPlan &plan);
 };
 
 } // namespace DriveDesk

@@ -1,0 +1,70 @@
+#pragma once
+
+#include "parameters/DriveDescription.h"
+#include "session/ValueChange.h"
+
+#include <QCoreApplication>
+#include <QList>
+#include <QString>
+#include <QStringList>
+
+#include <array>
+#include <optional>
+
+namespace DriveDesk {
+
+struct DownloadOptions
+{
+    quint8 sets = 0xFF; // the sets whose values are written (--sets)
+    bool force = false; // write although the checks found problems
+};
+
+// One parameter a download writes: its values, grouped into one step per value.
+struct DownloadItem
+{
+    QString id;   // "op.11"
+    QString name; // the drive's
+    ValueChange change;
+    // What the file holds, per set written ([0] for a value that is not per set), and what the
+    // drive held before.
+    std::array<std::optional<qint32>, kParameterSets> wanted{};
+    std::array<std::optional<qint32>, kParameterSets> before{};
+    bool always = false; // written whatever the drive holds (write always, write only)
+};
+
+// A parameter, or some of its sets, that the download leaves although the file holds another
+// value than the drive.
+struct DownloadSkip
+{
+    QString id;
+    QString name;
+    QString reason; // in words: "read-only", "set 3 is not in the file"
+};
+
+// What downloading a parameter file to a drive writes, worked out before anything is sent:
+// the checks that refuse it, the values that differ (and those always written) in the order
+// they are written, and what is left. docs/parameter-file.md says why in this order.
+struct DownloadPlan
+{
+    Q_DECLARE_TR_FUNCTIONS(DownloadPlan)
+public:
+    // Why the download is refused unless forced: another kind of drive or software version,
+    // parameters only one side has, values outside the drive's limits.
+    QStringList problems;
+    bool forced = false;
+    QList<DownloadItem> items;
+    QList<DownloadSkip> skipped;
+    int unchanged = 0; // values (parameter and set) the drive already holds
+    int readOnlyDiffering = 0; // read-only values that differ: never written, not listed
+
+    bool isRefused() const { return !problems.isEmpty() && !forced; }
+    int valueCount() const; // values the items write
+    // For --dry-run and the window's last look: every value to write, drive's and file's.
+    QString text(const DriveDescription &drive) const;
+};
+
+// `drive` is a scan of the drive with its values; `file` a parameter file.
+DownloadPlan planDownload(const DriveDescription &file, const DriveDescription &drive,
+                          const DownloadOptions &options);
+
+} // namespace DriveDesk
