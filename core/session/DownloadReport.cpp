@@ -70,6 +70,7 @@ DownloadReport reportDownload(const DownloadPlan &plan,
         }
         quint8 held = 0;
         quint8 notSent = 0;
+        quint8 unread = 0;
         QStringList otherwise;
         for (int set = 0; set < kParameterSets; ++set) {
             const auto s = std::size_t(set);
@@ -87,15 +88,23 @@ DownloadReport reportDownload(const DownloadPlan &plan,
                 otherwise << DownloadReport::tr("%1 holds %2")
                                  .arg(setsText(item, bit), format.text(*back));
             } else {
-                otherwise << DownloadReport::tr("%1 could not be read back (%2)")
-                                 .arg(setsText(item, bit), outcome->readBackError);
+                unread |= bit;
             }
+        }
+        if (unread) {
+            otherwise << DownloadReport::tr("%1 could not be read back (%2)")
+                             .arg(setsText(item, unread), outcome->readBackError);
         }
         if (held) {
             report.written << line(valuesText(item, held, item.wanted, format));
             report.writtenValues += std::popcount(unsigned(held));
         }
-        if (outcome->refusedMask) {
+        if (outcome->refusedMask && outcome->connectionFailed) {
+            // The request may have reached the drive and only its answer got lost.
+            report.refused << line(DownloadReport::tr("%1: no answer, so whether the drive took "
+                                                      "the value is unknown (%2)")
+                                       .arg(setsText(item, outcome->refusedMask), outcome->error));
+        } else if (outcome->refusedMask) {
             report.refused << line(QStringLiteral("%1: %2").arg(
                 setsText(item, outcome->refusedMask), outcome->error));
         }

@@ -47,6 +47,8 @@ void readBack(RequestSink &sink, const ChangeRunPtr &run)
                 run->outcome.readBack[std::size_t(set)] = value->value;
             else if (run->outcome.readBackError.isEmpty())
                 run->outcome.readBackError = reply.message();
+            if (reply.isConnectionFailure())
+                run->outcome.connectionFailed = true;
             finishReadBack(run);
         });
     }
@@ -72,7 +74,12 @@ void sendNextStep(RequestSink &sink, const ChangeRunPtr &run)
             outcome.refusedMask |= step.setMask;
             if (outcome.error.isEmpty())
                 outcome.error = reply.message();
-            outcome.connectionFailed = outcome.connectionFailed || reply.isConnectionFailure();
+            if (reply.isConnectionFailure()) {
+                // The steps after it would fail alike: they stay unsent, neither acknowledged
+                // nor refused, and what was acknowledged is still read back if it can be.
+                outcome.connectionFailed = true;
+                run->nextStep = run->change.steps.size();
+            }
         }
         sendNextStep(sink, run);
     });

@@ -42,7 +42,9 @@ struct WriteOutcome
     quint8 refusedMask = 0;      // sets whose write was refused or never answered
     bool activeSetAcknowledged = false; // a step with set mask 0
     QString error;               // the first refusal or transport failure, in words
-    bool connectionFailed = false; // no answer at all: later requests will fail alike
+    // No answer at all, to a write or a read-back: later requests would fail alike. The steps
+    // after the failed one were not sent: their sets are neither acknowledged nor refused.
+    bool connectionFailed = false;
     QString readBackError;       // acknowledged, but the value could not be read back
     // What the drive holds after the change, per set read back ([0] for the active set).
     std::array<std::optional<qint32>, kParameterSets> readBack{};

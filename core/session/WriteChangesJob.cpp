@@ -23,7 +23,7 @@ void WriteChangesJob::writeNext()
                     [this, index](const WriteOutcome &outcome) {
                         promise().addResult(outcome, index);
                         promise().setProgressValue(index + 1);
-                        if (outcome.connectionFailed && !outcome.anyAcknowledged())
+                        if (outcome.connectionFailed)
                             return end();
                         writeNext();
                     });

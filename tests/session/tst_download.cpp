@@ -1,0 +1,400 @@
+#include "../client/ClientTestSupport.h"
+
+#include "bus/SimulatorServer.h"
+#include "parameters/ParameterComparison.h"
+#include "parameters/ParameterDocument.h"
+#include "parameters/ParameterList.h"
+#include "session/DownloadPlan.h"
+#include "session/DownloadReport.h"
+#include "session/WriteChangesJob.h"
+
+#include <QTemporaryDir>
+
+using namespace DriveDesk;
+using namespace DriveDesk::ClientTest;
+
+namespace {
+
+constexpr quint16 kCommandSpeed = 0x0303;   // op.03, one value
+constexpr quint16 kMinSpeedForward = 0x030A; // op.10, 8 sets
+constexpr quint16 kFixedSpeed1 = 0x0314;    // op.20, 8 sets
+constexpr quint16 kPeakCurrent = 0x0210;    // ru.16, excluded from the list
+constexpr quint16 kServiceCode = 0x080B;    // ud.11, write only
+constexpr quint16 kActiveSet = 0x0902;      // Fr.02, read only for lists
+constexpr quint16 kSetPointer = 0x0909;     // Fr.09, write always
+constexpr quint16 kSoftwareVersion = 0x0E06; // In.06
+
+ParameterDescription &parameter(DriveDescription &drive, quint16 address)
+{
+    for (GroupDescription &group : drive.groups) {
+        for (ParameterDescription &p : group.parameters) {
+            if (p.address == address)
+                return p;
+        }
+    }
+    qFatal("no parameter %04x", address);
+}
+
+DriveDescription scanned(Session &session, bool parameterList, QList<quint8> pages = {})
+{
+    ScanOptions options;
+    options.parameterList = parameterList;
+    options.groupPages = pages;
+    const QFuture<DriveDescription> scan = session.client->scan(options);
+    return waitFinished(scan, 60000) ? scan.result() : DriveDescription{};
+}
+
+const DownloadItem *itemFor(const DownloadPlan &plan, quint16 address)
+{
+    for (const DownloadItem &item : plan.items) {
+        if (item.change.address == address)
+            return &item;
+    }
+    return nullptr;
+}
+
+bool skips(const DownloadPlan &plan, const QString &id, const QString &reason)
+{
+    for (const DownloadSkip &skip : plan.skipped) {
+        if (skip.id == id && skip.reason.contains(reason))
+            return true;
+    }
+    return false;
+}
+
+QList<ValueChange> changesOf(const DownloadPlan &plan)
+{
+    QList<ValueChange> changes;
+    for (const DownloadItem &item : plan.items)
+        changes << item.change;
+    return changes;
+}
+
+// Writes a plan and reports; outcomes as the job delivered them.
+DownloadReport write(Session &session, Protocol protocol, const DownloadPlan &plan,
+                     const DriveDescription &drive)
+{
+    const auto job = std::make_shared<WriteChangesJob>(protocol, changesOf(plan));
+    const QFuture<WriteOutcome> future = session.client->run(job);
+    [[maybe_unused]] const bool finished = waitFinished(future, 60000);
+    QList<std::optional<WriteOutcome>> outcomes(plan.items.size());
+    for (int i = 0; i < int(outcomes.size()); ++i) {
+        if (future.isResultReadyAt(i))
+            outcomes[i] = future.resultAt(i);
+    }
+    return reportDownload(plan, outcomes, {}, drive);
+}
+
+bool write(Session &session, quint16 address, quint8 sets, qint32 raw)
+{
+    return session.call(session.client->writeValue(address, raw, sets)).ok();
+}
+
+} // namespace
+
+// Downloading a parameter file: what the plan writes and leaves (the properties-2 flags, sets,
+// the checks), the order, and that the report says what the drive holds.
+class TestDownload : public QObject
+{
+    Q_OBJECT
+private slots:
+    void initTestCase()
+    {
+        Session session(simulated(Protocol::Hsp5, fast()));
+        QVERIFY(session.connected());
+        m_file = scanned(session, true);
+        m_drive = scanned(session, false);
+        QVERIFY(m_file.incompleteReason.isEmpty() && m_drive.incompleteReason.isEmpty());
+    }
+
+    // Seed 002 2.6.2: excluded parameters are no part of the file, a write-only one is not
+    // read and holds its default, a read-only-for-lists one is read.
+    void uploadFollowsTheFlags()
+    {
+        Session session(simulated(Protocol::Hsp5, fast()));
+        QVERIFY(session.connected());
+        QVERIFY(write(session, kServiceCode, 0x01, 1234));
+        QVERIFY(write(session, kActiveSet, 0x01, 2));
+        session.traffic->clear();
+        const DriveDescription file = scanned(session, true);
+        QVERIFY(file.incompleteReason.isEmpty());
+
+        QVERIFY(!file.find(kPeakCurrent));
+        QVERIFY(m_drive.find(kPeakCurrent)); // the drive has it
+        QCOMPARE(file.find(kServiceCode)->values[0], 0); // its default, not 1234
+        QCOMPARE(file.find(kActiveSet)->values[0], 2);
+        QCOMPARE(file.find(kSetPointer)->values[0], 0);
+        for (const TrafficRecord &record : session.records()) {
+            if (record.kind != TrafficRecord::Kind::Sent || !record.telegram)
+                continue;
+            const auto *value = std::get_if<ParameterValue>(&record.telegram->data);
+            const bool valueRead = record.telegram->service == Service::ParameterValue
+                || record.telegram->service == Service::ParameterValueStandard;
+            QVERIFY2(!valueRead || !value
+                         || (value->address != kServiceCode && value->address != kPeakCurrent),
+                     qPrintable(record.meaning));
+        }
+    }
+
+    void aFileOfTheDriveItselfWritesWhatIsAlwaysWritten()
+    {
+        const DownloadPlan plan = planDownload(m_file, m_drive, {});
+        QVERIFY2(plan.problems.isEmpty(), qPrintable(plan.problems.join(QLatin1Char('\n'))));
+        QCOMPARE(plan.items.size(), 2);
+        QVERIFY(itemFor(plan, kServiceCode)); // write only: never compared
+        QVERIFY(!itemFor(plan, kServiceCode)->before[0]);
+        QVERIFY(itemFor(plan, kSetPointer)); // write always, though equal
+        QVERIFY(itemFor(plan, kSetPointer)->always);
+        QVERIFY(plan.skipped.isEmpty());
+        QVERIFY(plan.unchanged > 600);
+    }
+
+    void aDownloadWritesWhatDiffersAndLeavesWhatItMustNot()
+    {
+        DriveDescription file = m_file;
+        parameter(file, kMaxSpeedForward).values[2] = 2500;
+        parameter(file, kMaxSpeedForward).values[5] = 2500;
+        parameter(file, kMaxSpeedForward).values[6] = 2000;
+        parameter(file, kActiveSet).values[0] = 3; // read only for lists
+        parameter(file, kRatedCurrent).values[0] = 99; // read-only
+        const int liveValues = planDownload(m_file, m_drive, {}).readOnlyDiffering;
+        const DownloadPlan plan = planDownload(file, m_drive, {});
+        QVERIFY(plan.problems.isEmpty());
+        const DownloadItem *speed = itemFor(plan, kMaxSpeedForward);
+        QVERIFY(speed);
+        // One telegram per value: sets 2 and 5 take 2500 together.
+        QCOMPARE(speed->change.steps.size(), 2);
+        QCOMPARE(speed->change.steps[0].raw, 2000);
+        QCOMPARE(speed->change.steps[0].setMask, quint8(0x40));
+        QCOMPARE(speed->change.steps[1].raw, 2500);
+        QCOMPARE(speed->change.steps[1].setMask, quint8(0x24));
+        QCOMPARE(plan.valueCount(), 3 + 2);
+        QVERIFY(!itemFor(plan, kActiveSet));
+        QVERIFY(skips(plan, QStringLiteral("Fr.02"), QStringLiteral("read-only for parameter lists")));
+        QVERIFY(!itemFor(plan, kRatedCurrent));
+        QCOMPARE(plan.readOnlyDiffering, liveValues + 1);
+        QVERIFY(plan.text(m_drive).contains(QStringLiteral("op.11  Maximum speed forward, set 6: 3000 1/min -> 2000 1/min")));
+    }
+
+    void setsChosenLimitTheDownload()
+    {
+        DriveDescription file = m_file;
+        parameter(file, kMaxSpeedForward).values[1] = 2500;
+        parameter(file, kMaxSpeedForward).values[4] = 2400;
+        parameter(file, kCommandSpeed).values[0] = 100; // one value for all sets
+        DownloadOptions options;
+        options.sets = 0x12; // sets 1 and 4
+        DownloadPlan plan = planDownload(file, m_drive, options);
+        QCOMPARE(itemFor(plan, kMaxSpeedForward)->change.steps.size(), 2);
+        QVERIFY(!itemFor(plan, kCommandSpeed));
+        QVERIFY(skips(plan, QStringLiteral("op.03"), QStringLiteral("sets chosen")));
+        options.sets = 0x02;
+        plan = planDownload(file, m_drive, options);
+        QCOMPARE(itemFor(plan, kMaxSpeedForward)->change.steps.size(), 1);
+        QCOMPARE(itemFor(plan, kMaxSpeedForward)->change.steps[0].setMask, quint8(0x02));
+    }
+
+    void aFileOfAnotherDriveIsRefusedUnlessForced()
+    {
+        DriveDescription file = m_file;
+        parameter(file, kSoftwareVersion).values[0] = 170;
+        parameter(file, kMaxSpeedForward).values[3] = 9000; // above 4000
+        file.groups[1].parameters.removeIf(
+            [](const ParameterDescription &p) { return p.address == kFixedSpeed1; });
+        DownloadPlan plan = planDownload(file, m_drive, {});
+        QVERIFY(plan.isRefused());
+        const QString problems = plan.problems.join(QLatin1Char('\n'));
+        QVERIFY2(problems.contains(QStringLiteral("In.06 Software version is 1.70 in the file, 1.82 on the drive")),
+                 qPrintable(problems));
+        QVERIFY2(problems.contains(QStringLiteral("not in the file: op.20")), qPrintable(problems));
+        QVERIFY2(problems.contains(QStringLiteral("op.11 (set 3) 9000 1/min is outside 0 1/min .. 4000 1/min")),
+                 qPrintable(problems));
+
+        DownloadOptions forced;
+        forced.force = true;
+        plan = planDownload(file, m_drive, forced);
+        QVERIFY(!plan.isRefused());
+        QCOMPARE(plan.problems.size(), 3); // still said
+        QVERIFY(itemFor(plan, kMaxSpeedForward)); // the drive will say no itself
+
+        DriveDescription unidentified = m_file;
+        unidentified.groups.removeIf([](const GroupDescription &g) { return g.id == QLatin1String("In"); });
+        plan = planDownload(unidentified, m_drive, {});
+        QVERIFY(plan.problems.join(QLatin1Char('\n')).contains(QStringLiteral("does not say which kind")));
+    }
+
+    void aLowPasswordLevelSkipsWhatItCannotWrite()
+    {
+        DriveDescription drive = m_drive;
+        parameter(drive, kPasswordParameterAddress).values[0] = passwordReadValue(PasswordLevel::CpReadOnly);
+        DriveDescription file = m_file;
+        parameter(file, kMaxSpeedForward).values[0] = 2500;
+        const DownloadPlan plan = planDownload(file, drive, {});
+        QVERIFY(!itemFor(plan, kMaxSpeedForward));
+        QVERIFY(skips(plan, QStringLiteral("op.11"), QStringLiteral("needs password level")));
+    }
+
+    // A limit that may follow from another parameter's value is written after all others.
+    void variableLimitsComeLast()
+    {
+        DriveDescription file = m_file;
+        DriveDescription drive = m_drive;
+        for (DriveDescription *side : {&file, &drive})
+            parameter(*side, kMinSpeedForward).properties1 |= 2u << 14; // upper limit always variable
+        parameter(file, kMinSpeedForward).values[0] = 100;
+        parameter(file, kFixedSpeed1).values[0] = 123;
+        const DownloadPlan plan = planDownload(file, drive, {});
+        QCOMPARE(plan.items.constLast().change.address, kMinSpeedForward);
+        QVERIFY(itemFor(plan, kFixedSpeed1));
+    }
+
+    void aRoundTripLeavesTheDriveAsItWas_data()
+    {
+        QTest::addColumn<Protocol>("protocol");
+        QTest::newRow("HSP5") << Protocol::Hsp5;
+        QTest::newRow("DIN66019II") << Protocol::Din66019II;
+    }
+
+    void aRoundTripLeavesTheDriveAsItWas()
+    {
+        QFETCH(Protocol, protocol);
+        Session session(simulated(protocol, fast()));
+        QVERIFY(session.connected());
+        const DriveDescription before = scanned(session, true);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("drive.json"));
+        QVERIFY(ParameterDocument::save(path, before));
+
+        QVERIFY(write(session, kMaxSpeedForward, 0x24, 2500));
+        QVERIFY(write(session, kMotorVoltage, 0xFF, 300));
+        QVERIFY(write(session, kCommandSpeed, 0x01, 150));
+        QVERIFY(write(session, kServiceCode, 0x01, 1234));
+        QVERIFY(write(session, kSetPointer, 0x01, 4));
+        QVERIFY(write(session, kActiveSet, 0x01, 1));
+
+        const std::optional<DriveDescription> file = ParameterDocument::load(path);
+        QVERIFY(file);
+        const DriveDescription drive = scanned(session, false);
+        const DownloadPlan plan = planDownload(*file, drive, {});
+        QVERIFY2(plan.problems.isEmpty(), qPrintable(plan.problems.join(QLatin1Char('\n'))));
+        const DownloadReport report = write(session, protocol, plan, drive);
+        QVERIFY2(report.isComplete(), qPrintable(report.text()));
+        QCOMPARE(report.written.size(), 5); // op.03, op.11, dr.04, ud.11, Fr.09
+        QCOMPARE(report.writtenValues, 1 + 2 + 8 + 1 + 1);
+        QCOMPARE(report.skipped.size(), 1); // Fr.02, read only for lists
+        QVERIFY(report.text().contains(QStringLiteral("op.11  Maximum speed forward: sets 2, 5: 3000 1/min")));
+
+        const DriveDescription after = scanned(session, true);
+        const ParameterComparison comparison = compareDescriptions(before, after);
+        for (const ParameterDifference &difference : comparison.differences) {
+            const ParameterDescription *p = after.find(difference.address);
+            QVERIFY2(p && !ParameterList::isWrittenByDownload(*p),
+                     qPrintable(difference.id + QLatin1Char(' ') + difference.a
+                                + QStringLiteral(" / ") + difference.b));
+        }
+        QCOMPARE(valueOf(session.call(session.client->readValueStandard(kServiceCode, 0))), 0);
+        QCOMPARE(valueOf(session.call(session.client->readValueStandard(kActiveSet, 0))), 1);
+    }
+
+    // Stopped by the user or by a lost link: the report's every line matches the drive.
+    void anInterruptedDownloadReportsWhatTheDriveHolds_data()
+    {
+        QTest::addColumn<bool>("linkLost");
+        QTest::newRow("stopped") << false;
+        QTest::newRow("link lost") << true;
+    }
+
+    void anInterruptedDownloadReportsWhatTheDriveHolds()
+    {
+        QFETCH(bool, linkLost);
+        SimulationOptions paced = fast();
+        paced.replyLatencyUs = 5000;
+        SimulatorServer server(Protocol::Hsp5, paced);
+        QString error;
+        QVERIFY2(server.listenTcp(QStringLiteral("127.0.0.1"), 0, &error), qPrintable(error));
+        ConnectionSettings settings;
+        settings.kind = ConnectionSettings::Kind::Tcp;
+        settings.host = QStringLiteral("127.0.0.1");
+        settings.port = server.tcpPort();
+        const quint16 port = server.tcpPort();
+        std::optional<Session> session(std::in_place, settings);
+        QVERIFY(session->connected());
+        const QList<quint8> pages{0x03, 0x06}; // op, dr
+        const DriveDescription drive = scanned(*session, false, pages);
+
+        // Every set of every set-programmable op and dr parameter, one step lower.
+        DriveDescription file = m_file;
+        file.groups.removeIf([&pages](const GroupDescription &group) {
+            return !pages.contains(quint8(group.address >> 8));
+        });
+        for (GroupDescription &group : file.groups) {
+            for (ParameterDescription &p : group.parameters) {
+                if (!p.isSetProgrammable() || !ParameterList::isWrittenByDownload(p))
+                    continue;
+                for (std::optional<qint32> &value : p.values)
+                    value = *value > p.minimum ? *value - 1 : *value + 1;
+            }
+        }
+        const DownloadPlan plan = planDownload(file, drive, {}); // the identity is no matter here
+        QVERIFY(plan.items.size() > 20);
+        const auto job = std::make_shared<WriteChangesJob>(Protocol::Hsp5, changesOf(plan));
+        const QFuture<WriteOutcome> future = session->client->run(job);
+        QTRY_VERIFY_WITH_TIMEOUT(future.resultCount() >= 5, kWaitMs);
+        if (linkLost)
+            server.close();
+        else
+            job->requestStop();
+        QVERIFY(waitFinished(future));
+        QList<std::optional<WriteOutcome>> outcomes(plan.items.size());
+        for (int i = 0; i < int(outcomes.size()); ++i) {
+            if (future.isResultReadyAt(i))
+                outcomes[i] = future.resultAt(i);
+        }
+        const DownloadReport report = reportDownload(plan, outcomes, linkLost ? QStringLiteral("link lost") : QStringLiteral("stopped"), drive);
+        QVERIFY(!report.isComplete());
+        QVERIFY(report.written.size() >= 5);
+        QVERIFY(!report.notWritten.isEmpty());
+        QSet<QString> reportedIds;
+        for (const auto *lines : {&report.written, &report.refused, &report.notWritten}) {
+            for (const DownloadReport::Line &line : *lines)
+                reportedIds.insert(line.id);
+        }
+        QCOMPARE(reportedIds.size(), plan.items.size()); // every item has its line
+        QVERIFY2(report.refused.size() <= 1, qPrintable(report.text())); // at most the one whose answer the link lost
+
+        if (linkLost) {
+            session.reset();
+            QVERIFY(server.listenTcp(QStringLiteral("127.0.0.1"), port, &error));
+            session.emplace(settings);
+            QVERIFY(session->connected());
+        }
+        const DriveDescription after = scanned(*session, false, pages);
+        // Only the values known: a write-only value was never read before the download.
+        const auto holds = [&after](const DownloadItem &item,
+                                    const std::array<std::optional<qint32>, kParameterSets> &values) {
+            const ParameterDescription *p = after.find(item.change.address);
+            for (std::size_t set = 0; set < std::size_t(kParameterSets); ++set) {
+                if (item.wanted[set] && values[set] && p->values[set] != values[set])
+                    return false;
+            }
+            return true;
+        };
+        const auto reported = [](const QList<DownloadReport::Line> &lines, const QString &id) {
+            return std::any_of(lines.begin(), lines.end(),
+                               [&id](const DownloadReport::Line &line) { return line.id == id; });
+        };
+        for (const DownloadItem &item : plan.items) {
+            if (reported(report.written, item.id))
+                QVERIFY2(holds(item, item.wanted), qPrintable(item.id));
+            else if (reported(report.notWritten, item.id))
+                QVERIFY2(holds(item, item.before), qPrintable(item.id));
+        }
+    }
+
+private:
+    DriveDescription m_file;
+    DriveDescription m_drive;
+};
+
+QTEST_GUILESS_MAIN(TestDownload)
+#include "tst_download.moc"
