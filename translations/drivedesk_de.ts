@@ -214,6 +214,181 @@
     </message>
 </context>
 <context>
+    <name>DownloadPlan</name>
+    <message>
+        <source>the file was made for &quot;%1&quot;, the drive is &quot;%2&quot;</source>
+        <translation>die Datei wurde fuer &quot;%1&quot; erstellt, der Umrichter ist &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <source>the drive&apos;s identification could not be read, so the file cannot be checked against it</source>
+        <translation>die Kennung des Umrichters konnte nicht gelesen werden, daher kann die Datei nicht mit ihm verglichen werden</translation>
+    </message>
+    <message>
+        <source>the file does not say which kind of drive it was made for (its identification parameters are missing)</source>
+        <translation>die Datei sagt nicht, fuer welche Art Umrichter sie erstellt wurde (ihre Kennungsparameter fehlen)</translation>
+    </message>
+    <message>
+        <source>the file was made for another drive: %1 %2 is %3 in the file, %4 on the drive</source>
+        <translation>die Datei wurde fuer einen anderen Umrichter erstellt: %1 %2 ist %3 in der Datei, %4 am Umrichter</translation>
+    </message>
+    <message>
+        <source>the file was made for another kind of drive</source>
+        <translation>die Datei wurde fuer eine andere Art Umrichter erstellt</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) of the file are not on the drive: %1</source>
+        <translation>
+            <numerusform>%n Parameter der Datei gibt es am Umrichter nicht: %1</numerusform>
+            <numerusform>%n Parameter der Datei gibt es am Umrichter nicht: %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) of the drive are not in the file: %1</source>
+        <translation>
+            <numerusform>%n Parameter des Umrichters fehlt in der Datei: %1</numerusform>
+            <numerusform>%n Parameter des Umrichters fehlen in der Datei: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>one value for all sets, left out by the sets chosen</source>
+        <translation>ein Wert fuer alle Saetze, durch die gewaehlten Saetze ausgelassen</translation>
+    </message>
+    <message>
+        <source>needs password level %1</source>
+        <translation>erfordert Passwortebene %1</translation>
+    </message>
+    <message>
+        <source>%1 not in the file (not read when it was made)</source>
+        <translation>%1 nicht in der Datei (beim Erstellen nicht gelesen)</translation>
+    </message>
+    <message>
+        <source>%1 (%2) %3 is outside %4 .. %5</source>
+        <translation>%1 (%2) %3 liegt ausserhalb %4 .. %5</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>Wert</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) outside the drive&apos;s limits: %1</source>
+        <translation>
+            <numerusform>%n Wert ausserhalb der Grenzen des Umrichters: %1</numerusform>
+            <numerusform>%n Werte ausserhalb der Grenzen des Umrichters: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation>nicht gelesen</translation>
+    </message>
+    <message>
+        <source>%1  %2%3: %4 -&gt; %5%6
+</source>
+        <translation>%1  %2%3: %4 -&gt; %5%6
+</translation>
+    </message>
+    <message>
+        <source>  (always written)</source>
+        <translation>  (wird immer geschrieben)</translation>
+    </message>
+</context>
+<context>
+    <name>DownloadReport</name>
+    <message>
+        <source>the value</source>
+        <translation>der Wert</translation>
+    </message>
+    <message>
+        <source>not sent</source>
+        <translation>nicht gesendet</translation>
+    </message>
+    <message>
+        <source>not sent: %1</source>
+        <translation>nicht gesendet: %1</translation>
+    </message>
+    <message>
+        <source>%1 holds %2</source>
+        <translation>%1 enthaelt %2</translation>
+    </message>
+    <message>
+        <source>%1 could not be read back (%2)</source>
+        <translation>%1 konnte nicht zurueckgelesen werden (%2)</translation>
+    </message>
+    <message>
+        <source>%1: no answer, so whether the drive took the value is unknown (%2)</source>
+        <translation>%1: keine Antwort, ob der Umrichter den Wert uebernommen hat, ist unbekannt (%2)</translation>
+    </message>
+    <message>
+        <source>written %1, but %2</source>
+        <translation>geschrieben %1, aber %2</translation>
+    </message>
+    <message>
+        <source>%1 not sent: %2</source>
+        <translation>%1 nicht gesendet: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) written and read back</source>
+        <translation>
+            <numerusform>%n Wert geschrieben und zurueckgelesen</numerusform>
+            <numerusform>%n Werte geschrieben und zurueckgelesen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n unchanged</source>
+        <translation>
+            <numerusform>%n unveraendert</numerusform>
+            <numerusform>%n unveraendert</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n refused</source>
+        <translation>
+            <numerusform>%n abgelehnt</numerusform>
+            <numerusform>%n abgelehnt</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n skipped</source>
+        <translation>
+            <numerusform>%n ausgelassen</numerusform>
+            <numerusform>%n ausgelassen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n not written</source>
+        <translation>
+            <numerusform>%n nicht geschrieben</numerusform>
+            <numerusform>%n nicht geschrieben</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n read-only value(s) of the file differ from the drive&apos;s; they are never written</source>
+        <translation>
+            <numerusform>%n schreibgeschuetzter Wert der Datei weicht vom Umrichter ab; er wird nie geschrieben</numerusform>
+            <numerusform>%n schreibgeschuetzte Werte der Datei weichen vom Umrichter ab; sie werden nie geschrieben</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The download stopped: %1</source>
+        <translation>Der Download wurde abgebrochen: %1</translation>
+    </message>
+    <message>
+        <source>Written:</source>
+        <translation>Geschrieben:</translation>
+    </message>
+    <message>
+        <source>Refused:</source>
+        <translation>Abgelehnt:</translation>
+    </message>
+    <message>
+        <source>Skipped:</source>
+        <translation>Ausgelassen:</translation>
+    </message>
+    <message>
+        <source>Not written:</source>
+        <translation>Nicht geschrieben:</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::AccessController</name>
     <message>
         <source>The password level could not be read: %1</source>
@@ -300,10 +475,6 @@
         <translation>keine Verbindung zu %1 möglich: %2</translation>
     </message>
     <message>
-        <source>DIN66019 carries parameter values only; use --protocol din66019ii for info and scan</source>
-        <translation>DIN66019 überträgt nur Parameterwerte; für info und scan --protocol din66019ii angeben</translation>
-    </message>
-    <message>
         <source>%1 (DIN66019 has no group names: give the address, e.g. 0x0203)</source>
         <translation>%1 (DIN66019 kennt keine Gruppennamen: die Adresse angeben, z. B. 0x0203)</translation>
     </message>
@@ -378,6 +549,114 @@
     <message>
         <source>password level in force: %1</source>
         <translation>gültige Passwortebene: %1</translation>
+    </message>
+    <message>
+        <source>could not read the drive: %1</source>
+        <translation>der Umrichter konnte nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>DIN66019 carries parameter values only; use --protocol din66019ii for anything but read and write</source>
+        <translation>DIN66019 uebertraegt nur Parameterwerte; fuer alles ausser read und write --protocol din66019ii verwenden</translation>
+    </message>
+    <message>
+        <source>stopping after the value on its way...</source>
+        <translation>Abbruch nach dem Wert, der gerade unterwegs ist ...</translation>
+    </message>
+    <message>
+        <source>the drive could not be read to the end (%1); no file was written</source>
+        <translation>der Umrichter konnte nicht vollstaendig gelesen werden (%1); es wurde keine Datei geschrieben</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n parameter(s)</source>
+        <translation>
+            <numerusform>%1: %n Parameter</numerusform>
+            <numerusform>%1: %n Parameter</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s)</source>
+        <translation>
+            <numerusform>%n Wert</numerusform>
+            <numerusform>%n Werte</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n write-only with the default</source>
+        <translation>
+            <numerusform>%n nur schreibbarer mit dem Vorgabewert</numerusform>
+            <numerusform>%n nur schreibbare mit dem Vorgabewert</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) could not be read and have no value in the file: %1</source>
+        <translation>
+            <numerusform>%n Parameter konnte nicht gelesen werden und hat keinen Wert in der Datei: %1</numerusform>
+            <numerusform>%n Parameter konnten nicht gelesen werden und haben keinen Wert in der Datei: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the drive could not be read (%1); nothing was written</source>
+        <translation>der Umrichter konnte nicht gelesen werden (%1); es wurde nichts geschrieben</translation>
+    </message>
+    <message>
+        <source>warning: %1</source>
+        <translation>Warnung: %1</translation>
+    </message>
+    <message>
+        <source>refused: %1</source>
+        <translation>abgelehnt: %1</translation>
+    </message>
+    <message>
+        <source>nothing was written; --force writes the file all the same</source>
+        <translation>es wurde nichts geschrieben; --force schreibt die Datei trotzdem</translation>
+    </message>
+    <message>
+        <source>skipped  %1  %2: %3</source>
+        <translation>ausgelassen  %1  %2: %3</translation>
+    </message>
+    <message numerus="yes">
+        <source>dry run: %n value(s) would be written</source>
+        <translation>
+            <numerusform>Probelauf: %n Wert wuerde geschrieben</numerusform>
+            <numerusform>Probelauf: %n Werte wuerden geschrieben</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n unchanged</source>
+        <translation>
+            <numerusform>%n unveraendert</numerusform>
+            <numerusform>%n unveraendert</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n skipped</source>
+        <translation>
+            <numerusform>%n ausgelassen</numerusform>
+            <numerusform>%n ausgelassen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>nothing was written</source>
+        <translation>es wurde nichts geschrieben</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n read-only value(s) of the file differ from the drive&apos;s; they are never written</source>
+        <translation>
+            <numerusform>%n schreibgeschuetzter Wert der Datei weicht vom Umrichter ab; er wird nie geschrieben</numerusform>
+            <numerusform>%n schreibgeschuetzte Werte der Datei weichen vom Umrichter ab; sie werden nie geschrieben</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>writing %1 of %2</source>
+        <translation>schreibe %1 von %2</translation>
+    </message>
+    <message>
+        <source>stopped by the user</source>
+        <translation>vom Benutzer abgebrochen</translation>
+    </message>
+    <message>
+        <source>the download did not write everything; the report says what the drive holds</source>
+        <translation>der Download hat nicht alles geschrieben; der Bericht sagt, was der Umrichter enthaelt</translation>
     </message>
 </context>
 <context>
@@ -2491,6 +2770,25 @@ Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
     <message>
         <source>&apos;%1&apos; is not a parameter id: write it as group.number (ru.03, ru03) or as a hexadecimal address (0203h, 0x0203)</source>
         <translation>„%1“ ist keine Parameterkennung: als Gruppe.Nummer (ru.03, ru03) oder als hexadezimale Adresse (0203h, 0x0203) angeben</translation>
+    </message>
+</context>
+<context>
+    <name>ParameterList</name>
+    <message>
+        <source>not part of a parameter list</source>
+        <translation>nicht Teil einer Parameterliste</translation>
+    </message>
+    <message>
+        <source>read-only</source>
+        <translation>schreibgeschuetzt</translation>
+    </message>
+    <message>
+        <source>read-only for parameter lists</source>
+        <translation>schreibgeschuetzt fuer Parameterlisten</translation>
+    </message>
+    <message>
+        <source>the drive sets this value itself</source>
+        <translation>der Umrichter setzt diesen Wert selbst</translation>
     </message>
 </context>
 <context>

@@ -214,6 +214,181 @@
     </message>
 </context>
 <context>
+    <name>DownloadPlan</name>
+    <message>
+        <source>the file was made for &quot;%1&quot;, the drive is &quot;%2&quot;</source>
+        <translation>the file was made for &quot;%1&quot;, the drive is &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <source>the drive&apos;s identification could not be read, so the file cannot be checked against it</source>
+        <translation>the drive&apos;s identification could not be read, so the file cannot be checked against it</translation>
+    </message>
+    <message>
+        <source>the file does not say which kind of drive it was made for (its identification parameters are missing)</source>
+        <translation>the file does not say which kind of drive it was made for (its identification parameters are missing)</translation>
+    </message>
+    <message>
+        <source>the file was made for another drive: %1 %2 is %3 in the file, %4 on the drive</source>
+        <translation>the file was made for another drive: %1 %2 is %3 in the file, %4 on the drive</translation>
+    </message>
+    <message>
+        <source>the file was made for another kind of drive</source>
+        <translation>the file was made for another kind of drive</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) of the file are not on the drive: %1</source>
+        <translation>
+            <numerusform>%n parameter of the file is not on the drive: %1</numerusform>
+            <numerusform>%n parameters of the file are not on the drive: %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) of the drive are not in the file: %1</source>
+        <translation>
+            <numerusform>%n parameter of the drive is not in the file: %1</numerusform>
+            <numerusform>%n parameters of the drive are not in the file: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>one value for all sets, left out by the sets chosen</source>
+        <translation>one value for all sets, left out by the sets chosen</translation>
+    </message>
+    <message>
+        <source>needs password level %1</source>
+        <translation>needs password level %1</translation>
+    </message>
+    <message>
+        <source>%1 not in the file (not read when it was made)</source>
+        <translation>%1 not in the file (not read when it was made)</translation>
+    </message>
+    <message>
+        <source>%1 (%2) %3 is outside %4 .. %5</source>
+        <translation>%1 (%2) %3 is outside %4 .. %5</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>value</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) outside the drive&apos;s limits: %1</source>
+        <translation>
+            <numerusform>%n value outside the drive&apos;s limits: %1</numerusform>
+            <numerusform>%n values outside the drive&apos;s limits: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not read</source>
+        <translation>not read</translation>
+    </message>
+    <message>
+        <source>%1  %2%3: %4 -&gt; %5%6
+</source>
+        <translation>%1  %2%3: %4 -&gt; %5%6
+</translation>
+    </message>
+    <message>
+        <source>  (always written)</source>
+        <translation>  (always written)</translation>
+    </message>
+</context>
+<context>
+    <name>DownloadReport</name>
+    <message>
+        <source>the value</source>
+        <translation>the value</translation>
+    </message>
+    <message>
+        <source>not sent</source>
+        <translation>not sent</translation>
+    </message>
+    <message>
+        <source>not sent: %1</source>
+        <translation>not sent: %1</translation>
+    </message>
+    <message>
+        <source>%1 holds %2</source>
+        <translation>%1 holds %2</translation>
+    </message>
+    <message>
+        <source>%1 could not be read back (%2)</source>
+        <translation>%1 could not be read back (%2)</translation>
+    </message>
+    <message>
+        <source>%1: no answer, so whether the drive took the value is unknown (%2)</source>
+        <translation>%1: no answer, so whether the drive took the value is unknown (%2)</translation>
+    </message>
+    <message>
+        <source>written %1, but %2</source>
+        <translation>written %1, but %2</translation>
+    </message>
+    <message>
+        <source>%1 not sent: %2</source>
+        <translation>%1 not sent: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) written and read back</source>
+        <translation>
+            <numerusform>%n value written and read back</numerusform>
+            <numerusform>%n values written and read back</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n unchanged</source>
+        <translation>
+            <numerusform>%n unchanged</numerusform>
+            <numerusform>%n unchanged</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n refused</source>
+        <translation>
+            <numerusform>%n refused</numerusform>
+            <numerusform>%n refused</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n skipped</source>
+        <translation>
+            <numerusform>%n skipped</numerusform>
+            <numerusform>%n skipped</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n not written</source>
+        <translation>
+            <numerusform>%n not written</numerusform>
+            <numerusform>%n not written</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n read-only value(s) of the file differ from the drive&apos;s; they are never written</source>
+        <translation>
+            <numerusform>%n read-only value of the file differs from the drive&apos;s; it is never written</numerusform>
+            <numerusform>%n read-only values of the file differ from the drive&apos;s; they are never written</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The download stopped: %1</source>
+        <translation>The download stopped: %1</translation>
+    </message>
+    <message>
+        <source>Written:</source>
+        <translation>Written:</translation>
+    </message>
+    <message>
+        <source>Refused:</source>
+        <translation>Refused:</translation>
+    </message>
+    <message>
+        <source>Skipped:</source>
+        <translation>Skipped:</translation>
+    </message>
+    <message>
+        <source>Not written:</source>
+        <translation>Not written:</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::AccessController</name>
     <message>
         <source>The password level could not be read: %1</source>
@@ -300,10 +475,6 @@
         <translation>cannot connect to %1: %2</translation>
     </message>
     <message>
-        <source>DIN66019 carries parameter values only; use --protocol din66019ii for info and scan</source>
-        <translation>DIN66019 carries parameter values only; use --protocol din66019ii for info and scan</translation>
-    </message>
-    <message>
         <source>%1 (DIN66019 has no group names: give the address, e.g. 0x0203)</source>
         <translation>%1 (DIN66019 has no group names: give the address, e.g. 0x0203)</translation>
     </message>
@@ -378,6 +549,114 @@
     <message>
         <source>password level in force: %1</source>
         <translation>password level in force: %1</translation>
+    </message>
+    <message>
+        <source>could not read the drive: %1</source>
+        <translation>could not read the drive: %1</translation>
+    </message>
+    <message>
+        <source>DIN66019 carries parameter values only; use --protocol din66019ii for anything but read and write</source>
+        <translation>DIN66019 carries parameter values only; use --protocol din66019ii for anything but read and write</translation>
+    </message>
+    <message>
+        <source>stopping after the value on its way...</source>
+        <translation>stopping after the value on its way...</translation>
+    </message>
+    <message>
+        <source>the drive could not be read to the end (%1); no file was written</source>
+        <translation>the drive could not be read to the end (%1); no file was written</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n parameter(s)</source>
+        <translation>
+            <numerusform>%1: %n parameter</numerusform>
+            <numerusform>%1: %n parameters</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s)</source>
+        <translation>
+            <numerusform>%n value</numerusform>
+            <numerusform>%n values</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n write-only with the default</source>
+        <translation>
+            <numerusform>%n write-only with the default</numerusform>
+            <numerusform>%n write-only with the default</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) could not be read and have no value in the file: %1</source>
+        <translation>
+            <numerusform>%n parameter could not be read and has no value in the file: %1</numerusform>
+            <numerusform>%n parameters could not be read and have no value in the file: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the drive could not be read (%1); nothing was written</source>
+        <translation>the drive could not be read (%1); nothing was written</translation>
+    </message>
+    <message>
+        <source>warning: %1</source>
+        <translation>warning: %1</translation>
+    </message>
+    <message>
+        <source>refused: %1</source>
+        <translation>refused: %1</translation>
+    </message>
+    <message>
+        <source>nothing was written; --force writes the file all the same</source>
+        <translation>nothing was written; --force writes the file all the same</translation>
+    </message>
+    <message>
+        <source>skipped  %1  %2: %3</source>
+        <translation>skipped  %1  %2: %3</translation>
+    </message>
+    <message numerus="yes">
+        <source>dry run: %n value(s) would be written</source>
+        <translation>
+            <numerusform>dry run: %n value would be written</numerusform>
+            <numerusform>dry run: %n values would be written</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n unchanged</source>
+        <translation>
+            <numerusform>%n unchanged</numerusform>
+            <numerusform>%n unchanged</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n skipped</source>
+        <translation>
+            <numerusform>%n skipped</numerusform>
+            <numerusform>%n skipped</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>nothing was written</source>
+        <translation>nothing was written</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n read-only value(s) of the file differ from the drive&apos;s; they are never written</source>
+        <translation>
+            <numerusform>%n read-only value of the file differs from the drive&apos;s; it is never written</numerusform>
+            <numerusform>%n read-only values of the file differ from the drive&apos;s; they are never written</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>writing %1 of %2</source>
+        <translation>writing %1 of %2</translation>
+    </message>
+    <message>
+        <source>stopped by the user</source>
+        <translation>stopped by the user</translation>
+    </message>
+    <message>
+        <source>the download did not write everything; the report says what the drive holds</source>
+        <translation>the download did not write everything; the report says what the drive holds</translation>
     </message>
 </context>
 <context>
@@ -2491,6 +2770,25 @@ The DriveDesk parameter editor. Without --connect it opens the connection dialog
     <message>
         <source>&apos;%1&apos; is not a parameter id: write it as group.number (ru.03, ru03) or as a hexadecimal address (0203h, 0x0203)</source>
         <translation>&apos;%1&apos; is not a parameter id: write it as group.number (ru.03, ru03) or as a hexadecimal address (0203h, 0x0203)</translation>
+    </message>
+</context>
+<context>
+    <name>ParameterList</name>
+    <message>
+        <source>not part of a parameter list</source>
+        <translation>not part of a parameter list</translation>
+    </message>
+    <message>
+        <source>read-only</source>
+        <translation>read-only</translation>
+    </message>
+    <message>
+        <source>read-only for parameter lists</source>
+        <translation>read-only for parameter lists</translation>
+    </message>
+    <message>
+        <source>the drive sets this value itself</source>
+        <translation>the drive sets this value itself</translation>
     </message>
 </context>
 <context>

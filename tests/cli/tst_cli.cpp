@@ -1,3 +1,5 @@
+#include "CliTestSupport.h"
+
 #include "parameters/DriveDescription.h"
 #include "parameters/ParameterDocument.h"
 
@@ -12,52 +14,8 @@
 #include <QTest>
 
 using namespace DriveDesk;
+using namespace DriveDesk::CliTest;
 
-namespace {
-
-struct Run {
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
-
-const QString kCli = QStringLiteral(DRIVEDESK_BINARY_DIR "/app/cli/drivedesk-cli");
-const QString kSim = QStringLiteral(DRIVEDESK_BINARY_DIR "/app/sim/drivedesk-sim");
-
-Run cli(const QStringList &arguments, const QString &cacheHome = {})
-{
-    QProcess process;
-    if (!cacheHome.isEmpty()) {
-        QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
-        environment.insert(QStringLiteral("XDG_CACHE_HOME"), cacheHome);
-        process.setProcessEnvironment(environment);
-    }
-    process.start(kCli, arguments);
-    Run run;
-    if (!process.waitForFinished(120000)) {
-        process.kill();
-        process.waitForFinished();
-        run.err = QStringLiteral("drivedesk-cli did not finish");
-        return run;
-    }
-    run.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
-    run.out = QString::fromUtf8(process.readAllStandardOutput());
-    run.err = QString::fromUtf8(process.readAllStandardError());
-    return run;
-}
-
-Run sim(const QStringList &command)
-{
-    return cli(QStringList{QStringLiteral("--connect"), QStringLiteral("sim"), QStringLiteral("--quiet")}
-               + command);
-}
-
-QString explain(const Run &run)
-{
-    return QStringLiteral("exit %1\nstdout: %2\nstderr: %3").arg(run.exitCode).arg(run.out.left(2000), run.err);
-}
-
-} // namespace
 
 // drivedesk-cli as a user runs it, against the simulated drive.
 class TestCli : public QObject
@@ -444,17 +402,10 @@ private slots:
 
     void writesPersistOnASimulatorServer()
     {
-        QProcess server;
-        server.start(kSim, {QStringLiteral("--listen"), QStringLiteral("tcp:127.0.0.1:0"),
-                            QStringLiteral("--protocol"), QStringLiteral("din66019ii"),
-                            QStringLiteral("--address"), QStringLiteral("7")});
-        QVERIFY(server.waitForStarted());
-        QRegularExpressionMatch where;
-        QTRY_VERIFY_WITH_TIMEOUT((where = QRegularExpression(QStringLiteral("tcp:127\\.0\\.0\\.1:(\\d+)"))
-                                              .match(QString::fromUtf8(server.peek(4096))))
-                                     .hasMatch(),
-                                 10000);
-        const QString target = QStringLiteral("tcp:127.0.0.1:") + where.captured(1);
+        SimulatorProcess server({QStringLiteral("--protocol"), QStringLiteral("din66019ii"),
+                                 QStringLiteral("--address"), QStringLiteral("7")});
+        QVERIFY2(server.started(), qPrintable(server.error()));
+        const QString target = server.target();
         const QStringList common{QStringLiteral("--connect"), target, QStringLiteral("--protocol"),
                                  QStringLiteral("din66019ii"), QStringLiteral("--address"), QStringLiteral("7"),
                                  QStringLiteral("--quiet")};
@@ -468,8 +419,6 @@ private slots:
         run = cli(common + QStringList{QStringLiteral("read"), QStringLiteral("op.30"), QStringLiteral("--set"),
                                        QStringLiteral("0")});
         QVERIFY2(run.out.contains(QStringLiteral("5.00 s")), qPrintable(run.out));
-        server.terminate();
-        QVERIFY(server.waitForFinished(10000));
     }
 };
 

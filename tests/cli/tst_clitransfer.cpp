@@ -1,0 +1,185 @@
+#include "CliTestSupport.h"
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+
+using namespace DriveDesk::CliTest;
+
+namespace {
+
+// Changes one raw value of a parameter file as an editor would; false when the file or the
+// parameter is not there.
+bool editFile(const QString &path, const QString &id, int set, int raw)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return false;
+    QJsonObject root = QJsonDocument::fromJson(file.readAll()).object();
+    file.close();
+    QJsonArray groups = root.value(QStringLiteral("groups")).toArray();
+    bool found = false;
+    for (qsizetype g = 0; g < groups.size(); ++g) {
+        QJsonObject group = groups[g].toObject();
+        QJsonArray parameters = group.value(QStringLiteral("parameters")).toArray();
+        for (qsizetype p = 0; p < parameters.size(); ++p) {
+            QJsonObject parameter = parameters[p].toObject();
+            if (parameter.value(QStringLiteral("id")).toString() != id)
+                continue;
+            QJsonArray values = parameter.value(QStringLiteral("values")).toArray();
+            values[set] = raw;
+            parameter.insert(QStringLiteral("values"), values);
+            parameters[p] = parameter;
+            found = true;
+        }
+        group.insert(QStringLiteral("parameters"), parameters);
+        groups[g] = group;
+    }
+    root.insert(QStringLiteral("groups"), groups);
+    return found && file.open(QIODevice::WriteOnly | QIODevice::Truncate)
+        && file.write(QJsonDocument(root).toJson()) > 0;
+}
+
+} // namespace
+
+// drivedesk-cli upload, download and diff with the drive, against a simulated drive that keeps
+// what each command wrote.
+class TestCliTransfer : public QObject
+{
+    Q_OBJECT
+private slots:
+    void init()
+    {
+        m_server = std::make_unique<SimulatorProcess>();
+        QVERIFY2(m_server->started(), qPrintable(m_server->error()));
+        QVERIFY(m_dir.isValid());
+        m_file = m_dir.filePath(QStringLiteral("drive.json"));
+        const Run upload = drive({QStringLiteral("upload"), m_file});
+        QVERIFY2(upload.exitCode == 0, qPrintable(explain(upload)));
+        QVERIFY2(upload.out.contains(QStringLiteral("195 parameters")), qPrintable(upload.out));
+        QVERIFY2(upload.out.contains(QStringLiteral("1 write-only with the default")), qPrintable(upload.out));
+    }
+
+    void cleanup() { m_server.reset(); }
+
+    void theDriveComesBackFromItsFile()
+    {
+        Run run = drive({QStringLiteral("write"), QStringLiteral("op.11"), QStringLiteral("2500"),
+                         QStringLiteral("--sets"), QStringLiteral("2")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+
+        run = drive({QStringLiteral("diff"), QStringLiteral("drive"), m_file});
+        QCOMPARE(run.exitCode, 1);
+        QVERIFY2(run.out.contains(QRegularExpression(QStringLiteral("op.11 +Maximum speed forward +2 +2500 1/min +3000 1/min"))),
+                 qPrintable(run.out));
+
+        run = drive({QStringLiteral("download"), m_file, QStringLiteral("--dry-run")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        QVERIFY2(run.out.contains(QStringLiteral("op.11  Maximum speed forward, set 2: 2500 1/min -> 3000 1/min")),
+                 qPrintable(run.out));
+        QVERIFY2(run.out.contains(QStringLiteral("nothing was written")), qPrintable(run.out));
+        QVERIFY(readSet(QStringLiteral("op.11"), 2).contains(QStringLiteral("2500 1/min")));
+
+        run = drive({QStringLiteral("download"), m_file});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        QVERIFY2(run.out.contains(QStringLiteral("op.11  Maximum speed forward: set 2: 3000 1/min")),
+                 qPrintable(run.out));
+        QVERIFY2(run.out.contains(QStringLiteral("0 refused")), qPrintable(run.out));
+        QVERIFY(readSet(QStringLiteral("op.11"), 2).contains(QStringLiteral("3000 1/min")));
+        run = drive({QStringLiteral("diff"), QStringLiteral("drive"), m_file});
+        QVERIFY2(!run.out.contains(QStringLiteral("op.11")), qPrintable(run.out));
+    }
+
+    void aFileOfAnotherDriveIsRefusedAndNothingIsWritten()
+    {
+        QVERIFY(editFile(m_file, QStringLiteral("In.6"), 0, 170)); // software 1.70
+        QVERIFY(editFile(m_file, QStringLiteral("op.11"), 4, 2222));
+        Run run = drive({QStringLiteral("download"), m_file});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(QStringLiteral("In.06 Software version is 1.70 in the file, 1.82 on the drive")),
+                 qPrintable(run.err));
+        QVERIFY2(run.err.contains(QStringLiteral("nothing was written")), qPrintable(run.err));
+        QVERIFY(readSet(QStringLiteral("op.11"), 4).contains(QStringLiteral("3000 1/min")));
+
+        run = drive({QStringLiteral("download"), m_file, QStringLiteral("--force"), QStringLiteral("--sets"),
+                      QStringLiteral("4")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        QVERIFY2(run.err.contains(QStringLiteral("warning: the file was made for another drive")), qPrintable(run.err));
+        QVERIFY(readSet(QStringLiteral("op.11"), 4).contains(QStringLiteral("2222 1/min")));
+    }
+
+    void aValueTheDriveRefusesIsReportedInWords()
+    {
+        QVERIFY(editFile(m_file, QStringLiteral("op.11"), 1, 9999)); // above 4000
+        Run run = drive({QStringLiteral("download"), m_file});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(QStringLiteral("op.11 (set 1) 9999 1/min is outside 0 1/min .. 4000 1/min")),
+                 qPrintable(run.err));
+        run = drive({QStringLiteral("download"), m_file, QStringLiteral("--force")});
+        QCOMPARE(run.exitCode, 1);
+        QVERIFY2(run.out.contains(QStringLiteral("Refused:\n  op.11  Maximum speed forward: set 1: drive refused")),
+                 qPrintable(run.out));
+    }
+
+    void theDefaultsAreASide()
+    {
+        Run run = drive({QStringLiteral("write"), QStringLiteral("dr.04"), QStringLiteral("300"),
+                         QStringLiteral("--sets"), QStringLiteral("all")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        run = drive({QStringLiteral("diff"), QStringLiteral("defaults"), QStringLiteral("drive")});
+        QCOMPARE(run.exitCode, 1);
+        QVERIFY2(run.out.contains(QRegularExpression(QStringLiteral("dr.04 +Rated motor voltage +0 +400 V +300 V"))),
+                 qPrintable(run.out));
+        QVERIFY2(!run.out.contains(QStringLiteral("ru.")), qPrintable(run.out)); // live values are no setting
+        // The file was made before: the simulated drive's error counters are its only values
+        // off their defaults.
+        run = cli({QStringLiteral("diff"), m_file, QStringLiteral("defaults")});
+        QCOMPARE(run.exitCode, 1);
+        QVERIFY2(run.out.contains(QStringLiteral("In.26")) && !run.out.contains(QStringLiteral("dr.04")),
+                 qPrintable(run.out));
+    }
+
+    void argumentsAreChecked_data()
+    {
+        QTest::addColumn<QStringList>("arguments");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("upload without file") << QStringList{QStringLiteral("--connect"), QStringLiteral("sim"), QStringLiteral("upload")}
+                                             << QStringLiteral("upload takes a parameter file");
+        QTest::newRow("dry run of a scan") << QStringList{QStringLiteral("--connect"), QStringLiteral("sim"), QStringLiteral("scan"), QStringLiteral("--dry-run")}
+                                           << QStringLiteral("--dry-run and --force belong to download");
+        QTest::newRow("drive without connection") << QStringList{QStringLiteral("diff"), QStringLiteral("drive"), QStringLiteral("a.json")}
+                                                  << QStringLiteral("needs --connect");
+        QTest::newRow("missing file") << QStringList{QStringLiteral("--connect"), QStringLiteral("sim"), QStringLiteral("download"), QStringLiteral("/nonexistent/x.json")}
+                                      << QStringLiteral("/nonexistent/x.json");
+    }
+
+    void argumentsAreChecked()
+    {
+        QFETCH(QStringList, arguments);
+        QFETCH(QString, message);
+        const Run run = cli(arguments);
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(message), qPrintable(run.err));
+    }
+
+private:
+    Run drive(const QStringList &command) const
+    {
+        return cli(QStringList{QStringLiteral("--connect"), m_server->target(), QStringLiteral("--quiet")} + command);
+    }
+
+    QString readSet(const QString &id, int set) const
+    {
+        const Run run = drive({QStringLiteral("read"), id, QStringLiteral("--set"), QString::number(set)});
+        return run.out;
+    }
+
+    std::unique_ptr<SimulatorProcess> m_server;
+    QTemporaryDir m_dir;
+    QString m_file;
+};
+
+QTEST_GUILESS_MAIN(TestCliTransfer)
+#include "tst_clitransfer.moc"
