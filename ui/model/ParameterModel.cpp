@@ -150,6 +150,20 @@ bool ParameterModel::setValues(quint16 address, quint8 setMask, qint32 raw)
     return true;
 }
 
+bool ParameterModel::putValue(quint16 address, int set, std::optional<qint32> raw)
+{
+    ParameterRow *row = rowAt(address);
+    if (!row || set < 0 || set >= kParameterSets)
+        return false;
+    const int cell = row->cellOf(set);
+    const bool changed = row->setValue(cell, raw);
+    if (row->clearEditState(cell) || changed) {
+        const QModelIndex index = indexOf(address, columnOfSet(cell));
+        emit dataChanged(index, index);
+    }
+    return true;
+}
+
 std::optional<qint32> ParameterModel::value(quint16 address, int set) const
 {
     const ParameterRow *row = rowAt(address);

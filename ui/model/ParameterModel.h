@@ -70,6 +70,9 @@ public:
     // The same value for every set in the mask (a read over several sets).
     bool setValues(quint16 address, quint8 setMask, qint32 raw);
     std::optional<qint32> value(quint16 address, int set) const;
+    // An open parameter file's value after an edit or its undo: stored as it is, a value not
+    // read (nothing) included, and the cell's edit state dropped. Not a reading from a drive.
+    bool putValue(quint16 address, int set, std::optional<qint32> raw);
 
     // The drive stopped answering at `msecsSinceEpoch`: the values not read since are stale,
     // shown greyed and italic with when they were last read. 0: the drive answers, nothing is

@@ -28,7 +28,7 @@ std::optional<qint32> ParameterRow::shownValue(int cell) const
     return value(cell);
 }
 
-bool ParameterRow::setValue(int cell, qint32 raw)
+bool ParameterRow::setValue(int cell, std::optional<qint32> raw)
 {
     auto &stored = m_description.values[std::size_t(cell)];
     EditState &state = m_states[std::size_t(cell)];

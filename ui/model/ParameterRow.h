@@ -42,8 +42,9 @@ public:
     std::optional<qint32> value(int cell) const { return m_description.values[std::size_t(cell)]; }
     // The value asked for while its write is pending, otherwise the drive's.
     std::optional<qint32> shownValue(int cell) const;
-    // Stores what the drive reported; false when the drive's value did not change.
-    bool setValue(int cell, qint32 raw);
+    // Stores what the drive reported (or, for an open parameter file, nothing: a value not
+    // read); false when the value did not change.
+    bool setValue(int cell, std::optional<qint32> raw);
     // When a value of this parameter last came from the drive (ms since the epoch; 0: never).
     qint64 readAtMs() const { return m_readAtMs; }
     void markRead(qint64 msecsSinceEpoch) { m_readAtMs = msecsSinceEpoch; }
