@@ -1,5 +1,6 @@
 #pragma once
 
+#include "ParameterEditing.h"
 #include "ValueReadBatch.h"
 #include "ValueWriter.h"
 #include "WriteValueCommand.h"
@@ -25,7 +26,7 @@ class ParameterModel;
 // drive's reason); copying one set to another; re-reading every value. A value that only came
 // from the drive is never written back to it. Lives in the GUI thread; the client, the model and
 // the undo stack outlive it.
-class EditController : public QObject
+class EditController : public QObject, public ParameterEditing
 {
     Q_OBJECT
 public:
@@ -40,10 +41,10 @@ public:
     // so a refused write never stands there as if it had happened.
     void write(quint16 address, quint8 setMask, qint32 raw);
     // Service 32 write, then read back; undoable (the earlier values are written back).
-    void resetToDefault(quint16 address, quint8 setMask);
+    void resetToDefault(quint16 address, quint8 setMask) override;
     // Every set-programmable parameter the user may edit whose value in `toSet` differs from
     // `fromSet`'s; one step on the undo stack (what was written before a cancel or a refusal).
-    void copySet(int fromSet, int toSet);
+    void copySet(int fromSet, int toSet) override;
     // Re-reads every value the level in force lets be read (F5). A read the drive refuses is
     // kept per cell (readFailure) and the refresh goes on.
     void refresh();
@@ -56,7 +57,7 @@ public:
     // afresh on every connection): the written marks and the undo history go.
     void forgetWrites();
 
-    bool isBusy() const { return m_busy; }
+    bool isBusy() const override { return m_busy; }
     // Why the last refresh could not read this value, or empty.
     QString readFailure(quint16 address, int set) const;
     int readFailureCount() const { return int(m_readFailures.size()); }

@@ -1,10 +1,13 @@
-# Editing: writes with read-back and undo, copy and refresh, polling, the password level, and
-# the window features that offer them.
+# Editing: writes with read-back and undo, edits of an open parameter file, copy and refresh,
+# polling, the password level, and the window features that offer them.
 target_sources(drivedesk_ui PRIVATE
     edit/AccessController.cpp edit/AccessController.h
     edit/AccessFeature.cpp edit/AccessFeature.h
+    edit/DocumentEditor.cpp edit/DocumentEditor.h
+    edit/DocumentValueCommand.cpp edit/DocumentValueCommand.h
     edit/EditController.cpp edit/EditJobs.cpp edit/EditController.h
     edit/EditingFeature.cpp edit/EditingFeature.h
+    edit/ParameterEditing.h
     edit/PasswordDialog.cpp edit/PasswordDialog.h
     edit/PollingController.cpp edit/PollingController.h
     edit/PollingFeature.cpp edit/PollingFeature.h

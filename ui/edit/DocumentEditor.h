@@ -1,0 +1,52 @@
+#pragma once
+
+#include "ParameterEditing.h"
+
+#include <QObject>
+
+class QUndoCommand;
+class QUndoStack;
+
+namespace DriveDesk {
+
+class ParameterModel;
+
+// Carries the user's edits into the parameter file the window shows instead of a drive: a value
+// typed into the table, a reset to default, a copied set, each an undoable command on the
+// window's undo stack that changes the model and nothing else. The rules are a drive's: the
+// model's (read-only, limits) and core's ParameterFormat. Nothing is ever sent to a drive.
+// Lives in the GUI thread; the model and the undo stack outlive it.
+class DocumentEditor : public QObject, public ParameterEditing
+{
+    Q_OBJECT
+public:
+    DocumentEditor(ParameterModel *model, QUndoStack *undoStack, QObject *parent = nullptr);
+
+    // Connected to ParameterModel::valueEdited by the editor itself: the value goes into the
+    // sets of the mask, or is refused with the reason (message()) and the cells stay as they
+    // were.
+    void write(quint16 address, quint8 setMask, qint32 raw);
+    void resetToDefault(quint16 address, quint8 setMask) override;
+    void copySet(int fromSet, int toSet) override;
+    bool isBusy() const override { return false; } // every change is made at once
+
+signals:
+    void message(const QString &text); // for the status bar: results and refusals in words
+
+private:
+    // A command that sets `raw` in the sets of the mask, or nullptr with the reason: no such
+    // parameter, not editable, outside the limits. `setMask` comes back as applied (set 0 for
+    // a parameter without sets).
+    QUndoCommand *makeChange(quint16 address, quint8 *setMask, qint32 raw, const QString &text,
+                             QString *refusal, QUndoCommand *parent = nullptr) const;
+
+    QString idOf(quint16 address) const;
+    QString valueText(quint16 address, qint32 raw) const;
+    // " (set 2)", " (sets 0, 3)", " (all sets)", or nothing for a parameter without sets.
+    QString inSets(quint16 address, quint8 setMask) const;
+
+    ParameterModel *m_model = nullptr;
+    QUndoStack *m_undoStack = nullptr;
+};
+
+} // namespace DriveDesk
