@@ -8,3 +8,5 @@ drivedesk_add_test(NAME tst_mainwindow_dialogs LABELS gui
     SOURCES gui/tst_mainwindow_dialogs.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui)
 drivedesk_add_test(NAME tst_finddrives LABELS gui
     SOURCES gui/tst_finddrives.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui)
+drivedesk_add_test(NAME tst_offlineediting LABELS gui
+    SOURCES gui/tst_offlineediting.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui)

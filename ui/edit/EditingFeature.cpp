@@ -1,7 +1,9 @@
 #include "EditingFeature.h"
 
-#include "EditController.h"
+#include "ParameterEditing.h"
 #include "SetsDialog.h"
+
+#include "EditController.h"
 
 #include "main/DriveSession.h"
 #include "main/FrameSupport.h"
@@ -105,27 +107,29 @@ void EditingFeature::attach(DriveSession *session)
 
 void EditingFeature::updateActions()
 {
-    const bool ready = frame().isReady();
+    const ParameterEditing *editing = frame().editing();
+    const bool ready = editing != nullptr;
     const bool selected = frame().browser()->hasSelectedParameter();
     m_resetAction->setEnabled(ready && selected);
     m_writeSetsAction->setEnabled(ready && selected);
     m_copySetAction->setEnabled(ready);
     // An undo while a write is still on its way could leave the stack and the drive apart.
-    const bool idle = ready && !frame().session()->editController()->isBusy();
+    const bool idle = ready && !editing->isBusy();
     m_undoAction->setEnabled(idle && frame().undoStack()->canUndo());
     m_redoAction->setEnabled(idle && frame().undoStack()->canRedo());
 }
 
 void EditingFeature::resetToDefault()
 {
-    if (!frame().isReady())
+    ParameterEditing *editing = frame().editing();
+    if (!editing)
         return;
     ParameterModel *model = frame().model();
     QStringList skipped;
     const QList<QPair<quint16, quint8>> selected = frame().browser()->selectedParameters();
     for (const auto &[address, setMask] : selected) {
         if (model->isEditable(address))
-            frame().session()->editController()->resetToDefault(address, setMask);
+            editing->resetToDefault(address, setMask);
         else
             skipped << model->indexOf(address).data(Qt::DisplayRole).toString();
     }
@@ -146,7 +150,7 @@ void EditingFeature::resetToDefault()
 
 void EditingFeature::writeToSets()
 {
-    if (!frame().isReady())
+    if (!frame().editing())
         return;
     ParameterModel *model = frame().model();
     // The value of the current cell (or the parameter's first set) goes to the sets chosen.
@@ -182,13 +186,13 @@ void EditingFeature::writeToSets()
     dialog->setPrompt(
         tr("Write %1 to %2 in:")
             .arg(model->valueIndex(address, set).data(Qt::DisplayRole).toString(), id));
-    dialog->setActiveSet(frame().session()->activeSet());
+    dialog->setActiveSet(activeSet());
     dialog->setSetMask(quint8(1u << set));
     connect(dialog, &QDialog::accepted, this, [this, dialog, address, set, id] {
         // The value as it is now: polling or another write may have changed it meanwhile.
         ParameterModel *model = frame().model();
         const std::optional<qint32> now
-            = frame().isReady() ? model->value(address, set) : std::nullopt;
+            = frame().editing() ? model->value(address, set) : std::nullopt;
         if (!now) {
             frame().showMessage(tr("%1 has no value read in set %2 to write.").arg(id).arg(set));
             return;
@@ -202,21 +206,27 @@ void EditingFeature::writeToSets()
 
 void EditingFeature::copySet()
 {
-    if (!frame().isReady())
+    if (!frame().editing())
         return;
     auto *dialog = new SetsDialog(SetsDialog::Mode::CopySet, frame().frameWidget());
     dialog->setWindowTitle(tr("Copy Set"));
     dialog->setPrompt(tr("Copy every set-programmable value you may change from one set to "
                          "another:"));
-    const int active = frame().session()->activeSet();
+    const int active = activeSet();
     dialog->setActiveSet(active);
     const int from = std::max(active, 0);
     dialog->setCopy(from, (from + 1) % kParameterSets);
     connect(dialog, &QDialog::accepted, this, [this, dialog] {
-        if (frame().isReady())
-            frame().session()->editController()->copySet(dialog->fromSet(), dialog->toSet());
+        if (ParameterEditing *editing = frame().editing())
+            editing->copySet(dialog->fromSet(), dialog->toSet());
     });
     openDialog(dialog);
+}
+
+int EditingFeature::activeSet() const
+{
+    // A parameter file has no set the drive works with.
+    return frame().session() ? frame().session()->activeSet() : -1;
 }
 
 } // namespace DriveDesk

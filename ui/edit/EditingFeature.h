@@ -6,8 +6,9 @@ class QProgressBar;
 
 namespace DriveDesk {
 
-// Editing in the window: undo and redo that reach the drive, reset to default, write to several
-// sets, copy a set, and the progress of the edit controller's long jobs.
+// Editing in the window, of the drive or of the parameter file open instead: undo and redo,
+// reset to default, write to several sets, copy a set, and the progress of the edit
+// controller's long jobs.
 class EditingFeature : public WindowFeature
 {
     Q_OBJECT
@@ -21,6 +22,7 @@ private:
     void resetToDefault();
     void writeToSets();
     void copySet();
+    int activeSet() const; // the drive's (Fr.02); -1 when unknown or no drive
 
     QAction *m_undoAction = nullptr;
     QAction *m_redoAction = nullptr;

@@ -10,6 +10,7 @@
 #include "WindowFeatures.h"
 
 #include "delegate/ParameterDelegate.h"
+#include "edit/DocumentEditor.h"
 #include "edit/EditController.h"
 #include "model/ParameterModel.h"
 
@@ -36,8 +37,9 @@ const QString kBrowserKey = QStringLiteral("window/browser");
 const QString kFavouritesGroup = QStringLiteral("favourites");
 
 // Favourites belong to a drive: its identification and serial number (In.10) where it has
-// them, otherwise where it was reached.
-QString favouritesKey(const DriveDescription &drive, const ConnectionSettings &settings)
+// them, otherwise where it was reached. A parameter file of the drive shares its favourites;
+// one without an identification (`settings` nullptr) has none remembered.
+QString favouritesKey(const DriveDescription &drive, const ConnectionSettings *settings)
 {
     QString identity = DriveIdentity::summary(drive);
     if (const GroupDescription *info = drive.findGroup(QStringLiteral("In"))) {
@@ -46,8 +48,10 @@ QString favouritesKey(const DriveDescription &drive, const ConnectionSettings &s
                 identity += QStringLiteral("/serial %1").arg(*serial->values[0]);
         }
     }
+    if (identity.isEmpty() && !settings)
+        return {};
     if (identity.isEmpty())
-        identity = QStringLiteral("%1/%2").arg(settings.target()).arg(settings.driveAddress);
+        identity = QStringLiteral("%1/%2").arg(settings->target()).arg(settings->driveAddress);
     return QString::fromLatin1(
         QCryptographicHash::hash(identity.toUtf8(), QCryptographicHash::Sha1).toHex().left(16));
 }
@@ -105,6 +109,11 @@ MainWindow::MainWindow(Language language, QWidget *parent)
             [this](const QModelIndex &, const QString &reason) { showMessage(reason); });
     connect(m_browser->view(), &ParameterView::editRefused, this, &MainWindow::showMessage);
     connect(m_model, &ParameterModel::favouritesChanged, this, &MainWindow::saveFavourites);
+    // A file's title marks unsaved changes; undoing back to where it was saved clears the mark.
+    connect(m_undoStack, &QUndoStack::cleanChanged, this, [this](bool clean) {
+        if (m_document)
+            setWindowModified(!clean);
+    });
     connect(m_model, &QAbstractItemModel::dataChanged, this,
             [this](const QModelIndex &topLeft, const QModelIndex &bottomRight) {
                 if (!m_session)
@@ -136,6 +145,8 @@ MainWindow::~MainWindow()
     m_features.clear();
     delete m_session;
     m_session = nullptr;
+    delete m_document;
+    m_document = nullptr;
     // Children still talk while they are destroyed (the stack announces its clearing, an open
     // editor commits): nothing here is left to update.
     m_undoStack->disconnect(this);
@@ -150,8 +161,24 @@ bool MainWindow::isReady() const
         && m_session->hasDescription() && !m_session->isScanning();
 }
 
+ParameterEditing *MainWindow::editing() const
+{
+    if (m_document)
+        return m_document;
+    return isReady() ? m_session->editController() : nullptr;
+}
+
 void MainWindow::connectTo(ConnectionSettings settings)
 {
+    if (m_document) {
+        // One thing at a time: the file goes (asked about if it was changed), then the drive
+        // comes.
+        settleUnsavedChanges([this, settings] {
+            closeParameterFile();
+            connectTo(settings);
+        });
+        return;
+    }
     settings.language = m_language;
     m_nextSettings = settings;
     const DriveClient::State state = m_session ? m_session->state() : DriveClient::State::Lost;
@@ -173,14 +200,7 @@ void MainWindow::openNextSession()
         return;
     const ConnectionSettings settings = *m_nextSettings;
     m_nextSettings.reset();
-    if (m_session) {
-        for (WindowFeature *feature : std::as_const(m_features))
-            feature->attach(nullptr);
-        // The undo history holds the old session's writes.
-        m_undoStack->clear();
-        delete m_session;
-        m_session = nullptr;
-    }
+    closeSession();
     // The model keeps what was read until the new drive is connected.
 
     m_session = new DriveSession(settings, m_model, m_undoStack, this);
@@ -221,6 +241,18 @@ void MainWindow::openNextSession()
                            0);
     session->start();
     updateActions();
+}
+
+void MainWindow::closeSession()
+{
+    if (!m_session)
+        return;
+    for (WindowFeature *feature : std::as_const(m_features))
+        feature->attach(nullptr);
+    // The undo history holds the old session's writes.
+    m_undoStack->clear();
+    delete m_session;
+    m_session = nullptr;
 }
 
 void MainWindow::onStateChanged(DriveClient::State state)
@@ -264,22 +296,30 @@ void MainWindow::onDescribed(const DriveDescription &drive)
     m_metadataLabel->setVisible(drive.metadataFromCache);
     if (!drive.warnings.isEmpty())
         m_notice->showInformation(drive.warnings.join(QLatin1Char('\n')));
-    m_favouritesKey = favouritesKey(drive, m_session->settings());
-    QSettings settings;
-    const QStringList stored
-        = settings.value(kFavouritesGroup + QLatin1Char('/') + m_favouritesKey).toStringList();
-    QSet<quint16> favourites;
-    for (const QString &hex : stored) {
-        bool ok = false;
-        const uint address = hex.toUInt(&ok, 16);
-        if (ok && address <= 0xFFFF && m_model->parameter(quint16(address)))
-            favourites.insert(quint16(address));
-    }
-    m_model->setFavourites(favourites);
+    restoreFavourites(drive, &m_session->settings());
     const QString identity = DriveIdentity::summary(drive);
     const QString name
         = identity.isEmpty() ? RecentConnections::describe(m_session->settings()) : identity;
     setWindowTitle(tr("%1 - DriveDesk").arg(name));
+}
+
+void MainWindow::restoreFavourites(const DriveDescription &drive,
+                                   const ConnectionSettings *settings)
+{
+    m_favouritesKey = favouritesKey(drive, settings);
+    QSet<quint16> favourites;
+    if (!m_favouritesKey.isEmpty()) {
+        const QStringList stored = QSettings()
+                                       .value(kFavouritesGroup + QLatin1Char('/') + m_favouritesKey)
+                                       .toStringList();
+        for (const QString &hex : stored) {
+            bool ok = false;
+            const uint address = hex.toUInt(&ok, 16);
+            if (ok && address <= 0xFFFF && m_model->parameter(quint16(address)))
+                favourites.insert(quint16(address));
+        }
+    }
+    m_model->setFavourites(favourites);
 }
 
 void MainWindow::onScanFinished(const QString &problem)
@@ -455,6 +495,14 @@ void MainWindow::saveSettings()
 
 void MainWindow::closeEvent(QCloseEvent *event)
 {
+    if (hasUnsavedChanges() && !m_closeAnyway) {
+        event->ignore();
+        settleUnsavedChanges([this] {
+            m_closeAnyway = true;
+            close();
+        });
+        return;
+    }
     saveSettings();
     saveFavourites();
     QMainWindow::closeEvent(event);

@@ -5,23 +5,29 @@
 #include "client/DriveClient.h"
 
 #include <QMainWindow>
+#include <QPointer>
 
+#include <functional>
 #include <optional>
 
 class QActionGroup;
+class QFileDialog;
 class QLabel;
+class QMessageBox;
 
 namespace DriveDesk {
 
 class ConnectionDialog;
+class DocumentEditor;
 class DriveSession;
 class NoticeBar;
 class ParameterBrowser;
 class ParameterModel;
 
-// DriveDesk's window, a frame: the parameter browser of the connected drive, the connection's
-// state where the user looks (a notice bar and the status bar), connecting, refreshing and drive
-// information. Editing, polling, the password level and the telegram monitor are features
+// DriveDesk's window, a frame: the parameter browser of the connected drive or of a parameter
+// file shown instead of one (one thing at a time), the connection's state where the user looks
+// (a notice bar and the status bar), connecting, refreshing, drive information and the file
+// commands. Editing, polling, the password level and the telegram monitor are features
 // (WindowFeatures.cpp) that put their actions in its menus and toolbar and follow its session.
 // Window layout, filters, favourites (per drive) and the last connection live in QSettings.
 class MainWindow : public QMainWindow, public WindowFrame
@@ -40,6 +46,25 @@ public:
     // without waiting (open()) and closes itself.
     ConnectionDialog *openConnectionDialog();
 
+    // Parameter files (MainWindowFiles.cpp). The dialogs of the File menu end in these.
+    // Shows the parameter file at `path` with no drive: the same table and editors, and edits
+    // go into the file shown (DocumentEditor) until it is saved. A connected drive is
+    // disconnected first; unsaved changes of the file shown are asked about first (Save,
+    // Discard, Cancel), so the file may show only once that is answered. False, with a message
+    // naming the line and column, when the file cannot be read: then nothing changes.
+    bool openParameterFile(const QString &path);
+    // The file shown, to its own path or to another, which it is then; false with the reason
+    // in a message (the file on disk is left as it was).
+    bool saveParameterFile();
+    bool saveParameterFileAs(const QString &path);
+    // What an upload keeps of the drive read (ParameterList::fromScan); the window goes on with
+    // the drive.
+    bool saveDriveToFile(const QString &path);
+    // The parameter file shown instead of a drive, absolute; empty while none is.
+    QString parameterFilePath() const { return m_filePath; }
+    // The file shown was changed since it was opened or saved (undoing back clears this).
+    bool hasUnsavedChanges() const;
+
     NoticeBar *noticeBar() const { return m_notice; }
 
     // WindowFrame
@@ -53,6 +78,7 @@ public:
     QUndoStack *undoStack() const override { return m_undoStack; }
     DriveSession *session() const override { return m_session; }
     bool isReady() const override;
+    ParameterEditing *editing() const override;
     void showMessage(const QString &text) override;
     void updateActions() override;
 
@@ -75,8 +101,27 @@ private:
     void showDriveInformation();
     void chooseLanguage(Language language);
     void about();
+    // MainWindowFiles.cpp
+    void chooseFileToOpen();
+    void chooseFileToSaveAs();
+    void chooseDriveFile();
+    // `name`: a file name to suggest; empty for a dialog that opens a file.
+    QFileDialog *fileDialog(const QString &title, const QString &name = {});
+    void showParameterFile(const DriveDescription &drive, const QString &path);
+    // The file shown goes (its changes with it), and the table empties.
+    void closeParameterFile();
+    // Runs `proceed` at once when the file shown has no unsaved changes; otherwise after the
+    // user chose Save (and it was saved) or Discard; never after Cancel.
+    void settleUnsavedChanges(const std::function<void()> &proceed);
+    // Runs `proceed` when nothing is at `path`, or once the user agreed to replace it.
+    void confirmReplace(const QString &path, const std::function<void()> &proceed);
+    void updateFileTitle();
+    bool reportFileProblem(const QString &title, const QString &text);
     // MainWindow.cpp
     void openNextSession();
+    // The session goes at once: its link closes, its undo history goes.
+    void closeSession();
+    void restoreFavourites(const DriveDescription &drive, const ConnectionSettings *settings);
     void onStateChanged(DriveClient::State state);
     void onScanProgress(int value, int maximum, const QString &text);
     void onScanFinished(const QString &problem);
@@ -98,12 +143,17 @@ private:
     ParameterBrowser *m_browser = nullptr;
     NoticeBar *m_notice = nullptr;
     DriveSession *m_session = nullptr; // owned; replaced on every connectTo()
+    DocumentEditor *m_document = nullptr; // child while a parameter file is shown, or nullptr
+    QString m_filePath; // of the parameter file shown
+    QPointer<QMessageBox> m_unsavedQuestion; // asking Save / Discard / Cancel, at most one
+    bool m_closeAnyway = false; // the file's changes were saved or discarded on closing
     // connectTo() while connected: where to connect once the old link is closed.
     std::optional<ConnectionSettings> m_nextSettings;
     QList<WindowFeature *> m_features; // children
     QString m_favouritesKey; // the drive's key in QSettings "favourites/"
     QString m_silenceNotice; // the notice shown while the drive does not answer
 
+    QMenu *m_fileMenu = nullptr;
     QMenu *m_driveMenu = nullptr;
     QMenu *m_editMenu = nullptr;
     QMenu *m_viewMenu = nullptr;
@@ -112,6 +162,10 @@ private:
     QLabel *m_setsLabel = nullptr;
     QLabel *m_metadataLabel = nullptr;
 
+    QAction *m_openFileAction = nullptr;
+    QAction *m_saveFileAction = nullptr;
+    QAction *m_saveFileAsAction = nullptr;
+    QAction *m_saveDriveAction = nullptr;
     QAction *m_connectAction = nullptr;
     QAction *m_disconnectAction = nullptr;
     QAction *m_findDrivesAction = nullptr;

@@ -17,6 +17,32 @@ namespace DriveDesk {
 
 void MainWindow::createActions()
 {
+    m_openFileAction = new QAction(themedIcon("document-open", QStyle::SP_DialogOpenButton),
+                                   tr("&Open Parameter File..."), this);
+    m_openFileAction->setObjectName(QStringLiteral("openFileAction"));
+    m_openFileAction->setShortcut(QKeySequence::Open);
+    m_openFileAction->setToolTip(tr("Show and edit a parameter file with no drive"));
+    connect(m_openFileAction, &QAction::triggered, this, &MainWindow::chooseFileToOpen);
+
+    m_saveFileAction
+        = new QAction(themedIcon("document-save", QStyle::SP_DialogSaveButton), tr("&Save"), this);
+    m_saveFileAction->setObjectName(QStringLiteral("saveFileAction"));
+    m_saveFileAction->setShortcut(QKeySequence::Save);
+    m_saveFileAction->setToolTip(tr("Save the changes of the parameter file shown"));
+    connect(m_saveFileAction, &QAction::triggered, this, &MainWindow::saveParameterFile);
+
+    m_saveFileAsAction = new QAction(tr("Save &As..."), this);
+    m_saveFileAsAction->setObjectName(QStringLiteral("saveFileAsAction"));
+    m_saveFileAsAction->setShortcut(QKeySequence::SaveAs);
+    m_saveFileAsAction->setToolTip(tr("Save the parameter file shown under another name"));
+    connect(m_saveFileAsAction, &QAction::triggered, this, &MainWindow::chooseFileToSaveAs);
+
+    m_saveDriveAction = new QAction(tr("Save &Drive to File..."), this);
+    m_saveDriveAction->setObjectName(QStringLiteral("saveDriveAction"));
+    m_saveDriveAction->setToolTip(tr("Save the parameters read from the drive to a parameter "
+                                     "file; the window goes on with the drive"));
+    connect(m_saveDriveAction, &QAction::triggered, this, &MainWindow::chooseDriveFile);
+
     m_connectAction = new QAction(themedIcon("network-connect", QStyle::SP_DriveNetIcon),
                                   tr("&Connect..."), this);
     m_connectAction->setObjectName(QStringLiteral("connectAction"));
@@ -84,6 +110,13 @@ void MainWindow::createActions()
 // The frame's part of the menus; the features add theirs, then finishMenus() closes them.
 void MainWindow::createMenus()
 {
+    m_fileMenu = menuBar()->addMenu(tr("&File"));
+    m_fileMenu->addAction(m_openFileAction);
+    m_fileMenu->addAction(m_saveFileAction);
+    m_fileMenu->addAction(m_saveFileAsAction);
+    m_fileMenu->addSeparator();
+    m_fileMenu->addAction(m_saveDriveAction);
+
     m_driveMenu = menuBar()->addMenu(tr("&Drive"));
     m_driveMenu->addAction(m_connectAction);
     m_driveMenu->addAction(m_disconnectAction);
@@ -106,8 +139,8 @@ void MainWindow::finishMenus()
 {
     m_driveMenu->addSeparator();
     m_driveMenu->addAction(m_driveInfoAction);
-    m_driveMenu->addSeparator();
-    m_driveMenu->addAction(m_quitAction);
+    m_fileMenu->addSeparator();
+    m_fileMenu->addAction(m_quitAction);
 
     m_viewMenu->addSeparator();
     // Said before the choice is made: the window's and the drive's texts change only when
@@ -149,6 +182,10 @@ void MainWindow::createToolBar()
     m_toolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     m_toolBar->addAction(m_connectAction);
     m_toolBar->addAction(m_disconnectAction);
+    m_toolBar->addAction(m_openFileAction);
+    m_toolBar->addAction(m_saveFileAction);
+    m_openFileAction->setPriority(QAction::LowPriority);
+    m_saveFileAction->setPriority(QAction::LowPriority);
     m_toolBar->addSeparator();
     m_toolBar->addAction(m_refreshAction);
 }
@@ -194,7 +231,11 @@ void MainWindow::updateActions()
     m_refreshAction->setEnabled(connected && !m_session->isScanning());
     m_readMetadataAction->setEnabled(connected && !m_session->isScanning());
     m_driveInfoAction->setEnabled(session && m_session->hasDescription());
-    m_browser->setEditingEnabled(isReady());
+    m_saveDriveAction->setEnabled(session && m_session->hasDescription()
+                                  && !m_session->isScanning());
+    m_saveFileAction->setEnabled(m_document != nullptr);
+    m_saveFileAsAction->setEnabled(m_document != nullptr);
+    m_browser->setEditingEnabled(editing() != nullptr);
     for (WindowFeature *feature : std::as_const(m_features))
         feature->updateActions();
 }

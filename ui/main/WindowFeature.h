@@ -14,6 +14,7 @@ namespace DriveDesk {
 class DriveClient;
 class DriveSession;
 class ParameterBrowser;
+class ParameterEditing;
 class ParameterModel;
 
 // What a feature sees of the window it works in: the places for its actions and widgets, what
@@ -36,8 +37,11 @@ public:
     virtual QUndoStack *undoStack() const = 0;
     // The connection and its controllers; nullptr before the first connect.
     virtual DriveSession *session() const = 0;
-    // Connected and read: values may be edited.
+    // Connected to a drive and read.
     virtual bool isReady() const = 0;
+    // Where edits go now: the drive's edit controller (connected and read) or the editor of the
+    // parameter file shown instead of a drive; nullptr while nothing may be edited.
+    virtual ParameterEditing *editing() const = 0;
 
     virtual void showMessage(const QString &text) = 0;
     // Something an action depends on changed: every feature's actions enable as they apply.

@@ -1,4 +1,4 @@
-# The frame: the main window, its dialogs, the drive session, the feature interface and the
+# The frame: the main window, its dialogs and file commands, the drive session, the feature interface and the
 # list of features, and the start-up options.
 target_sources(drivedesk_ui PRIVATE
     main/ConnectionDialog.cpp main/ConnectionDialog.h
@@ -8,7 +8,8 @@ target_sources(drivedesk_ui PRIVATE
     main/FindDrivesDialog.cpp main/FindDrivesDialog.h
     main/FrameSupport.h
     main/GroupListModel.cpp main/GroupListModel.h
-    main/MainWindow.cpp main/MainWindowActions.cpp main/MainWindowCommands.cpp main/MainWindow.h
+    main/MainWindow.cpp main/MainWindowActions.cpp main/MainWindowCommands.cpp
+    main/MainWindowFiles.cpp main/MainWindow.h
     main/NoticeBar.cpp main/NoticeBar.h
     main/ParameterBrowser.cpp main/ParameterBrowser.h
     main/ParameterView.cpp main/ParameterView.h
