@@ -1,5 +1,5 @@
-// drivedesk: the parameter editor's window, connected to the drive the command line names or
-// opening the connection dialog.
+// drivedesk: the parameter editor's window, connected to the drive the command line names,
+// showing the parameter file it names, or opening the connection dialog.
 #include "Translations.h"
 #include "main/MainWindow.h"
 #include "main/StartupOptions.h"
@@ -35,7 +35,9 @@ int main(int argc, char **argv)
 
     DriveDesk::MainWindow window(language);
     window.show();
-    if (options.connection)
+    if (!options.parameterFile.isEmpty())
+        window.openParameterFile(options.parameterFile); // a file it cannot read: says why
+    else if (options.connection)
         window.connectTo(*options.connection);
     else
         QTimer::singleShot(0, &window, &DriveDesk::MainWindow::openConnectionDialog);

@@ -2,6 +2,7 @@
 
 #include "edit/ParameterEditing.h"
 #include "main/NoticeBar.h"
+#include "main/StartupOptions.h"
 #include "parameters/ParameterDocument.h"
 #include "parameters/ParameterList.h"
 
@@ -385,6 +386,20 @@ private slots:
         box->button(QMessageBox::Save)->click();
         QTRY_VERIFY(!m_window->isVisible());
         QCOMPARE(ParameterDocument::load(second), withValue(m_driveDocument, kDemoPeriod, 0, 400));
+    }
+
+    void startupOptionOpensAFile()
+    {
+        const StartupOptions options = StartupOptions::parse(
+            { QStringLiteral("drivedesk"), QStringLiteral("--open"), QStringLiteral("f.json") });
+        QVERIFY2(options.error.isEmpty(), qPrintable(options.error));
+        QCOMPARE(options.parameterFile, QStringLiteral("f.json"));
+        QVERIFY(!options.connection);
+
+        const StartupOptions both = StartupOptions::parse(
+            { QStringLiteral("drivedesk"), QStringLiteral("--open"), QStringLiteral("f.json"),
+              QStringLiteral("--connect"), QStringLiteral("sim") });
+        QVERIFY(both.error.contains(QStringLiteral("--open")));
     }
 };
 

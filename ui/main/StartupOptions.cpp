@@ -11,11 +11,13 @@ namespace DriveDesk {
 QString StartupOptions::usage()
 {
     return StartupText::tr(
-        "Usage: drivedesk [--connect TARGET] [options]\n"
+        "Usage: drivedesk [--connect TARGET | --open FILE] [options]\n"
         "\n"
-        "The DriveDesk parameter editor. Without --connect it opens the connection dialog.\n"
+        "The DriveDesk parameter editor. Without --connect or --open it opens the connection\n"
+        "dialog.\n"
         "\n"
         "  --connect TARGET     tcp:HOST:PORT, serial:DEVICE or sim (the simulated drive)\n"
+        "  --open FILE          show and edit a parameter file with no drive\n"
         "  --protocol NAME      hsp5 (default), din66019ii or din66019\n"
         "  --address N          drive address on a DIN66019(II) bus, 0..239 (default 1)\n"
         "  --baud N             baud rate (default 38400)\n"
@@ -38,8 +40,11 @@ StartupOptions StartupOptions::parse(const QStringList &arguments)
     QCommandLineParser parser;
     const QCommandLineOption help({ QStringLiteral("h"), QStringLiteral("help") },
                                   QStringLiteral("help"));
+    const QCommandLineOption open(QStringLiteral("open"), QStringLiteral("parameter file"),
+                                  QStringLiteral("FILE"));
     const ConnectionOptions connection;
     connection.addTo(parser);
+    parser.addOption(open);
     parser.addOption(help);
     if (!parser.parse(arguments)) {
         options.error = parser.errorText();
@@ -56,6 +61,16 @@ StartupOptions StartupOptions::parse(const QStringList &arguments)
     }
     if (!connection.language(parser, &options.language, &options.error))
         return options;
+    if (parser.isSet(open)) {
+        if (connection.hasTarget(parser) || connection.hasTargetDetails(parser)) {
+            options.error = StartupText::tr(
+                "--open shows a parameter file with no drive: leave out --connect, --protocol, "
+                "--address and --baud");
+            return options;
+        }
+        options.parameterFile = parser.value(open);
+        return options;
+    }
     if (!connection.hasTarget(parser)) {
         if (connection.hasTargetDetails(parser)) {
             options.error = StartupText::tr(

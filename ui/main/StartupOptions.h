@@ -9,11 +9,13 @@
 
 namespace DriveDesk {
 
-// What `drivedesk` was started with: the drive to connect to (if any) and the UI language.
-// The connection options are those of drivedesk-cli, checked the same way.
+// What `drivedesk` was started with: the drive to connect to or the parameter file to open (if
+// any) and the UI language. The connection options are those of drivedesk-cli, checked the same
+// way.
 struct StartupOptions
 {
     std::optional<ConnectionSettings> connection; // --connect given
+    QString parameterFile; // --open given: shown with no drive
     std::optional<Language> language; // --language given
     bool help = false;
     QString error; // names the bad argument; empty when the arguments made sense
