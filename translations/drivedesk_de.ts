@@ -217,7 +217,7 @@
     <name>DownloadPlan</name>
     <message>
         <source>the file was made for &quot;%1&quot;, the drive is &quot;%2&quot;</source>
-        <translation>die Datei wurde fuer &quot;%1&quot; erstellt, der Umrichter ist &quot;%2&quot;</translation>
+        <translation>die Datei wurde für &quot;%1&quot; erstellt, der Umrichter ist &quot;%2&quot;</translation>
     </message>
     <message>
         <source>the drive&apos;s identification could not be read, so the file cannot be checked against it</source>
@@ -225,15 +225,15 @@
     </message>
     <message>
         <source>the file does not say which kind of drive it was made for (its identification parameters are missing)</source>
-        <translation>die Datei sagt nicht, fuer welche Art Umrichter sie erstellt wurde (ihre Kennungsparameter fehlen)</translation>
+        <translation>die Datei sagt nicht, für welche Art Umrichter sie erstellt wurde (ihre Kennungsparameter fehlen)</translation>
     </message>
     <message>
         <source>the file was made for another drive: %1 %2 is %3 in the file, %4 on the drive</source>
-        <translation>die Datei wurde fuer einen anderen Umrichter erstellt: %1 %2 ist %3 in der Datei, %4 am Umrichter</translation>
+        <translation>die Datei wurde für einen anderen Umrichter erstellt: %1 %2 ist %3 in der Datei, %4 am Umrichter</translation>
     </message>
     <message>
         <source>the file was made for another kind of drive</source>
-        <translation>die Datei wurde fuer eine andere Art Umrichter erstellt</translation>
+        <translation>die Datei wurde für eine andere Art Umrichter erstellt</translation>
     </message>
     <message numerus="yes">
         <source>%n parameter(s) of the file are not on the drive: %1</source>
@@ -251,7 +251,7 @@
     </message>
     <message>
         <source>one value for all sets, left out by the sets chosen</source>
-        <translation>ein Wert fuer alle Saetze, durch die gewaehlten Saetze ausgelassen</translation>
+        <translation>ein Wert für alle Sätze, durch die gewählten Sätze ausgelassen</translation>
     </message>
     <message>
         <source>needs password level %1</source>
@@ -263,7 +263,7 @@
     </message>
     <message>
         <source>%1 (%2) %3 is outside %4 .. %5</source>
-        <translation>%1 (%2) %3 liegt ausserhalb %4 .. %5</translation>
+        <translation>%1 (%2) %3 liegt außerhalb %4 .. %5</translation>
     </message>
     <message>
         <source>value</source>
@@ -272,8 +272,8 @@
     <message numerus="yes">
         <source>%n value(s) outside the drive&apos;s limits: %1</source>
         <translation>
-            <numerusform>%n Wert ausserhalb der Grenzen des Umrichters: %1</numerusform>
-            <numerusform>%n Werte ausserhalb der Grenzen des Umrichters: %1</numerusform>
+            <numerusform>%n Wert außerhalb der Grenzen des Umrichters: %1</numerusform>
+            <numerusform>%n Werte außerhalb der Grenzen des Umrichters: %1</numerusform>
         </translation>
     </message>
     <message>
@@ -307,15 +307,15 @@
     </message>
     <message>
         <source>%1 holds %2</source>
-        <translation>%1 enthaelt %2</translation>
+        <translation>%1 enthält %2</translation>
     </message>
     <message>
         <source>%1 could not be read back (%2)</source>
-        <translation>%1 konnte nicht zurueckgelesen werden (%2)</translation>
+        <translation>%1 konnte nicht zurückgelesen werden (%2)</translation>
     </message>
     <message>
         <source>%1: no answer, so whether the drive took the value is unknown (%2)</source>
-        <translation>%1: keine Antwort, ob der Umrichter den Wert uebernommen hat, ist unbekannt (%2)</translation>
+        <translation>%1: keine Antwort, ob der Umrichter den Wert übernommen hat, ist unbekannt (%2)</translation>
     </message>
     <message>
         <source>written %1, but %2</source>
@@ -328,15 +328,15 @@
     <message numerus="yes">
         <source>%n value(s) written and read back</source>
         <translation>
-            <numerusform>%n Wert geschrieben und zurueckgelesen</numerusform>
-            <numerusform>%n Werte geschrieben und zurueckgelesen</numerusform>
+            <numerusform>%n Wert geschrieben und zurückgelesen</numerusform>
+            <numerusform>%n Werte geschrieben und zurückgelesen</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <source>%n unchanged</source>
         <translation>
-            <numerusform>%n unveraendert</numerusform>
-            <numerusform>%n unveraendert</numerusform>
+            <numerusform>%n unverändert</numerusform>
+            <numerusform>%n unverändert</numerusform>
         </translation>
     </message>
     <message numerus="yes">
@@ -363,8 +363,8 @@
     <message numerus="yes">
         <source>%n read-only value(s) of the file differ from the drive&apos;s; they are never written</source>
         <translation>
-            <numerusform>%n schreibgeschuetzter Wert der Datei weicht vom Umrichter ab; er wird nie geschrieben</numerusform>
-            <numerusform>%n schreibgeschuetzte Werte der Datei weichen vom Umrichter ab; sie werden nie geschrieben</numerusform>
+            <numerusform>%n schreibgeschützter Wert der Datei weicht vom Umrichter ab; er wird nie geschrieben</numerusform>
+            <numerusform>%n schreibgeschützte Werte der Datei weichen vom Umrichter ab; sie werden nie geschrieben</numerusform>
         </translation>
     </message>
     <message>
@@ -556,15 +556,15 @@
     </message>
     <message>
         <source>DIN66019 carries parameter values only; use --protocol din66019ii for anything but read and write</source>
-        <translation>DIN66019 uebertraegt nur Parameterwerte; fuer alles ausser read und write --protocol din66019ii verwenden</translation>
+        <translation>DIN66019 überträgt nur Parameterwerte; für alles außer read und write --protocol din66019ii verwenden</translation>
     </message>
     <message>
         <source>stopping after the value on its way...</source>
-        <translation>Abbruch nach dem Wert, der gerade unterwegs ist ...</translation>
+        <translation>Abbruch nach dem Wert, der gerade unterwegs ist …</translation>
     </message>
     <message>
         <source>the drive could not be read to the end (%1); no file was written</source>
-        <translation>der Umrichter konnte nicht vollstaendig gelesen werden (%1); es wurde keine Datei geschrieben</translation>
+        <translation>der Umrichter konnte nicht vollständig gelesen werden (%1); es wurde keine Datei geschrieben</translation>
     </message>
     <message numerus="yes">
         <source>%1: %n parameter(s)</source>
@@ -617,15 +617,15 @@
     <message numerus="yes">
         <source>dry run: %n value(s) would be written</source>
         <translation>
-            <numerusform>Probelauf: %n Wert wuerde geschrieben</numerusform>
-            <numerusform>Probelauf: %n Werte wuerden geschrieben</numerusform>
+            <numerusform>Probelauf: %n Wert würde geschrieben</numerusform>
+            <numerusform>Probelauf: %n Werte würden geschrieben</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <source>%n unchanged</source>
         <translation>
-            <numerusform>%n unveraendert</numerusform>
-            <numerusform>%n unveraendert</numerusform>
+            <numerusform>%n unverändert</numerusform>
+            <numerusform>%n unverändert</numerusform>
         </translation>
     </message>
     <message numerus="yes">
@@ -642,8 +642,8 @@
     <message numerus="yes">
         <source>%n read-only value(s) of the file differ from the drive&apos;s; they are never written</source>
         <translation>
-            <numerusform>%n schreibgeschuetzter Wert der Datei weicht vom Umrichter ab; er wird nie geschrieben</numerusform>
-            <numerusform>%n schreibgeschuetzte Werte der Datei weichen vom Umrichter ab; sie werden nie geschrieben</numerusform>
+            <numerusform>%n schreibgeschützter Wert der Datei weicht vom Umrichter ab; er wird nie geschrieben</numerusform>
+            <numerusform>%n schreibgeschützte Werte der Datei weichen vom Umrichter ab; sie werden nie geschrieben</numerusform>
         </translation>
     </message>
     <message>
@@ -656,7 +656,7 @@
     </message>
     <message>
         <source>the download did not write everything; the report says what the drive holds</source>
-        <translation>der Download hat nicht alles geschrieben; der Bericht sagt, was der Umrichter enthaelt</translation>
+        <translation>der Download hat nicht alles geschrieben; der Bericht sagt, was der Umrichter enthält</translation>
     </message>
 </context>
 <context>
@@ -936,6 +936,105 @@
     <message>
         <source>Services 13, 14, 19-21 and 51-53, which the HSP5 specification does not define. Only for a drive known to have them: a drive without them cannot tell where such a request ends and loses the requests that follow it.</source>
         <translation>Die Dienste 13, 14, 19-21 und 51-53, die die HSP5-Spezifikation nicht festlegt. Nur für einen Umrichter, der sie sicher kennt: ein Umrichter ohne sie erkennt nicht, wo eine solche Anfrage endet, und verliert die folgenden Anfragen.</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::DocumentEditor</name>
+    <message>
+        <source>the file has no parameter %1</source>
+        <translation>die Datei hat keinen Parameter %1</translation>
+    </message>
+    <message>
+        <source>no set chosen</source>
+        <translation>kein Satz gewählt</translation>
+    </message>
+    <message>
+        <source>%1 is read-only</source>
+        <translation>%1 ist schreibgeschützt</translation>
+    </message>
+    <message>
+        <source>Change %1 to %2%3</source>
+        <translation>%1 auf %2%3 ändern</translation>
+    </message>
+    <message>
+        <source>%1 = %2 not changed%3: %4</source>
+        <translation>%1 = %2%3 nicht geändert: %4</translation>
+    </message>
+    <message>
+        <source>%1 = %2 in the file%3; save to keep it</source>
+        <translation>%1 = %2%3 in der Datei; speichern, um es zu behalten</translation>
+    </message>
+    <message>
+        <source>Not reset: the file has no parameter %1</source>
+        <translation>Nicht zurückgesetzt: die Datei hat keinen Parameter %1</translation>
+    </message>
+    <message>
+        <source>Reset %1 to its default%2</source>
+        <translation>%1%2 auf den Vorgabewert zurücksetzen</translation>
+    </message>
+    <message>
+        <source>%1 holds its default already%2</source>
+        <translation>%1 hat bereits den Vorgabewert%2</translation>
+    </message>
+    <message>
+        <source>%1 not reset%2: %3</source>
+        <translation>%1%2 nicht zurückgesetzt: %3</translation>
+    </message>
+    <message>
+        <source>%1 reset to its default in the file%2</source>
+        <translation>%1%2 in der Datei auf den Vorgabewert zurückgesetzt</translation>
+    </message>
+    <message>
+        <source>Copy set %1 to set %2</source>
+        <translation>Satz %1 in Satz %2 kopieren</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) read-only or locked</source>
+        <translation>
+            <numerusform>%n Wert schreibgeschützt oder gesperrt</numerusform>
+            <numerusform>%n Werte schreibgeschützt oder gesperrt</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) of set %1 not known</source>
+        <translation>
+            <numerusform>%n Wert von Satz %1 unbekannt</numerusform>
+            <numerusform>%n Werte von Satz %1 unbekannt</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) outside the limits</source>
+        <translation>
+            <numerusform>%n Wert außerhalb der Grenzen</numerusform>
+            <numerusform>%n Werte außerhalb der Grenzen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Copied %n value(s) from set %1 to set %2 in the file</source>
+        <translation>
+            <numerusform>%n Wert von Satz %1 in Satz %2 der Datei kopiert</numerusform>
+            <numerusform>%n Werte von Satz %1 in Satz %2 der Datei kopiert</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Set %1 and set %2 hold the same values: nothing to copy</source>
+        <translation>Satz %1 und Satz %2 haben dieselben Werte: nichts zu kopieren</translation>
+    </message>
+    <message>
+        <source>; left as they are: %1</source>
+        <translation>; unverändert gelassen: %1</translation>
+    </message>
+    <message>
+        <source> (all sets)</source>
+        <translation> (alle Sätze)</translation>
+    </message>
+    <message>
+        <source> (set %1)</source>
+        <translation> (Satz %1)</translation>
+    </message>
+    <message>
+        <source> (sets %1)</source>
+        <translation> (Sätze %1)</translation>
     </message>
 </context>
 <context>
@@ -1804,6 +1903,132 @@
         <source>Could not connect to %1: %2. What was shown before stays.</source>
         <translation>Keine Verbindung zu %1: %2. Was vorher angezeigt wurde, bleibt stehen.</translation>
     </message>
+    <message>
+        <source>&amp;Open Parameter File...</source>
+        <translation>Parameterdatei ö&amp;ffnen …</translation>
+    </message>
+    <message>
+        <source>Show and edit a parameter file with no drive</source>
+        <translation>Eine Parameterdatei ohne Umrichter anzeigen und bearbeiten</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <source>Save the changes of the parameter file shown</source>
+        <translation>Die Änderungen der angezeigten Parameterdatei speichern</translation>
+    </message>
+    <message>
+        <source>Save &amp;As...</source>
+        <translation>Speichern &amp;unter …</translation>
+    </message>
+    <message>
+        <source>Save the parameter file shown under another name</source>
+        <translation>Die angezeigte Parameterdatei unter einem anderen Namen speichern</translation>
+    </message>
+    <message>
+        <source>Save &amp;Drive to File...</source>
+        <translation>&amp;Umrichter in Datei sichern …</translation>
+    </message>
+    <message>
+        <source>Save the parameters read from the drive to a parameter file; the window goes on with the drive</source>
+        <translation>Die vom Umrichter gelesenen Parameter in einer Parameterdatei sichern; das Fenster arbeitet weiter mit dem Umrichter</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <source>Open Parameter File</source>
+        <translation>Parameterdatei öffnen</translation>
+    </message>
+    <message>
+        <source>Could not open %1: %2</source>
+        <translation>%1 konnte nicht geöffnet werden: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Opened %1: %n parameter(s), no drive connected.</source>
+        <translation>
+            <numerusform>%1 geöffnet: %n Parameter, kein Umrichter verbunden.</numerusform>
+            <numerusform>%1 geöffnet: %n Parameter, kein Umrichter verbunden.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Disconnected from %1 to show the parameter file %2.</source>
+        <translation>Verbindung zu %1 getrennt, um die Parameterdatei %2 anzuzeigen.</translation>
+    </message>
+    <message>
+        <source>No drive: parameter file</source>
+        <translation>Kein Umrichter: Parameterdatei</translation>
+    </message>
+    <message>
+        <source>The parameter file holds no parameters.</source>
+        <translation>Die Parameterdatei enthält keine Parameter.</translation>
+    </message>
+    <message>
+        <source>No drive is connected: the table shows the parameter file %1, and edits change the file only, once you save it (%2). Nothing is sent to a drive.</source>
+        <translation>Kein Umrichter verbunden: die Tabelle zeigt die Parameterdatei %1, und Änderungen ändern nur die Datei, sobald Sie sie speichern (%2). Nichts wird an einen Umrichter gesendet.</translation>
+    </message>
+    <message>
+        <source>Save Parameter File</source>
+        <translation>Parameterdatei speichern</translation>
+    </message>
+    <message>
+        <source>Could not save %1: %2. The file on disk is as it was.</source>
+        <translation>%1 konnte nicht gespeichert werden: %2. Die Datei auf dem Datenträger ist unverändert.</translation>
+    </message>
+    <message>
+        <source>Saved %1.</source>
+        <translation>%1 gespeichert.</translation>
+    </message>
+    <message>
+        <source>Save Drive to File</source>
+        <translation>Umrichter in Datei sichern</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %n parameter(s) of the drive to %1.</source>
+        <translation>
+            <numerusform>%n Parameter des Umrichters in %1 gesichert.</numerusform>
+            <numerusform>%n Parameter des Umrichters in %1 gesichert.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1[*] - DriveDesk</source>
+        <translation>%1[*] - DriveDesk</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>The parameter file %1 has changes that are not saved.</source>
+        <translation>Die Parameterdatei %1 hat Änderungen, die nicht gespeichert sind.</translation>
+    </message>
+    <message>
+        <source>Save them before going on?</source>
+        <translation>Vor dem Fortfahren speichern?</translation>
+    </message>
+    <message>
+        <source>Replace File</source>
+        <translation>Datei ersetzen</translation>
+    </message>
+    <message>
+        <source>%1 exists already. Replace it?</source>
+        <translation>%1 gibt es bereits. Ersetzen?</translation>
+    </message>
+    <message>
+        <source>&amp;Replace</source>
+        <translation>&amp;Ersetzen</translation>
+    </message>
+    <message>
+        <source>DriveDesk parameter files (*.json)</source>
+        <translation>DriveDesk-Parameterdateien (*.json)</translation>
+    </message>
+    <message>
+        <source>Save Parameter File As</source>
+        <translation>Parameterdatei speichern unter</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::MonitorFeature</name>
@@ -2264,21 +2489,33 @@
 <context>
     <name>DriveDesk::StartupOptions</name>
     <message>
-        <source>Usage: drivedesk [--connect TARGET] [options]
+        <source>unexpected argument &quot;%1&quot;</source>
+        <translation>unerwartetes Argument „%1“</translation>
+    </message>
+    <message>
+        <source>--protocol, --address and --baud belong to --connect: give tcp:HOST:PORT, serial:DEVICE or sim</source>
+        <translation>--protocol, --address und --baud gehören zu --connect: tcp:HOST:PORT, serial:GERÄT oder sim angeben</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk [--connect TARGET | --open FILE] [options]
 
-The DriveDesk parameter editor. Without --connect it opens the connection dialog.
+The DriveDesk parameter editor. Without --connect or --open it opens the connection
+dialog.
 
   --connect TARGET     tcp:HOST:PORT, serial:DEVICE or sim (the simulated drive)
+  --open FILE          show and edit a parameter file with no drive
   --protocol NAME      hsp5 (default), din66019ii or din66019
   --address N          drive address on a DIN66019(II) bus, 0..239 (default 1)
   --baud N             baud rate (default 38400)
   --language en|de     language of the window and of the drive&apos;s texts
 </source>
-        <translation>Aufruf: drivedesk [--connect ZIEL] [Optionen]
+        <translation>Aufruf: drivedesk [--connect ZIEL | --open DATEI] [Optionen]
 
-Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
+Der DriveDesk-Parametereditor. Ohne --connect oder --open öffnet er den
+Verbindungsdialog.
 
   --connect ZIEL       tcp:HOST:PORT, serial:GERÄT oder sim (der simulierte Umrichter)
+  --open DATEI         eine Parameterdatei ohne Umrichter anzeigen und bearbeiten
   --protocol NAME      hsp5 (Vorgabe), din66019ii oder din66019
   --address N          Umrichteradresse an einem DIN66019(II)-Bus, 0..239 (Vorgabe 1)
   --baud N             Baudrate (Vorgabe 38400)
@@ -2286,12 +2523,8 @@ Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
 </translation>
     </message>
     <message>
-        <source>unexpected argument &quot;%1&quot;</source>
-        <translation>unerwartetes Argument „%1“</translation>
-    </message>
-    <message>
-        <source>--protocol, --address and --baud belong to --connect: give tcp:HOST:PORT, serial:DEVICE or sim</source>
-        <translation>--protocol, --address und --baud gehören zu --connect: tcp:HOST:PORT, serial:GERÄT oder sim angeben</translation>
+        <source>--open shows a parameter file with no drive: leave out --connect, --protocol, --address and --baud</source>
+        <translation>--open zeigt eine Parameterdatei ohne Umrichter: --connect, --protocol, --address und --baud weglassen</translation>
     </message>
 </context>
 <context>
@@ -2780,11 +3013,11 @@ Der DriveDesk-Parametereditor. Ohne --connect öffnet er den Verbindungsdialog.
     </message>
     <message>
         <source>read-only</source>
-        <translation>schreibgeschuetzt</translation>
+        <translation>schreibgeschützt</translation>
     </message>
     <message>
         <source>read-only for parameter lists</source>
-        <translation>schreibgeschuetzt fuer Parameterlisten</translation>
+        <translation>schreibgeschützt für Parameterlisten</translation>
     </message>
     <message>
         <source>the drive sets this value itself</source>

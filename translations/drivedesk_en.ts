@@ -939,6 +939,105 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::DocumentEditor</name>
+    <message>
+        <source>the file has no parameter %1</source>
+        <translation>the file has no parameter %1</translation>
+    </message>
+    <message>
+        <source>no set chosen</source>
+        <translation>no set chosen</translation>
+    </message>
+    <message>
+        <source>%1 is read-only</source>
+        <translation>%1 is read-only</translation>
+    </message>
+    <message>
+        <source>Change %1 to %2%3</source>
+        <translation>Change %1 to %2%3</translation>
+    </message>
+    <message>
+        <source>%1 = %2 not changed%3: %4</source>
+        <translation>%1 = %2 not changed%3: %4</translation>
+    </message>
+    <message>
+        <source>%1 = %2 in the file%3; save to keep it</source>
+        <translation>%1 = %2 in the file%3; save to keep it</translation>
+    </message>
+    <message>
+        <source>Not reset: the file has no parameter %1</source>
+        <translation>Not reset: the file has no parameter %1</translation>
+    </message>
+    <message>
+        <source>Reset %1 to its default%2</source>
+        <translation>Reset %1 to its default%2</translation>
+    </message>
+    <message>
+        <source>%1 holds its default already%2</source>
+        <translation>%1 holds its default already%2</translation>
+    </message>
+    <message>
+        <source>%1 not reset%2: %3</source>
+        <translation>%1 not reset%2: %3</translation>
+    </message>
+    <message>
+        <source>%1 reset to its default in the file%2</source>
+        <translation>%1 reset to its default in the file%2</translation>
+    </message>
+    <message>
+        <source>Copy set %1 to set %2</source>
+        <translation>Copy set %1 to set %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) read-only or locked</source>
+        <translation>
+            <numerusform>%n value read-only or locked</numerusform>
+            <numerusform>%n values read-only or locked</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) of set %1 not known</source>
+        <translation>
+            <numerusform>%n value of set %1 not known</numerusform>
+            <numerusform>%n values of set %1 not known</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) outside the limits</source>
+        <translation>
+            <numerusform>%n value outside the limits</numerusform>
+            <numerusform>%n values outside the limits</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Copied %n value(s) from set %1 to set %2 in the file</source>
+        <translation>
+            <numerusform>Copied %n value from set %1 to set %2 in the file</numerusform>
+            <numerusform>Copied %n values from set %1 to set %2 in the file</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Set %1 and set %2 hold the same values: nothing to copy</source>
+        <translation>Set %1 and set %2 hold the same values: nothing to copy</translation>
+    </message>
+    <message>
+        <source>; left as they are: %1</source>
+        <translation>; left as they are: %1</translation>
+    </message>
+    <message>
+        <source> (all sets)</source>
+        <translation> (all sets)</translation>
+    </message>
+    <message>
+        <source> (set %1)</source>
+        <translation> (set %1)</translation>
+    </message>
+    <message>
+        <source> (sets %1)</source>
+        <translation> (sets %1)</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::DriveInfoDialog</name>
     <message>
         <source>Connection</source>
@@ -1804,6 +1903,132 @@
         <source>Could not connect to %1: %2. What was shown before stays.</source>
         <translation>Could not connect to %1: %2. What was shown before stays.</translation>
     </message>
+    <message>
+        <source>&amp;Open Parameter File...</source>
+        <translation>&amp;Open Parameter File...</translation>
+    </message>
+    <message>
+        <source>Show and edit a parameter file with no drive</source>
+        <translation>Show and edit a parameter file with no drive</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Save</translation>
+    </message>
+    <message>
+        <source>Save the changes of the parameter file shown</source>
+        <translation>Save the changes of the parameter file shown</translation>
+    </message>
+    <message>
+        <source>Save &amp;As...</source>
+        <translation>Save &amp;As...</translation>
+    </message>
+    <message>
+        <source>Save the parameter file shown under another name</source>
+        <translation>Save the parameter file shown under another name</translation>
+    </message>
+    <message>
+        <source>Save &amp;Drive to File...</source>
+        <translation>Save &amp;Drive to File...</translation>
+    </message>
+    <message>
+        <source>Save the parameters read from the drive to a parameter file; the window goes on with the drive</source>
+        <translation>Save the parameters read from the drive to a parameter file; the window goes on with the drive</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;File</translation>
+    </message>
+    <message>
+        <source>Open Parameter File</source>
+        <translation>Open Parameter File</translation>
+    </message>
+    <message>
+        <source>Could not open %1: %2</source>
+        <translation>Could not open %1: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Opened %1: %n parameter(s), no drive connected.</source>
+        <translation>
+            <numerusform>Opened %1: %n parameter, no drive connected.</numerusform>
+            <numerusform>Opened %1: %n parameters, no drive connected.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Disconnected from %1 to show the parameter file %2.</source>
+        <translation>Disconnected from %1 to show the parameter file %2.</translation>
+    </message>
+    <message>
+        <source>No drive: parameter file</source>
+        <translation>No drive: parameter file</translation>
+    </message>
+    <message>
+        <source>The parameter file holds no parameters.</source>
+        <translation>The parameter file holds no parameters.</translation>
+    </message>
+    <message>
+        <source>No drive is connected: the table shows the parameter file %1, and edits change the file only, once you save it (%2). Nothing is sent to a drive.</source>
+        <translation>No drive is connected: the table shows the parameter file %1, and edits change the file only, once you save it (%2). Nothing is sent to a drive.</translation>
+    </message>
+    <message>
+        <source>Save Parameter File</source>
+        <translation>Save Parameter File</translation>
+    </message>
+    <message>
+        <source>Could not save %1: %2. The file on disk is as it was.</source>
+        <translation>Could not save %1: %2. The file on disk is as it was.</translation>
+    </message>
+    <message>
+        <source>Saved %1.</source>
+        <translation>Saved %1.</translation>
+    </message>
+    <message>
+        <source>Save Drive to File</source>
+        <translation>Save Drive to File</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %n parameter(s) of the drive to %1.</source>
+        <translation>
+            <numerusform>Saved %n parameter of the drive to %1.</numerusform>
+            <numerusform>Saved %n parameters of the drive to %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1[*] - DriveDesk</source>
+        <translation>%1[*] - DriveDesk</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Unsaved Changes</translation>
+    </message>
+    <message>
+        <source>The parameter file %1 has changes that are not saved.</source>
+        <translation>The parameter file %1 has changes that are not saved.</translation>
+    </message>
+    <message>
+        <source>Save them before going on?</source>
+        <translation>Save them before going on?</translation>
+    </message>
+    <message>
+        <source>Replace File</source>
+        <translation>Replace File</translation>
+    </message>
+    <message>
+        <source>%1 exists already. Replace it?</source>
+        <translation>%1 exists already. Replace it?</translation>
+    </message>
+    <message>
+        <source>&amp;Replace</source>
+        <translation>&amp;Replace</translation>
+    </message>
+    <message>
+        <source>DriveDesk parameter files (*.json)</source>
+        <translation>DriveDesk parameter files (*.json)</translation>
+    </message>
+    <message>
+        <source>Save Parameter File As</source>
+        <translation>Save Parameter File As</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::MonitorFeature</name>
@@ -2264,21 +2489,33 @@
 <context>
     <name>DriveDesk::StartupOptions</name>
     <message>
-        <source>Usage: drivedesk [--connect TARGET] [options]
+        <source>unexpected argument &quot;%1&quot;</source>
+        <translation>unexpected argument &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>--protocol, --address and --baud belong to --connect: give tcp:HOST:PORT, serial:DEVICE or sim</source>
+        <translation>--protocol, --address and --baud belong to --connect: give tcp:HOST:PORT, serial:DEVICE or sim</translation>
+    </message>
+    <message>
+        <source>Usage: drivedesk [--connect TARGET | --open FILE] [options]
 
-The DriveDesk parameter editor. Without --connect it opens the connection dialog.
+The DriveDesk parameter editor. Without --connect or --open it opens the connection
+dialog.
 
   --connect TARGET     tcp:HOST:PORT, serial:DEVICE or sim (the simulated drive)
+  --open FILE          show and edit a parameter file with no drive
   --protocol NAME      hsp5 (default), din66019ii or din66019
   --address N          drive address on a DIN66019(II) bus, 0..239 (default 1)
   --baud N             baud rate (default 38400)
   --language en|de     language of the window and of the drive&apos;s texts
 </source>
-        <translation>Usage: drivedesk [--connect TARGET] [options]
+        <translation>Usage: drivedesk [--connect TARGET | --open FILE] [options]
 
-The DriveDesk parameter editor. Without --connect it opens the connection dialog.
+The DriveDesk parameter editor. Without --connect or --open it opens the connection
+dialog.
 
   --connect TARGET     tcp:HOST:PORT, serial:DEVICE or sim (the simulated drive)
+  --open FILE          show and edit a parameter file with no drive
   --protocol NAME      hsp5 (default), din66019ii or din66019
   --address N          drive address on a DIN66019(II) bus, 0..239 (default 1)
   --baud N             baud rate (default 38400)
@@ -2286,12 +2523,8 @@ The DriveDesk parameter editor. Without --connect it opens the connection dialog
 </translation>
     </message>
     <message>
-        <source>unexpected argument &quot;%1&quot;</source>
-        <translation>unexpected argument &quot;%1&quot;</translation>
-    </message>
-    <message>
-        <source>--protocol, --address and --baud belong to --connect: give tcp:HOST:PORT, serial:DEVICE or sim</source>
-        <translation>--protocol, --address and --baud belong to --connect: give tcp:HOST:PORT, serial:DEVICE or sim</translation>
+        <source>--open shows a parameter file with no drive: leave out --connect, --protocol, --address and --baud</source>
+        <translation>--open shows a parameter file with no drive: leave out --connect, --protocol, --address and --baud</translation>
     </message>
 </context>
 <context>
