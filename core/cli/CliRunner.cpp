@@ -155,20 +155,24 @@ void CliRunner::scan(ScanOptions options, std::function<void(const DriveDescript
                     m_err << QStringLiteral("\r\x1b[K") << Qt::flush;
                 const DriveDescription description = watcher->future().result();
                 watcher->deleteLater();
-                for (const QString &warning : description.warnings)
-                    m_err << warning << '\n';
-                if (description.metadataFromCache && !m_request.quiet && !m_cacheNoted) {
-                    m_cacheNoted = true; // once, however many scans a command makes
-                    m_err << tr("metadata from the cache of this kind of drive (%1); "
-                                "--no-cache reads it from the drive")
-                                 .arg(options.cacheDirectory.isEmpty()
-                                          ? MetadataCache::defaultDirectory()
-                                          : options.cacheDirectory)
-                          << '\n';
-                }
+                noteScan(description, options.cacheDirectory);
                 next(description);
             });
     watcher->setFuture(m_client->scan(options));
+}
+
+void CliRunner::noteScan(const DriveDescription &drive, const QString &cacheDirectory)
+{
+    for (const QString &warning : drive.warnings)
+        m_err << warning << '\n';
+    if (drive.metadataFromCache && !m_request.quiet && !m_cacheNoted) {
+        m_cacheNoted = true; // once, however many scans a command makes
+        m_err << tr("metadata from the cache of this kind of drive (%1); "
+                    "--no-cache reads it from the drive")
+                     .arg(cacheDirectory.isEmpty() ? MetadataCache::defaultDirectory()
+                                                   : cacheDirectory)
+              << '\n';
+    }
 }
 
 void CliRunner::runInfo()

@@ -10,9 +10,8 @@
 
 namespace DriveDesk {
 
-struct DownloadPlan;
+class DownloadRun;
 struct WriteOutcome;
-class WriteChangesJob;
 
 // Runs one drivedesk-cli command against a drive: connects, does the work asynchronously
 // through the client, prints the result, and ends with finished(exit code).
@@ -51,8 +50,9 @@ private:
     // Drive to file and file to drive (CliTransfer.cpp).
     void runUpload();
     void runDownload();
-    void writeDownload(const DownloadPlan &plan, const DriveDescription &drive);
     void progressLine(int percent, const QString &text);
+    // What a scan brought besides the description: its warnings, metadata from the cache.
+    void noteScan(const DriveDescription &drive, const QString &cacheDirectory);
     // Finds the parameter named on the command line and reads its metadata, then calls next.
     void lookUpParameter(std::function<void(const GroupDescription &, const ParameterDescription &)> next);
     void report(const QString &id, const ParameterDescription &parameter, qint32 raw,
@@ -74,8 +74,7 @@ private:
     bool m_finished = false;
     bool m_cacheNoted = false;
     QList<DriveDescription> m_files; // loadFiles(): the files of diff, upload, download
-    std::shared_ptr<WriteChangesJob> m_download;
-    bool m_interrupted = false;
+    DownloadRun *m_download = nullptr;
 };
 
 } // namespace DriveDesk

@@ -3,11 +3,7 @@
 
 #include "parameters/ParameterDocument.h"
 #include "parameters/ParameterList.h"
-#include "session/DownloadPlan.h"
-#include "session/DownloadReport.h"
-#include "session/WriteChangesJob.h"
-
-#include <QFutureWatcher>
+#include "session/DownloadRun.h"
 
 #include <unistd.h>
 
@@ -17,11 +13,9 @@ bool CliRunner::interrupt()
 {
     if (!m_download || m_finished)
         return false;
-    if (!m_interrupted) {
-        m_interrupted = true;
-        m_download->requestStop();
+    if (m_download->stage() == DownloadRun::Stage::Writing)
         m_err << '\n' << tr("stopping after the value on its way...") << '\n' << Qt::flush;
-    }
+    m_download->stop();
     return true;
 }
 
@@ -80,78 +74,55 @@ void CliRunner::runUpload()
     });
 }
 
+// The window's download runs the same DownloadRun: read the drive, plan, write, report.
 void CliRunner::runDownload()
 {
-    ScanOptions options;
-    options.values = true;
-    scan(options, [this](const DriveDescription &drive) {
-        if (!drive.incompleteReason.isEmpty()) {
-            return fail(1, tr("the drive could not be read (%1); nothing was written")
-                               .arg(drive.incompleteReason));
-        }
-        DownloadOptions downloadOptions;
-        downloadOptions.sets = m_request.setMask;
-        downloadOptions.force = m_request.force;
-        const DownloadPlan plan = planDownload(m_files.constFirst(), drive, downloadOptions);
+    m_download = new DownloadRun(m_client.get(), m_request.connection.protocol,
+                                 m_files.constFirst(), this);
+    DownloadOptions options;
+    options.sets = m_request.setMask;
+    options.force = m_request.force;
+    m_download->setOptions(options);
+    connect(m_download, &DownloadRun::progress, this,
+            [this](int done, int total, const QString &what) {
+                progressLine(done * 100 / std::max(1, total), what);
+            });
+    connect(m_download, &DownloadRun::failed, this, [this](const QString &reason) {
+        progressLine(-1, {});
+        fail(1, reason);
+    });
+    connect(m_download, &DownloadRun::planned, this, [this](const DownloadPlan &plan) {
+        progressLine(-1, {});
+        noteScan(m_download->drive(), {});
         for (const QString &problem : plan.problems)
             m_err << (plan.forced ? tr("warning: %1") : tr("refused: %1")).arg(problem) << '\n';
         if (plan.isRefused())
             return fail(2, tr("nothing was written; --force writes the file all the same"));
-        if (m_request.dryRun) {
-            m_out << plan.text(drive);
-            for (const DownloadSkip &skip : plan.skipped)
-                m_out << tr("skipped  %1  %2: %3").arg(skip.id, skip.name, skip.reason) << '\n';
-            m_out << tr("dry run: %n value(s) would be written", nullptr, plan.valueCount())
-                  << QStringLiteral(", ") << tr("%n unchanged", nullptr, plan.unchanged)
-                  << QStringLiteral(", ") << tr("%n skipped", nullptr, int(plan.skipped.size()))
-                  << QStringLiteral("; ") << tr("nothing was written") << '\n';
-            if (plan.readOnlyDiffering) {
-                m_out << tr("%n read-only value(s) of the file differ from the drive's; they are "
-                            "never written", nullptr, plan.readOnlyDiffering)
-                      << '\n';
-            }
-            return done();
+        if (!m_request.dryRun)
+            return m_download->write();
+        m_out << plan.text(m_download->drive());
+        for (const DownloadSkip &skip : plan.skipped)
+            m_out << tr("skipped  %1  %2: %3").arg(skip.id, skip.name, skip.reason) << '\n';
+        m_out << tr("dry run: %n value(s) would be written", nullptr, plan.valueCount())
+              << QStringLiteral(", ") << tr("%n unchanged", nullptr, plan.unchanged)
+              << QStringLiteral(", ") << tr("%n skipped", nullptr, int(plan.skipped.size()))
+              << QStringLiteral("; ") << tr("nothing was written") << '\n';
+        if (plan.readOnlyDiffering) {
+            m_out << tr("%n read-only value(s) of the file differ from the drive's; they are "
+                        "never written", nullptr, plan.readOnlyDiffering)
+                  << '\n';
         }
-        writeDownload(plan, drive);
+        done();
     });
-}
-
-void CliRunner::writeDownload(const DownloadPlan &plan, const DriveDescription &drive)
-{
-    QList<ValueChange> changes;
-    for (const DownloadItem &item : plan.items)
-        changes << item.change;
-    m_download = std::make_shared<WriteChangesJob>(m_request.connection.protocol, changes);
-    auto *watcher = new QFutureWatcher<WriteOutcome>(this);
-    connect(watcher, &QFutureWatcher<WriteOutcome>::progressValueChanged, this,
-            [this, total = int(changes.size())](int written) {
-                progressLine(written * 100 / std::max(1, total),
-                             tr("writing %1 of %2").arg(written).arg(total));
-            });
-    connect(watcher, &QFutureWatcher<WriteOutcome>::finished, this, [this, watcher, plan, drive] {
+    connect(m_download, &DownloadRun::finished, this, [this](const DownloadReport &report) {
         progressLine(-1, {});
-        const QFuture<WriteOutcome> future = watcher->future();
-        watcher->deleteLater();
-        QList<std::optional<WriteOutcome>> outcomes(plan.items.size());
-        QString stopReason;
-        for (int i = 0; i < int(outcomes.size()); ++i) {
-            if (!future.isResultReadyAt(i))
-                continue;
-            outcomes[i] = future.resultAt(i);
-            if (outcomes[i]->connectionFailed)
-                stopReason = outcomes[i]->error;
-        }
-        if (m_interrupted)
-            stopReason = tr("stopped by the user");
-        const DownloadReport report = reportDownload(plan, outcomes, stopReason, drive);
-        m_download.reset();
         m_out << report.text();
         if (!report.isComplete())
             return fail(1, tr("the download did not write everything; the report says what "
                               "the drive holds"));
         done();
     });
-    watcher->setFuture(m_client->run(m_download));
+    m_download->start(m_request.useCache ? MetadataSource::Cache : MetadataSource::RefreshCache);
 }
 
 } // namespace DriveDesk

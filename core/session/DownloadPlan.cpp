@@ -78,7 +78,7 @@ void checkKind(const DriveDescription &file, const DriveDescription &drive, QStr
 }
 
 void checkParameters(const DriveDescription &file, const DriveDescription &drive,
-                     QStringList &problems)
+                     bool selection, QStringList &problems)
 {
     QStringList onlyInFile;
     QStringList onlyOnDrive;
@@ -90,7 +90,7 @@ void checkParameters(const DriveDescription &file, const DriveDescription &drive
     }
     for (const GroupDescription &group : drive.groups) {
         for (const ParameterDescription &parameter : group.parameters) {
-            if (ParameterList::holds(parameter) && !file.find(parameter.address))
+            if (ParameterList::holds(parameter) && !selection && !file.find(parameter.address))
                 onlyOnDrive << parameterId(group.id, parameter.number());
         }
     }
@@ -159,7 +159,7 @@ public:
                 skip(plan, why);
             return;
         }
-        if (masks.empty() && !missing)
+        if (masks.empty() && (!missing || m_options.selection))
             return;
         if (!perSet && m_options.sets != 0xFF)
             return skip(plan, DownloadPlan::tr("one value for all sets, left out by the sets "
@@ -169,7 +169,7 @@ public:
             return skip(plan, DownloadPlan::tr("needs password level %1")
                                   .arg(passwordLevelName(properties.writeLevel())));
         }
-        if (missing) {
+        if (missing && !m_options.selection) {
             skip(plan, DownloadPlan::tr("%1 not in the file (not read when it was made)")
                            .arg(SetList::text(missing)));
         }
@@ -221,7 +221,7 @@ DownloadPlan planDownload(const DriveDescription &file, const DriveDescription &
     DownloadPlan plan;
     plan.forced = options.force;
     checkKind(file, drive, plan.problems);
-    checkParameters(file, drive, plan.problems);
+    checkParameters(file, drive, options.selection, plan.problems);
     const std::optional<PasswordLevel> level = levelInForce(drive);
     QStringList outside;
     QList<DownloadItem> late; // limits that may follow from values written before them

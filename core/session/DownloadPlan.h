@@ -17,6 +17,9 @@ struct DownloadOptions
 {
     quint8 sets = 0xFF; // the sets whose values are written (--sets)
     bool force = false; // write although the checks found problems
+    // The file holds only values chosen to be written (a compare view's selection): the
+    // drive's parameters and values it lacks are left as they are, not missing.
+    bool selection = false;
 };
 
 // One parameter a download writes: its values, grouped into one step per value.

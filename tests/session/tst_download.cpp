@@ -223,6 +223,29 @@ private slots:
         QVERIFY(plan.problems.join(QLatin1Char('\n')).contains(QStringLiteral("does not say which kind")));
     }
 
+    // A compare view's choice: only the values it holds are written, the rest is no matter.
+    void aSelectionWritesOnlyWhatItHolds()
+    {
+        DriveDescription selection = m_file;
+        for (GroupDescription &group : selection.groups) {
+            if (group.id == QLatin1String("In") || group.id == QLatin1String("Sy"))
+                continue; // the identity stays, for the check
+            for (ParameterDescription &p : group.parameters)
+                p.values = {};
+        }
+        parameter(selection, kMaxSpeedForward).values[3] = 2500;
+        selection.groups[2].parameters.clear(); // a whole group left out
+        DownloadOptions options;
+        options.selection = true;
+        const DownloadPlan plan = planDownload(selection, m_drive, options);
+        QVERIFY2(plan.problems.isEmpty(), qPrintable(plan.problems.join(QLatin1Char('\n'))));
+        QVERIFY(plan.skipped.isEmpty());
+        QCOMPARE(plan.items.size(), 1);
+        QCOMPARE(plan.items[0].change.address, kMaxSpeedForward);
+        QCOMPARE(plan.valueCount(), 1);
+        QVERIFY(planDownload(selection, m_drive, {}).isRefused()); // as a whole file it is not
+    }
+
     void aLowPasswordLevelSkipsWhatItCannotWrite()
     {
         DriveDescription drive = m_drive;

@@ -1,0 +1,112 @@
+#include "DownloadRun.h"
+
+#include "session/WriteChangesJob.h"
+
+namespace DriveDesk {
+
+DownloadRun::DownloadRun(DriveClient *client, Protocol protocol, DriveDescription file,
+                         QObject *parent)
+    : QObject(parent)
+    , m_client(client)
+    , m_protocol(protocol)
+    , m_file(std::move(file))
+{
+    connect(&m_reading, &QFutureWatcher<DriveDescription>::progressTextChanged, this,
+            [this](const QString &text) {
+                emit progress(m_reading.progressValue(), m_reading.progressMaximum(), text);
+            });
+    connect(&m_reading, &QFutureWatcher<DriveDescription>::finished, this, &DownloadRun::onRead);
+    connect(&m_writing, &QFutureWatcher<WriteOutcome>::progressValueChanged, this,
+            [this](int written) {
+                emit progress(written, int(m_plan.items.size()),
+                              tr("writing %1 of %2").arg(written).arg(m_plan.items.size()));
+            });
+    connect(&m_writing, &QFutureWatcher<WriteOutcome>::finished, this, &DownloadRun::onWritten);
+}
+
+DownloadRun::~DownloadRun()
+{
+    // A write on its way still finishes in the client's thread; nothing waits for it here.
+    if (m_job)
+        m_job->requestStop();
+}
+
+void DownloadRun::start(MetadataSource metadata)
+{
+    if (m_stage != Stage::Idle)
+        return;
+    m_stage = Stage::Reading;
+    ScanOptions options;
+    options.values = true;
+    options.metadata = metadata;
+    m_reading.setFuture(m_client->scan(options));
+}
+
+void DownloadRun::onRead()
+{
+    m_drive = m_reading.future().resultCount() ? m_reading.future().result() : DriveDescription{};
+    if (m_stopped) {
+        m_stage = Stage::Done;
+        return emit failed(tr("stopped before anything was written"));
+    }
+    if (m_reading.future().resultCount() == 0 || !m_drive.incompleteReason.isEmpty()) {
+        m_stage = Stage::Done;
+        const QString reason = m_drive.incompleteReason.isEmpty() ? tr("no answer")
+                                                                  : m_drive.incompleteReason;
+        return emit failed(tr("the drive could not be read (%1); nothing was written").arg(reason));
+    }
+    m_stage = Stage::Planned;
+    m_plan = planDownload(m_file, m_drive, m_options);
+    emit planned(m_plan);
+}
+
+void DownloadRun::setOptions(const DownloadOptions &options)
+{
+    m_options = options;
+    if (m_stage != Stage::Planned)
+        return;
+    m_plan = planDownload(m_file, m_drive, m_options);
+    emit planned(m_plan);
+}
+
+void DownloadRun::write()
+{
+    if (m_stage != Stage::Planned || m_plan.isRefused())
+        return;
+    m_stage = Stage::Writing;
+    QList<ValueChange> changes;
+    for (const DownloadItem &item : std::as_const(m_plan.items))
+        changes << item.change;
+    m_job = std::make_shared<WriteChangesJob>(m_protocol, changes);
+    m_writing.setFuture(m_client->run(m_job));
+}
+
+void DownloadRun::stop()
+{
+    m_stopped = true;
+    if (m_stage == Stage::Reading)
+        m_client->stopScan();
+    else if (m_stage == Stage::Writing && m_job)
+        m_job->requestStop();
+}
+
+void DownloadRun::onWritten()
+{
+    const QFuture<WriteOutcome> future = m_writing.future();
+    QList<std::optional<WriteOutcome>> outcomes(m_plan.items.size());
+    QString stopReason;
+    for (int i = 0; i < int(outcomes.size()); ++i) {
+        if (!future.isResultReadyAt(i))
+            continue;
+        outcomes[i] = future.resultAt(i);
+        if (outcomes[i]->connectionFailed)
+            stopReason = outcomes[i]->error;
+    }
+    if (m_stopped)
+        stopReason = tr("stopped by the user");
+    m_job.reset();
+    m_stage = Stage::Done;
+    emit finished(reportDownload(m_plan, outcomes, stopReason, m_drive));
+}
+
+} // namespace DriveDesk

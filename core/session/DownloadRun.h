@@ -1,0 +1,71 @@
+#pragma once
+
+#include "client/DriveClient.h"
+#include "session/DownloadPlan.h"
+#include "session/DownloadReport.h"
+
+#include <QFutureWatcher>
+#include <QObject>
+
+#include <memory>
+
+namespace DriveDesk {
+
+class WriteChangesJob;
+
+// A parameter file downloaded to a drive, from start to report, as the window and the command
+// line both run it: the drive's values are read afresh, the download is planned against them
+// (planned(): a last look, nothing written yet), and write() writes the plan, each value read
+// back, with progress, until finished() brings the report. stop() ends it at any point: before
+// write() nothing is written; while writing, the value on its way is still reported.
+// Thread: the caller's; the reading and writing run in the client's thread.
+class DownloadRun : public QObject
+{
+    Q_OBJECT
+public:
+    enum class Stage : quint8 { Idle, Reading, Planned, Writing, Done };
+
+    DownloadRun(DriveClient *client, Protocol protocol, DriveDescription file,
+                QObject *parent = nullptr);
+    ~DownloadRun() override;
+
+    // How the drive is read: the values of every set; metadata as `metadata` says.
+    void start(MetadataSource metadata = MetadataSource::Cache);
+    // Plans again with other options (sets chosen, forced) against the values read.
+    void setOptions(const DownloadOptions &options);
+    // Writes the plan. Refused (and ignored) for a plan the checks refused unless forced.
+    void write();
+    void stop();
+
+    Stage stage() const { return m_stage; }
+    const DownloadOptions &options() const { return m_options; }
+    const DownloadPlan &plan() const { return m_plan; }
+    const DriveDescription &file() const { return m_file; }
+    const DriveDescription &drive() const { return m_drive; } // as read by start()
+
+signals:
+    // Reading: done and total in any unit; writing: values written of the plan's items.
+    void progress(int done, int total, const QString &what);
+    void planned(const DriveDesk::DownloadPlan &plan);
+    // Nothing was written: the drive could not be read (or stop() came first).
+    void failed(const QString &reason);
+    void finished(const DriveDesk::DownloadReport &report);
+
+private:
+    void onRead();
+    void onWritten();
+
+    DriveClient *const m_client;
+    const Protocol m_protocol;
+    const DriveDescription m_file;
+    DownloadOptions m_options;
+    DriveDescription m_drive;
+    DownloadPlan m_plan;
+    Stage m_stage = Stage::Idle;
+    bool m_stopped = false;
+    QFutureWatcher<DriveDescription> m_reading;
+    QFutureWatcher<WriteOutcome> m_writing;
+    std::shared_ptr<WriteChangesJob> m_job;
+};
+
+} // namespace DriveDesk
