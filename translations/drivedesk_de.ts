@@ -595,10 +595,6 @@
         </translation>
     </message>
     <message>
-        <source>the drive could not be read (%1); nothing was written</source>
-        <translation>der Umrichter konnte nicht gelesen werden (%1); es wurde nichts geschrieben</translation>
-    </message>
-    <message>
         <source>warning: %1</source>
         <translation>Warnung: %1</translation>
     </message>
@@ -645,14 +641,6 @@
             <numerusform>%n schreibgeschützter Wert der Datei weicht vom Umrichter ab; er wird nie geschrieben</numerusform>
             <numerusform>%n schreibgeschützte Werte der Datei weichen vom Umrichter ab; sie werden nie geschrieben</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>writing %1 of %2</source>
-        <translation>schreibe %1 von %2</translation>
-    </message>
-    <message>
-        <source>stopped by the user</source>
-        <translation>vom Benutzer abgebrochen</translation>
     </message>
     <message>
         <source>the download did not write everything; the report says what the drive holds</source>
@@ -1035,6 +1023,206 @@
     <message>
         <source> (sets %1)</source>
         <translation> (Sätze %1)</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::DownloadDialog</name>
+    <message>
+        <source>Download to the Drive</source>
+        <translation>Download zum Umrichter</translation>
+    </message>
+    <message>
+        <source>Writes the values of %1 to the drive, each read back.</source>
+        <translation>Schreibt die Werte von %1 in den Umrichter, jeden mit Rücklesen.</translation>
+    </message>
+    <message>
+        <source>&amp;Write all the same (the checks above are overruled)</source>
+        <translation>&amp;Trotzdem schreiben (die Prüfungen oben werden übergangen)</translation>
+    </message>
+    <message>
+        <source>Sets to write:</source>
+        <translation>Zu schreibende Sätze:</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Sets</source>
+        <translation>Sätze</translation>
+    </message>
+    <message>
+        <source>Drive now</source>
+        <translation>Umrichter jetzt</translation>
+    </message>
+    <message>
+        <source>To write</source>
+        <translation>Zu schreiben</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>Hinweis</translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation>Schreiben</translation>
+    </message>
+    <message>
+        <source>Reading the drive&apos;s values to compare them with the file...</source>
+        <translation>Die Werte des Umrichters werden gelesen, um sie mit der Datei zu vergleichen …</translation>
+    </message>
+    <message>
+        <source>Writing to the drive: %1</source>
+        <translation>Schreiben in den Umrichter: %1</translation>
+    </message>
+    <message>
+        <source>always written</source>
+        <translation>wird immer geschrieben</translation>
+    </message>
+    <message>
+        <source>left: %1</source>
+        <translation>ausgelassen: %1</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;The file does not fit the drive:&lt;/b&gt;&lt;ul&gt;%1&lt;/ul&gt;</source>
+        <translation>&lt;b&gt;Die Datei passt nicht zum Umrichter:&lt;/b&gt;&lt;ul&gt;%1&lt;/ul&gt;</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) to write</source>
+        <translation>
+            <numerusform>%n Wert zu schreiben</numerusform>
+            <numerusform>%n Werte zu schreiben</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n unchanged</source>
+        <translation>
+            <numerusform>%n unverändert</numerusform>
+            <numerusform>%n unverändert</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n left</source>
+        <translation>
+            <numerusform>%n ausgelassen</numerusform>
+            <numerusform>%n ausgelassen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n read-only value(s) differ and are never written</source>
+        <translation>
+            <numerusform>%n schreibgeschützter Wert weicht ab und wird nie geschrieben</numerusform>
+            <numerusform>%n schreibgeschützte Werte weichen ab und werden nie geschrieben</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Nothing will be written unless you overrule the checks.</source>
+        <translation>Es wird nichts geschrieben, solange Sie die Prüfungen nicht übergehen.</translation>
+    </message>
+    <message>
+        <source>Look at what will be written, then write it.</source>
+        <translation>Prüfen Sie, was geschrieben wird, und schreiben Sie es dann.</translation>
+    </message>
+    <message>
+        <source>The drive holds the file&apos;s values already.</source>
+        <translation>Der Umrichter hat die Werte der Datei bereits.</translation>
+    </message>
+    <message numerus="yes">
+        <source>&amp;Write %n Value(s)</source>
+        <translation>
+            <numerusform>%n Wert &amp;schreiben</numerusform>
+            <numerusform>%n Werte &amp;schreiben</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&amp;Stop</source>
+        <translation>&amp;Anhalten</translation>
+    </message>
+    <message>
+        <source>Writing to the drive...</source>
+        <translation>Schreiben in den Umrichter …</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>&amp;Schließen</translation>
+    </message>
+    <message>
+        <source>Download finished: everything to write was written and read back.</source>
+        <translation>Download beendet: alles Nötige wurde geschrieben und zurückgelesen.</translation>
+    </message>
+    <message>
+        <source>The download did not write everything. The report says what the drive holds.</source>
+        <translation>Der Download hat nicht alles geschrieben. Der Bericht sagt, was der Umrichter enthält.</translation>
+    </message>
+    <message>
+        <source>Stopping after the value on its way...</source>
+        <translation>Anhalten nach dem Wert, der gerade unterwegs ist …</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::DownloadFeature</name>
+    <message>
+        <source>&amp;Download File to Drive...</source>
+        <translation>Datei zum Umrichter &amp;herunterladen …</translation>
+    </message>
+    <message>
+        <source>Write a parameter file&apos;s values to the drive, after a last look at what differs</source>
+        <translation>Die Werte einer Parameterdatei in den Umrichter schreiben, nach einem letzten Blick auf die Unterschiede</translation>
+    </message>
+    <message>
+        <source>Download File to Drive</source>
+        <translation>Datei zum Umrichter herunterladen</translation>
+    </message>
+    <message>
+        <source>Nothing was written: %1</source>
+        <translation>Es wurde nichts geschrieben: %1</translation>
+    </message>
+    <message>
+        <source>A download is on its way already.</source>
+        <translation>Ein Download läuft bereits.</translation>
+    </message>
+    <message>
+        <source>Nothing was written: no drive is connected.</source>
+        <translation>Es wurde nichts geschrieben: kein Umrichter verbunden.</translation>
+    </message>
+    <message>
+        <source>Download finished; the values are read again.</source>
+        <translation>Download beendet; die Werte werden neu gelesen.</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::DownloadRun</name>
+    <message>
+        <source>writing %1 of %2</source>
+        <translation>schreibe %1 von %2</translation>
+    </message>
+    <message>
+        <source>no drive is connected; nothing was written</source>
+        <translation>kein Umrichter verbunden; es wurde nichts geschrieben</translation>
+    </message>
+    <message>
+        <source>stopped before anything was written</source>
+        <translation>angehalten, bevor etwas geschrieben wurde</translation>
+    </message>
+    <message>
+        <source>no answer</source>
+        <translation>keine Antwort</translation>
+    </message>
+    <message>
+        <source>the drive could not be read (%1); nothing was written</source>
+        <translation>der Umrichter konnte nicht gelesen werden (%1); es wurde nichts geschrieben</translation>
+    </message>
+    <message>
+        <source>the drive is no longer connected; nothing was written</source>
+        <translation>der Umrichter ist nicht mehr verbunden; es wurde nichts geschrieben</translation>
+    </message>
+    <message>
+        <source>stopped by the user</source>
+        <translation>vom Benutzer abgebrochen</translation>
     </message>
 </context>
 <context>

@@ -595,10 +595,6 @@
         </translation>
     </message>
     <message>
-        <source>the drive could not be read (%1); nothing was written</source>
-        <translation>the drive could not be read (%1); nothing was written</translation>
-    </message>
-    <message>
         <source>warning: %1</source>
         <translation>warning: %1</translation>
     </message>
@@ -645,14 +641,6 @@
             <numerusform>%n read-only value of the file differs from the drive&apos;s; it is never written</numerusform>
             <numerusform>%n read-only values of the file differ from the drive&apos;s; they are never written</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>writing %1 of %2</source>
-        <translation>writing %1 of %2</translation>
-    </message>
-    <message>
-        <source>stopped by the user</source>
-        <translation>stopped by the user</translation>
     </message>
     <message>
         <source>the download did not write everything; the report says what the drive holds</source>
@@ -1035,6 +1023,206 @@
     <message>
         <source> (sets %1)</source>
         <translation> (sets %1)</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::DownloadDialog</name>
+    <message>
+        <source>Download to the Drive</source>
+        <translation>Download to the Drive</translation>
+    </message>
+    <message>
+        <source>Writes the values of %1 to the drive, each read back.</source>
+        <translation>Writes the values of %1 to the drive, each read back.</translation>
+    </message>
+    <message>
+        <source>&amp;Write all the same (the checks above are overruled)</source>
+        <translation>&amp;Write all the same (the checks above are overruled)</translation>
+    </message>
+    <message>
+        <source>Sets to write:</source>
+        <translation>Sets to write:</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Sets</source>
+        <translation>Sets</translation>
+    </message>
+    <message>
+        <source>Drive now</source>
+        <translation>Drive now</translation>
+    </message>
+    <message>
+        <source>To write</source>
+        <translation>To write</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>Note</translation>
+    </message>
+    <message>
+        <source>Write</source>
+        <translation>Write</translation>
+    </message>
+    <message>
+        <source>Reading the drive&apos;s values to compare them with the file...</source>
+        <translation>Reading the drive&apos;s values to compare them with the file...</translation>
+    </message>
+    <message>
+        <source>Writing to the drive: %1</source>
+        <translation>Writing to the drive: %1</translation>
+    </message>
+    <message>
+        <source>always written</source>
+        <translation>always written</translation>
+    </message>
+    <message>
+        <source>left: %1</source>
+        <translation>left: %1</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;The file does not fit the drive:&lt;/b&gt;&lt;ul&gt;%1&lt;/ul&gt;</source>
+        <translation>&lt;b&gt;The file does not fit the drive:&lt;/b&gt;&lt;ul&gt;%1&lt;/ul&gt;</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) to write</source>
+        <translation>
+            <numerusform>%n value to write</numerusform>
+            <numerusform>%n values to write</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n unchanged</source>
+        <translation>
+            <numerusform>%n unchanged</numerusform>
+            <numerusform>%n unchanged</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n left</source>
+        <translation>
+            <numerusform>%n left</numerusform>
+            <numerusform>%n left</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n read-only value(s) differ and are never written</source>
+        <translation>
+            <numerusform>%n read-only value differs and is never written</numerusform>
+            <numerusform>%n read-only values differ and are never written</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Nothing will be written unless you overrule the checks.</source>
+        <translation>Nothing will be written unless you overrule the checks.</translation>
+    </message>
+    <message>
+        <source>Look at what will be written, then write it.</source>
+        <translation>Look at what will be written, then write it.</translation>
+    </message>
+    <message>
+        <source>The drive holds the file&apos;s values already.</source>
+        <translation>The drive holds the file&apos;s values already.</translation>
+    </message>
+    <message numerus="yes">
+        <source>&amp;Write %n Value(s)</source>
+        <translation>
+            <numerusform>&amp;Write %n Value</numerusform>
+            <numerusform>&amp;Write %n Values</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&amp;Stop</source>
+        <translation>&amp;Stop</translation>
+    </message>
+    <message>
+        <source>Writing to the drive...</source>
+        <translation>Writing to the drive...</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>&amp;Close</translation>
+    </message>
+    <message>
+        <source>Download finished: everything to write was written and read back.</source>
+        <translation>Download finished: everything to write was written and read back.</translation>
+    </message>
+    <message>
+        <source>The download did not write everything. The report says what the drive holds.</source>
+        <translation>The download did not write everything. The report says what the drive holds.</translation>
+    </message>
+    <message>
+        <source>Stopping after the value on its way...</source>
+        <translation>Stopping after the value on its way...</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::DownloadFeature</name>
+    <message>
+        <source>&amp;Download File to Drive...</source>
+        <translation>&amp;Download File to Drive...</translation>
+    </message>
+    <message>
+        <source>Write a parameter file&apos;s values to the drive, after a last look at what differs</source>
+        <translation>Write a parameter file&apos;s values to the drive, after a last look at what differs</translation>
+    </message>
+    <message>
+        <source>Download File to Drive</source>
+        <translation>Download File to Drive</translation>
+    </message>
+    <message>
+        <source>Nothing was written: %1</source>
+        <translation>Nothing was written: %1</translation>
+    </message>
+    <message>
+        <source>A download is on its way already.</source>
+        <translation>A download is on its way already.</translation>
+    </message>
+    <message>
+        <source>Nothing was written: no drive is connected.</source>
+        <translation>Nothing was written: no drive is connected.</translation>
+    </message>
+    <message>
+        <source>Download finished; the values are read again.</source>
+        <translation>Download finished; the values are read again.</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::DownloadRun</name>
+    <message>
+        <source>writing %1 of %2</source>
+        <translation>writing %1 of %2</translation>
+    </message>
+    <message>
+        <source>no drive is connected; nothing was written</source>
+        <translation>no drive is connected; nothing was written</translation>
+    </message>
+    <message>
+        <source>stopped before anything was written</source>
+        <translation>stopped before anything was written</translation>
+    </message>
+    <message>
+        <source>no answer</source>
+        <translation>no answer</translation>
+    </message>
+    <message>
+        <source>the drive could not be read (%1); nothing was written</source>
+        <translation>the drive could not be read (%1); nothing was written</translation>
+    </message>
+    <message>
+        <source>the drive is no longer connected; nothing was written</source>
+        <translation>the drive is no longer connected; nothing was written</translation>
+    </message>
+    <message>
+        <source>stopped by the user</source>
+        <translation>stopped by the user</translation>
     </message>
 </context>
 <context>

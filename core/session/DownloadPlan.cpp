@@ -256,9 +256,9 @@ int DownloadPlan::valueCount() const
     return count;
 }
 
-QString DownloadPlan::text(const DriveDescription &drive) const
+QList<DownloadPlan::Line> DownloadPlan::lines(const DriveDescription &drive) const
 {
-    QString text;
+    QList<Line> lines;
     for (const DownloadItem &item : items) {
         const ParameterDescription *parameter = drive.find(item.change.address);
         if (!parameter)
@@ -273,15 +273,26 @@ QString DownloadPlan::text(const DriveDescription &drive) const
                 held << (before ? format.text(*before) : tr("not read"));
             }
             held.removeDuplicates();
-            const QString where = item.change.setProgrammable ? SetList::text(step.setMask)
-                                                              : QString();
-            text += tr("%1  %2%3: %4 -> %5%6\n")
-                        .arg(item.id, item.name,
-                             where.isEmpty() ? where : QStringLiteral(", ") + where,
-                             held.join(QStringLiteral(" / ")),
-                             format.text(step.raw),
-                             item.always ? tr("  (always written)") : QString());
+            lines << Line{item.id,
+                          item.name,
+                          item.change.setProgrammable ? SetList::text(step.setMask) : QString(),
+                          held.join(QStringLiteral(" / ")),
+                          format.text(step.raw),
+                          item.always};
         }
+    }
+    return lines;
+}
+
+QString DownloadPlan::text(const DriveDescription &drive) const
+{
+    QString text;
+    for (const Line &line : lines(drive)) {
+        text += tr("%1  %2%3: %4 -> %5%6\n")
+                    .arg(line.id, line.name,
+                         line.sets.isEmpty() ? line.sets : QStringLiteral(", ") + line.sets,
+                         line.now, line.then,
+                         line.always ? tr("  (always written)") : QString());
     }
     return text;
 }

@@ -60,9 +60,21 @@ public:
     int unchanged = 0; // values (parameter and set) the drive already holds
     int readOnlyDiffering = 0; // read-only values that differ: never written, not listed
 
+    // One value (or several sets taking one value) to write, in display form.
+    struct Line
+    {
+        QString id;
+        QString name;
+        QString sets;  // "sets 0, 2", empty for a parameter that holds one value
+        QString now;   // what the drive holds ("not read" for a write-only value)
+        QString then;  // what the file holds
+        bool always = false;
+    };
+
     bool isRefused() const { return !problems.isEmpty() && !forced; }
     int valueCount() const; // values the items write
     // For --dry-run and the window's last look: every value to write, drive's and file's.
+    QList<Line> lines(const DriveDescription &drive) const;
     QString text(const DriveDescription &drive) const;
 };
 

@@ -35,6 +35,10 @@ void DownloadRun::start(MetadataSource metadata)
 {
     if (m_stage != Stage::Idle)
         return;
+    if (!m_client) {
+        m_stage = Stage::Done;
+        return emit failed(tr("no drive is connected; nothing was written"));
+    }
     m_stage = Stage::Reading;
     ScanOptions options;
     options.values = true;
@@ -73,6 +77,10 @@ void DownloadRun::write()
 {
     if (m_stage != Stage::Planned || m_plan.isRefused())
         return;
+    if (!m_client) {
+        m_stage = Stage::Done;
+        return emit failed(tr("the drive is no longer connected; nothing was written"));
+    }
     m_stage = Stage::Writing;
     QList<ValueChange> changes;
     for (const DownloadItem &item : std::as_const(m_plan.items))
@@ -84,7 +92,7 @@ void DownloadRun::write()
 void DownloadRun::stop()
 {
     m_stopped = true;
-    if (m_stage == Stage::Reading)
+    if (m_stage == Stage::Reading && m_client)
         m_client->stopScan();
     else if (m_stage == Stage::Writing && m_job)
         m_job->requestStop();

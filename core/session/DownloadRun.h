@@ -6,6 +6,7 @@
 
 #include <QFutureWatcher>
 #include <QObject>
+#include <QPointer>
 
 #include <memory>
 
@@ -55,7 +56,7 @@ private:
     void onRead();
     void onWritten();
 
-    DriveClient *const m_client;
+    const QPointer<DriveClient> m_client; // gone with its session: the run then ends
     const Protocol m_protocol;
     const DriveDescription m_file;
     DownloadOptions m_options;

@@ -80,6 +80,8 @@ public:
     bool isReady() const override;
     ParameterEditing *editing() const override;
     void showMessage(const QString &text) override;
+    void chooseParameterFile(const QString &title,
+                             std::function<void(const QString &path)> chosen) override;
     void updateActions() override;
 
 signals:

@@ -236,6 +236,18 @@ QFileDialog *MainWindow::fileDialog(const QString &title, const QString &name)
     return dialog;
 }
 
+void MainWindow::chooseParameterFile(const QString &title,
+                                     std::function<void(const QString &path)> chosen)
+{
+    QFileDialog *dialog = fileDialog(title);
+    connect(dialog, &QFileDialog::fileSelected, this,
+            [chosen = std::move(chosen)](const QString &path) {
+                rememberDirectory(path);
+                chosen(path);
+            });
+    openDialog(dialog);
+}
+
 void MainWindow::chooseFileToOpen()
 {
     QFileDialog *dialog = fileDialog(tr("Open Parameter File"));

@@ -2,6 +2,8 @@
 
 #include <QObject>
 
+#include <functional>
+
 class QAction;
 class QDockWidget;
 class QMenu;
@@ -44,6 +46,10 @@ public:
     virtual ParameterEditing *editing() const = 0;
 
     virtual void showMessage(const QString &text) = 0;
+    // Asks for a parameter file to read, in a dialog that does not block; `chosen` runs with
+    // its path once the user picked one.
+    virtual void chooseParameterFile(const QString &title,
+                                     std::function<void(const QString &path)> chosen) = 0;
     // Something an action depends on changed: every feature's actions enable as they apply.
     virtual void updateActions() = 0;
 };

@@ -4,6 +4,7 @@
 #include "edit/EditingFeature.h"
 #include "edit/PollingFeature.h"
 #include "monitor/MonitorFeature.h"
+#include "transfer/DownloadFeature.h"
 
 namespace DriveDesk {
 
@@ -14,6 +15,7 @@ QList<WindowFeature *> makeWindowFeatures(WindowFrame &frame)
         new EditingFeature(frame),
         new AccessFeature(frame),
         new MonitorFeature(frame),
+        new DownloadFeature(frame),
     };
 }
 

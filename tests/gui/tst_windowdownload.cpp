@@ -1,0 +1,213 @@
+#include "tst_mainwindow_support.h"
+
+#include "parameters/ParameterDocument.h"
+#include "transfer/DownloadDialog.h"
+#include "transfer/DownloadFeature.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QFile>
+#include <QLabel>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QStatusBar>
+#include <QTreeWidget>
+
+#include <memory>
+
+using namespace DriveDesk;
+using namespace DriveDesk::MainWindowTest;
+
+namespace {
+
+constexpr quint16 kSoftwareVersion = 0x0E06; // In.06
+
+void setValue(DriveDescription &drive, quint16 address, int set, qint32 raw)
+{
+    for (GroupDescription &group : drive.groups) {
+        for (ParameterDescription &parameter : group.parameters) {
+            if (parameter.address == address)
+                parameter.values[std::size_t(set)] = raw;
+        }
+    }
+}
+
+} // namespace
+
+// A parameter file downloaded to the drive from the window: the last look, the checks, the
+// sets chosen, the writing and the report, and the table reading the drive again.
+class TestWindowDownload : public QObject
+{
+    Q_OBJECT
+private:
+    IsolatedSettings m_settings;
+    QTemporaryDir m_dir;
+    std::unique_ptr<MainWindow> m_window;
+
+    DownloadFeature *feature() const { return m_window->findChild<DownloadFeature *>(); }
+    DownloadDialog *dialog() const { return feature()->dialog(); }
+    template<typename T>
+    T *part(const char *name) const
+    {
+        return dialog() ? dialog()->findChild<T *>(QString::fromLatin1(name)) : nullptr;
+    }
+    std::optional<qint32> onDrive(quint16 address, int set) const
+    {
+        return driveValue(m_window->session()->client(), address, set);
+    }
+
+    // The drive's parameter list as the window saves it, changed by `edit`, in a file.
+    template<typename Edit>
+    QString fileWith(const QString &name, Edit edit)
+    {
+        const QString path = m_dir.filePath(name);
+        if (!m_window->saveDriveToFile(path))
+            return {};
+        std::optional<DriveDescription> file = ParameterDocument::load(path);
+        if (!file)
+            return {};
+        edit(*file);
+        return ParameterDocument::save(path, *file) ? path : QString();
+    }
+
+    // The rows of the last look: "op.20|set 3|100 1/min|777 1/min".
+    QStringList rows() const
+    {
+        QStringList rows;
+        auto *list = part<QTreeWidget>("downloadList");
+        for (int i = 0; list && i < list->topLevelItemCount(); ++i) {
+            const QTreeWidgetItem *item = list->topLevelItem(i);
+            rows << QStringList{ item->text(0), item->text(2), item->text(3), item->text(4),
+                                 item->text(5) }
+                        .join(QLatin1Char('|'));
+        }
+        return rows;
+    }
+
+    bool planned() const
+    {
+        return QTest::qWaitFor(
+            [this] { return dialog() && dialog()->run()->stage() == DownloadRun::Stage::Planned; },
+            kWaitMs);
+    }
+
+    bool writeAndFinish()
+    {
+        auto *write = part<QPushButton>("downloadWrite");
+        if (!write || !write->isEnabled())
+            return false;
+        write->click();
+        return QTest::qWaitFor(
+            [this] { return dialog()->run()->stage() == DownloadRun::Stage::Done; }, kWaitMs);
+    }
+
+private slots:
+    void init()
+    {
+        m_settings.clear();
+        m_window = std::make_unique<MainWindow>();
+        m_window->resize(1300, 800);
+        m_window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+        QVERIFY(connectAndRead(*m_window, simulated()));
+    }
+
+    void cleanup() { m_window.reset(); }
+
+    void aFileIsWrittenAfterALastLook()
+    {
+        const QString file = fileWith(QStringLiteral("changed.json"), [](DriveDescription &d) {
+            setValue(d, kFixedSpeed1, 3, 777);
+            setValue(d, kDemoPeriod, 0, 300);
+        });
+        QVERIFY(!file.isEmpty());
+        auto *action = m_window->findChild<QAction *>(QStringLiteral("downloadAction"));
+        QVERIFY(action->isEnabled());
+        feature()->downloadFile(file);
+        QVERIFY(planned());
+        QVERIFY(!action->isEnabled()); // one download at a time
+        const QStringList shown = rows();
+        QVERIFY2(shown.contains(QStringLiteral("op.20|set 3|100 1/min|777 1/min|")), qPrintable(shown.join(QLatin1Char('\n'))));
+        QVERIFY2(shown.contains(QStringLiteral("op.05||20.0 s|30.0 s|")), qPrintable(shown.join(QLatin1Char('\n'))));
+        QVERIFY(shown.contains(QStringLiteral("Fr.09||0|0|always written")));
+        QVERIFY(!part<QLabel>("downloadProblems")->isVisible());
+        QVERIFY(part<QPushButton>("downloadWrite")->text().startsWith(QStringLiteral("&Write 4 Value")));
+        QCOMPARE(onDrive(kFixedSpeed1, 3), 100); // nothing written before the click
+
+        QVERIFY(writeAndFinish());
+        QCOMPARE(onDrive(kFixedSpeed1, 3), 777);
+        QCOMPARE(onDrive(kDemoPeriod, 0), 300);
+        const QString report = part<QPlainTextEdit>("downloadReport")->toPlainText();
+        QVERIFY2(report.contains(QStringLiteral("op.20  Fixed speed 1: set 3: 777 1/min")), qPrintable(report));
+        QVERIFY(part<QLabel>("downloadStatus")->text().contains(QStringLiteral("everything to write was written")));
+        // The table reads the drive again.
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->model()->value(kFixedSpeed1, 3), 777, kWaitMs);
+        dialog()->reject();
+        QTRY_VERIFY(!dialog());
+        QTRY_VERIFY(action->isEnabled());
+    }
+
+    void aFileOfAnotherDriveNeedsTheChecksOverruled()
+    {
+        const QString file = fileWith(QStringLiteral("other.json"), [](DriveDescription &d) {
+            setValue(d, kSoftwareVersion, 0, 170);
+            setValue(d, kFixedSpeed1, 1, 555);
+        });
+        feature()->downloadFile(file);
+        QVERIFY(planned());
+        auto *problems = part<QLabel>("downloadProblems");
+        QVERIFY(problems->isVisible());
+        QVERIFY2(problems->text().contains(QStringLiteral("In.06 Software version is 1.70 in the file, 1.82 on the drive")),
+                 qPrintable(problems->text()));
+        QVERIFY(!part<QPushButton>("downloadWrite")->isEnabled());
+        part<QCheckBox>("downloadForce")->setChecked(true);
+        QVERIFY(writeAndFinish());
+        QCOMPARE(onDrive(kFixedSpeed1, 1), 555);
+    }
+
+    void theSetsChosenLimitTheWrite()
+    {
+        const QString file = fileWith(QStringLiteral("sets.json"), [](DriveDescription &d) {
+            setValue(d, kFixedSpeed1, 1, 555);
+            setValue(d, kFixedSpeed1, 2, 556);
+        });
+        feature()->downloadFile(file);
+        QVERIFY(planned());
+        part<QCheckBox>("downloadSet2")->setChecked(false);
+        const QStringList shown = rows();
+        QVERIFY(shown.contains(QStringLiteral("op.20|set 1|100 1/min|555 1/min|")));
+        QVERIFY(!shown.join(QLatin1Char('\n')).contains(QStringLiteral("556")));
+        QVERIFY(writeAndFinish());
+        QCOMPARE(onDrive(kFixedSpeed1, 1), 555);
+        QCOMPARE(onDrive(kFixedSpeed1, 2), 100);
+    }
+
+    void closingBeforeTheWriteWritesNothing()
+    {
+        const QString file = fileWith(QStringLiteral("closed.json"), [](DriveDescription &d) {
+            setValue(d, kFixedSpeed1, 4, 444);
+        });
+        feature()->downloadFile(file);
+        QVERIFY(planned());
+        dialog()->reject();
+        QTRY_VERIFY(!dialog());
+        QCOMPARE(onDrive(kFixedSpeed1, 4), 100);
+    }
+
+    void aCorruptFileIsNamedAndNothingStarts()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("broken.json"));
+        QFile broken(path);
+        QVERIFY(broken.open(QIODevice::WriteOnly));
+        broken.write("{\n  \"format\": \"drivedesk-parameters\",\n  \"version\": 1,\n  \"groups\": [\n");
+        broken.close();
+        feature()->downloadFile(path);
+        QVERIFY(!dialog());
+        const QString message = m_window->statusBar()->currentMessage();
+        QVERIFY2(message.contains(QStringLiteral("broken.json")) && message.contains(QStringLiteral("line")),
+                 qPrintable(message));
+    }
+};
+
+QTEST_MAIN(TestWindowDownload)
+#include "tst_windowdownload.moc"
