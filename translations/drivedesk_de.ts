@@ -3138,6 +3138,10 @@ Verbindungsdialog.
         <source>version: %1 is not supported (this DriveDesk reads version %2)</source>
         <translation>version: %1 wird nicht unterstützt (dieses DriveDesk liest Version %2)</translation>
     </message>
+    <message>
+        <source>version: %1 is a newer format than this DriveDesk reads (version %2); a newer DriveDesk reads it</source>
+        <translation>version: %1 ist ein neueres Format, als dieses DriveDesk liest (Version %2); ein neueres DriveDesk liest es</translation>
+    </message>
 </context>
 <context>
     <name>ParameterFormat</name>

@@ -3138,6 +3138,10 @@ dialog.
         <source>version: %1 is not supported (this DriveDesk reads version %2)</source>
         <translation>version: %1 is not supported (this DriveDesk reads version %2)</translation>
     </message>
+    <message>
+        <source>version: %1 is a newer format than this DriveDesk reads (version %2); a newer DriveDesk reads it</source>
+        <translation>version: %1 is a newer format than this DriveDesk reads (version %2); a newer DriveDesk reads it</translation>
+    </message>
 </context>
 <context>
     <name>ParameterFormat</name>

@@ -312,6 +312,12 @@ std::optional<DriveDescription> ParameterDocument::fromJson(const QByteArray &js
     const QJsonValue version = root.value(QStringLiteral("version"));
     if (!version.isDouble())
         return fail(ParameterDocument::tr("version: missing or not a number"));
+    if (version.toDouble() > kVersion) {
+        return fail(ParameterDocument::tr("version: %1 is a newer format than this DriveDesk "
+                                          "reads (version %2); a newer DriveDesk reads it")
+                        .arg(version.toDouble())
+                        .arg(kVersion));
+    }
     if (version.toDouble() != kVersion) {
         return fail(
             ParameterDocument::tr("version: %1 is not supported (this DriveDesk reads version %2)")

@@ -141,6 +141,48 @@ private slots:
                  qPrintable(run.out));
     }
 
+    // A file that is not a whole, valid parameter file is refused before the drive is asked
+    // anything, and the drive keeps its values.
+    void aCorruptFileChangesNothing_data()
+    {
+        QTest::addColumn<QByteArray>("change");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("truncated") << QByteArray("truncate") << QStringLiteral("line");
+        QTest::newRow("wrong type") << QByteArray("\"min\": 0,") << QStringLiteral("expected an integer");
+        QTest::newRow("newer version") << QByteArray("\"version\": 1") << QStringLiteral("newer format");
+        QTest::newRow("duplicate parameter") << QByteArray("duplicate") << QStringLiteral("twice");
+    }
+
+    void aCorruptFileChangesNothing()
+    {
+        QFETCH(QByteArray, change);
+        QFETCH(QString, message);
+        QVERIFY(editFile(m_file, QStringLiteral("op.11"), 6, 2000)); // what a download would write
+        QFile file(m_file);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QByteArray bytes = file.readAll();
+        file.close();
+        if (change == "truncate") {
+            bytes.truncate(bytes.size() / 2);
+        } else if (change == "duplicate") {
+            const qsizetype start = bytes.indexOf("{", bytes.indexOf("\"parameters\": ["));
+            const qsizetype end = bytes.indexOf("\n                },", start) + 19;
+            bytes.insert(start, bytes.mid(start, end - start));
+        } else if (change.startsWith("\"min")) {
+            const qsizetype at = bytes.indexOf(change);
+            bytes.replace(at, change.size(), "\"min\": \"zero\",");
+        } else {
+            bytes.replace(change, "\"version\": 2");
+        }
+        QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        file.write(bytes);
+        file.close();
+        const Run run = drive({QStringLiteral("download"), m_file});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(m_file) && run.err.contains(message), qPrintable(run.err));
+        QVERIFY(readSet(QStringLiteral("op.11"), 6).contains(QStringLiteral("3000 1/min")));
+    }
+
     void argumentsAreChecked_data()
     {
         QTest::addColumn<QStringList>("arguments");

@@ -214,7 +214,10 @@ private slots:
                               "missing or not a string, expected "
                               "'drivedesk-parameters'");
         QTest::newRow("version 2") << sampleWith({ QStringLiteral("version") }, 2)
-                                   << QStringLiteral("version: 2 is not supported (this DriveDesk "
+                                   << QStringLiteral("version: 2 is a newer format than this "
+                                                     "DriveDesk reads (version 1)");
+        QTest::newRow("version 0") << sampleWith({ QStringLiteral("version") }, 0)
+                                   << QStringLiteral("version: 0 is not supported (this DriveDesk "
                                                      "reads version 1)");
         QTest::newRow("version text")
             << sampleWith({ QStringLiteral("version") }, QStringLiteral("1"))
