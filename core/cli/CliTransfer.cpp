@@ -122,7 +122,9 @@ void CliRunner::runDownload()
                               "the drive holds"));
         done();
     });
-    m_download->start(m_request.useCache ? MetadataSource::Cache : MetadataSource::RefreshCache);
+    ScanOptions reading;
+    reading.metadata = m_request.useCache ? MetadataSource::Cache : MetadataSource::RefreshCache;
+    m_download->start(reading);
 }
 
 } // namespace DriveDesk

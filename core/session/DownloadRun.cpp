@@ -31,7 +31,7 @@ DownloadRun::~DownloadRun()
         m_job->requestStop();
 }
 
-void DownloadRun::start(MetadataSource metadata)
+void DownloadRun::start(ScanOptions reading)
 {
     if (m_stage != Stage::Idle)
         return;
@@ -40,10 +40,9 @@ void DownloadRun::start(MetadataSource metadata)
         return emit failed(tr("no drive is connected; nothing was written"));
     }
     m_stage = Stage::Reading;
-    ScanOptions options;
-    options.values = true;
-    options.metadata = metadata;
-    m_reading.setFuture(m_client->scan(options));
+    reading.values = true;
+    reading.parameterList = false; // the password level and every value, to plan against
+    m_reading.setFuture(m_client->scan(reading));
 }
 
 void DownloadRun::onRead()

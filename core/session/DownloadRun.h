@@ -30,8 +30,9 @@ public:
                 QObject *parent = nullptr);
     ~DownloadRun() override;
 
-    // How the drive is read: the values of every set; metadata as `metadata` says.
-    void start(MetadataSource metadata = MetadataSource::Cache);
+    // Reads the drive as `reading` says (where its metadata comes from), with the values of
+    // every set, then plans.
+    void start(ScanOptions reading = {});
     // Plans again with other options (sets chosen, forced) against the values read.
     void setOptions(const DownloadOptions &options);
     // Writes the plan. Refused (and ignored) for a plan the checks refused unless forced.

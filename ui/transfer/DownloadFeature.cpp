@@ -91,7 +91,9 @@ void DownloadFeature::download(const DriveDescription &file, const DownloadOptio
     connect(m_dialog, &QDialog::finished, this, [this] { frame().updateActions(); });
     m_dialog->setAttribute(Qt::WA_DeleteOnClose);
     m_dialog->show();
-    run->start();
+    ScanOptions reading;
+    reading.metadata = MetadataSource::Cache; // what the window read a moment ago, as a rule
+    run->start(reading);
     frame().updateActions();
 }
 

@@ -1,0 +1,194 @@
+// Backing a drive up and downloading a file back, over a paced link: what a user waits for.
+// Per protocol and baud rate, on the simulated F5 whose metadata a first (cold) scan put into a
+// temporary cache: the upload (every value of the parameter list), then a download of that file
+// with kChanged values changed, split into reading the drive afresh and writing with read-back.
+// The user's cache is never read or written.
+#include "bus/LinkFactory.h"
+#include "client/ClientTiming.h"
+#include "client/DriveClient.h"
+#include "parameters/ParameterList.h"
+#include "session/DownloadRun.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QFutureWatcher>
+#include <QTemporaryDir>
+#include <QTimer>
+
+#include <cstdio>
+#include <memory>
+
+using namespace DriveDesk;
+
+namespace {
+
+constexpr int kLatencyUs = 1000;
+constexpr int kChanged = 40; // values the download writes (op and dr sets)
+
+struct Case {
+    Protocol protocol;
+    qint32 baud;
+};
+
+struct Traffic {
+    qint64 requests = 0;
+    qint64 sent = 0;
+    qint64 received = 0;
+};
+
+// The file to download: the upload with kChanged set values of op and dr one step away.
+DriveDescription changed(DriveDescription file)
+{
+    int left = kChanged;
+    for (GroupDescription &group : file.groups) {
+        if (group.id != QLatin1String("op") && group.id != QLatin1String("dr"))
+            continue;
+        for (ParameterDescription &p : group.parameters) {
+            if (!p.isSetProgrammable() || !ParameterList::isWrittenByDownload(p))
+                continue;
+            for (int set = 0; set < kParameterSets && left > 0; set += 2, --left) {
+                std::optional<qint32> &value = p.values[std::size_t(set)];
+                if (value)
+                    value = *value > p.minimum ? *value - 1 : *value + 1;
+            }
+        }
+    }
+    return file;
+}
+
+class TransferBenchmark : public QObject
+{
+public:
+    explicit TransferBenchmark(QList<Case> cases)
+        : m_cases(std::move(cases))
+    {}
+
+    void next()
+    {
+        if (m_index >= m_cases.size())
+            return QCoreApplication::quit();
+        m_case = m_cases[m_index++];
+        m_cache = std::make_unique<QTemporaryDir>();
+        m_settings = ConnectionSettings{};
+        m_settings.kind = ConnectionSettings::Kind::Simulated;
+        m_settings.protocol = m_case.protocol;
+        m_settings.baudRate = m_case.baud;
+        m_settings.simulation.baudRate = m_case.baud;
+        m_settings.simulation.paced = true;
+        m_settings.simulation.replyLatencyUs = kLatencyUs;
+        m_client = std::make_unique<DriveClient>(m_settings, everyLink());
+        connect(m_client.get(), &DriveClient::traffic, this, [this](const TrafficRecord &record) {
+            if (record.kind == TrafficRecord::Kind::Sent) {
+                m_traffic.sent += record.bytes.size();
+                ++m_traffic.requests;
+            } else if (record.kind == TrafficRecord::Kind::Received) {
+                m_traffic.received += record.bytes.size();
+            }
+        });
+        connect(m_client.get(), &DriveClient::connectionFailed, this, [](const QString &reason) {
+            std::fprintf(stderr, "cannot connect: %s\n", qPrintable(reason));
+            QCoreApplication::exit(1);
+        });
+        connect(m_client.get(), &DriveClient::connected, this, [this] {
+            scan(MetadataSource::RefreshCache, false, [this](const DriveDescription &) {
+                m_timer.start();
+                m_traffic = {};
+                scan(MetadataSource::Cache, true, [this](const DriveDescription &file) {
+                    print("upload", file.parameterCount());
+                    download(changed(file));
+                });
+            });
+        });
+        m_client->connectToDrive();
+    }
+
+private:
+    template<typename Next>
+    void scan(MetadataSource metadata, bool parameterList, Next next)
+    {
+        auto *watcher = new QFutureWatcher<DriveDescription>(this);
+        connect(watcher, &QFutureWatcher<DriveDescription>::finished, this, [watcher, next] {
+            const DriveDescription description = watcher->future().result();
+            watcher->deleteLater();
+            if (!description.incompleteReason.isEmpty())
+                std::printf("  INCOMPLETE: %s\n", qPrintable(description.incompleteReason));
+            next(description);
+        });
+        ScanOptions options;
+        options.metadata = metadata;
+        options.cacheDirectory = m_cache->path();
+        options.parameterList = parameterList;
+        watcher->setFuture(m_client->scan(options));
+    }
+
+    void download(const DriveDescription &file)
+    {
+        auto *run = new DownloadRun(m_client.get(), m_case.protocol, file, this);
+        m_timer.start();
+        m_traffic = {};
+        connect(run, &DownloadRun::planned, this, [this, run](const DownloadPlan &plan) {
+            print("download: read", run->drive().parameterCount());
+            m_timer.start();
+            m_traffic = {};
+            m_values = plan.valueCount();
+            run->write();
+        });
+        connect(run, &DownloadRun::failed, this, [](const QString &reason) {
+            std::fprintf(stderr, "download failed: %s\n", qPrintable(reason));
+            QCoreApplication::exit(1);
+        });
+        connect(run, &DownloadRun::finished, this, [this, run](const DownloadReport &report) {
+            print("download: write", m_values);
+            if (!report.isComplete())
+                std::printf("  INCOMPLETE:\n%s", qPrintable(report.text()));
+            run->deleteLater();
+            m_client.reset();
+            QTimer::singleShot(0, this, [this] { next(); });
+        });
+        ScanOptions reading;
+        reading.metadata = MetadataSource::Cache;
+        reading.cacheDirectory = m_cache->path();
+        run->start(reading);
+    }
+
+    void print(const char *what, int count)
+    {
+        const double seconds = m_timer.nsecsElapsed() / 1e9;
+        const double bits = bitsPerCharacter(m_settings);
+        const qint64 lineBytes = m_case.protocol == Protocol::Hsp5
+            ? std::max(m_traffic.sent, m_traffic.received)
+            : m_traffic.sent + m_traffic.received;
+        double limit = lineBytes * bits / m_case.baud;
+        if (m_case.protocol != Protocol::Hsp5)
+            limit += m_traffic.requests * kLatencyUs / 1e6; // one request at a time
+        std::printf("%-11s %6d baud  %-16s %5d  %7.2f s  limit %6.2f s  ratio %.3f  "
+                    "(%lld requests, sent %lld B, received %lld B)\n",
+                    qPrintable(protocolName(m_case.protocol)), m_case.baud, what, count, seconds,
+                    limit, seconds / limit, m_traffic.requests, m_traffic.sent,
+                    m_traffic.received);
+        std::fflush(stdout);
+    }
+
+    QList<Case> m_cases;
+    qsizetype m_index = 0;
+    Case m_case{};
+    ConnectionSettings m_settings;
+    std::unique_ptr<QTemporaryDir> m_cache;
+    std::unique_ptr<DriveClient> m_client;
+    QElapsedTimer m_timer;
+    Traffic m_traffic;
+    int m_values = 0;
+};
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    std::printf("count: parameters read, or values written\n");
+    TransferBenchmark benchmark({ { Protocol::Hsp5, 38400 },
+                                  { Protocol::Hsp5, 115200 },
+                                  { Protocol::Din66019II, 38400 } });
+    QTimer::singleShot(0, &benchmark, [&benchmark] { benchmark.next(); });
+    return app.exec();
+}
