@@ -2,8 +2,11 @@
 
 #include "ParameterAccess.h"
 #include "ParameterFormat.h"
+#include "ParameterList.h"
 
 #include <QMap>
+
+#include <algorithm>
 
 namespace DriveDesk {
 
@@ -13,6 +16,7 @@ struct Located
 {
     const ParameterDescription *parameter = nullptr;
     QString id;
+    QString groupId;
 };
 
 QMap<quint16, Located> byAddress(const DriveDescription &drive)
@@ -21,7 +25,7 @@ QMap<quint16, Located> byAddress(const DriveDescription &drive)
     for (const GroupDescription &group : drive.groups) {
         for (const ParameterDescription &parameter : group.parameters)
             parameters.insert(parameter.address,
-                              { &parameter, parameterId(group.id, parameter.number()) });
+                              { &parameter, parameterId(group.id, parameter.number()), group.id });
     }
     return parameters;
 }
@@ -101,14 +105,19 @@ ParameterComparison compareDescriptions(const DriveDescription &a, const DriveDe
     return comparison;
 }
 
-ParameterComparison compareWithDefaults(const DriveDescription &drive, bool defaultsFirst)
+DriveDescription userSettingsOf(const DriveDescription &drive)
 {
     DriveDescription settings = drive;
     for (GroupDescription &group : settings.groups) {
         group.parameters.removeIf(
             [](const ParameterDescription &parameter) { return !isUserSetting(parameter); });
     }
-    DriveDescription defaults = settings;
+    return settings;
+}
+
+DriveDescription defaultsOf(const DriveDescription &drive)
+{
+    DriveDescription defaults = userSettingsOf(drive);
     for (GroupDescription &group : defaults.groups) {
         for (ParameterDescription &parameter : group.parameters) {
             parameter.values = {};
@@ -117,8 +126,117 @@ ParameterComparison compareWithDefaults(const DriveDescription &drive, bool defa
                 parameter.values[std::size_t(set)] = parameter.defaultValue;
         }
     }
+    return defaults;
+}
+
+ParameterComparison compareWithDefaults(const DriveDescription &drive, bool defaultsFirst)
+{
+    const DriveDescription settings = userSettingsOf(drive);
+    const DriveDescription defaults = defaultsOf(drive);
     return defaultsFirst ? compareDescriptions(defaults, settings)
                          : compareDescriptions(settings, defaults);
+}
+
+int ComparisonTable::count(ComparisonRow::State state) const
+{
+    return int(std::count_if(rows.cbegin(), rows.cend(),
+                             [state](const ComparisonRow &row) { return row.state == state; }));
+}
+
+QString ComparisonTable::stateText(ComparisonRow::State state)
+{
+    switch (state) {
+    case ComparisonRow::State::Equal:
+        return tr("equal");
+    case ComparisonRow::State::Different:
+        return tr("different");
+    case ComparisonRow::State::OnlyInA:
+        return tr("only in A");
+    case ComparisonRow::State::OnlyInB:
+        return tr("only in B");
+    case ComparisonRow::State::ReadOnly:
+        return tr("read-only");
+    }
+    return {};
+}
+
+namespace {
+
+// Both sides' parameters by address; `setA`/`setB` -1 for set by set.
+ComparisonTable compareRows(const DriveDescription &a, int setA, const DriveDescription &b,
+                            int setB)
+{
+    const bool setAgainstSet = setA >= 0;
+    ComparisonTable table;
+    const QMap<quint16, Located> left = byAddress(a);
+    const QMap<quint16, Located> right = byAddress(b);
+    QList<quint16> addresses = left.keys();
+    for (quint16 address : right.keys()) {
+        if (!left.contains(address))
+            addresses.append(address);
+    }
+    std::sort(addresses.begin(), addresses.end());
+
+    for (quint16 address : std::as_const(addresses)) {
+        const Located l = left.value(address);
+        const Located r = right.value(address);
+        const Located &named = l.parameter ? l : r;
+        const bool perSet = (l.parameter && l.parameter->isSetProgrammable())
+            || (r.parameter && r.parameter->isSetProgrammable());
+        if (setAgainstSet && !perSet)
+            continue;
+        ComparisonRow row;
+        row.address = address;
+        row.id = named.id;
+        row.name = named.parameter->name;
+        row.groupId = named.groupId;
+        row.perSet = perSet;
+        if (!l.parameter || !r.parameter) {
+            row.state = l.parameter ? ComparisonRow::State::OnlyInA
+                                    : ComparisonRow::State::OnlyInB;
+            row.differs = true;
+        } else if (!ParameterList::isWrittenByDownload(*l.parameter)
+                   || !ParameterList::isWrittenByDownload(*r.parameter)) {
+            row.state = ComparisonRow::State::ReadOnly;
+        }
+        const int rows = setAgainstSet ? 1 : (perSet ? kParameterSets : 1);
+        for (int set = 0; set < rows; ++set) {
+            ComparisonRow shownRow = row;
+            shownRow.setA = setAgainstSet ? setA : set;
+            shownRow.setB = setAgainstSet ? setB : set;
+            if (l.parameter) {
+                shownRow.rawA = valueOf(*l.parameter, shownRow.setA);
+                shownRow.a = shown(*l.parameter, shownRow.rawA);
+            }
+            if (r.parameter) {
+                shownRow.rawB = valueOf(*r.parameter, shownRow.setB);
+                shownRow.b = shown(*r.parameter, shownRow.rawB);
+            }
+            if (l.parameter && r.parameter) {
+                shownRow.differs = shownRow.rawA != shownRow.rawB;
+                if (row.state != ComparisonRow::State::ReadOnly) {
+                    shownRow.state = shownRow.differs ? ComparisonRow::State::Different
+                                                      : ComparisonRow::State::Equal;
+                }
+            }
+            table.rows.append(shownRow);
+        }
+    }
+    return table;
+}
+
+} // namespace
+
+ComparisonTable compareAll(const DriveDescription &a, const DriveDescription &b)
+{
+    return compareRows(a, -1, b, -1);
+}
+
+ComparisonTable compareSets(const DriveDescription &a, int setA, const DriveDescription &b,
+                            int setB)
+{
+    Q_ASSERT(setA >= 0 && setA < kParameterSets && setB >= 0 && setB < kParameterSets);
+    return compareRows(a, setA, b, setB);
 }
 
 } // namespace DriveDesk

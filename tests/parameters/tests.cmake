@@ -31,3 +31,8 @@ drivedesk_add_test(NAME tst_parametercomparison LABELS unit
 drivedesk_add_test(NAME tst_parametercsv LABELS unit
     SOURCES parameters/tst_parametercsv.cpp parameters/EditorSampleDrive.h
     LIBS drivedesk_parameters)
+# The compare view's comparison: every value of both sides with its state, and what writing the
+# chosen values puts into a file or hands a download.
+drivedesk_add_test(NAME tst_comparisontable LABELS unit
+    SOURCES parameters/tst_comparisontable.cpp parameters/EditorSampleDrive.h
+    LIBS drivedesk_parameters)
