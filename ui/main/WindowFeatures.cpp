@@ -1,5 +1,6 @@
 #include "WindowFeatures.h"
 
+#include "compare/CompareFeature.h"
 #include "edit/AccessFeature.h"
 #include "edit/EditingFeature.h"
 #include "edit/PollingFeature.h"
@@ -10,12 +11,21 @@ namespace DriveDesk {
 
 QList<WindowFeature *> makeWindowFeatures(WindowFrame &frame)
 {
+    auto *download = new DownloadFeature(frame);
+    auto *compare = new CompareFeature(frame);
+    // Values chosen in the compare view reach the drive through the download's checks, its last
+    // look and its report.
+    QObject::connect(compare, &CompareFeature::writeToDriveRequested, download,
+                     [download](const DriveDescription &selection) {
+                         download->downloadSelection(selection);
+                     });
     return {
         new PollingFeature(frame),
         new EditingFeature(frame),
         new AccessFeature(frame),
         new MonitorFeature(frame),
-        new DownloadFeature(frame),
+        download,
+        compare,
     };
 }
 

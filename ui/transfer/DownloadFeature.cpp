@@ -67,7 +67,8 @@ void DownloadFeature::downloadSelection(const DriveDescription &selection, const
 {
     DownloadOptions options;
     options.selection = true;
-    download(selection, options, source);
+    download(selection, options,
+             source.isEmpty() ? tr("the values chosen in the compare window") : source);
 }
 
 void DownloadFeature::download(const DriveDescription &file, const DownloadOptions &options,

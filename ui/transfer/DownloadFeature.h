@@ -26,7 +26,7 @@ public:
 
     // The file at `path`, or the values a compare view chose (DownloadOptions::selection).
     void downloadFile(const QString &path);
-    void downloadSelection(const DriveDescription &selection, const QString &source);
+    void downloadSelection(const DriveDescription &selection, const QString &source = {});
     DownloadDialog *dialog() const;
 
 private:
