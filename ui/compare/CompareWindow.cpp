@@ -470,9 +470,12 @@ void CompareWindow::updateWriteButtons()
         QPushButton *button = toA ? m_writeA : m_writeB;
         const std::optional<Side> &target = toA ? m_a : m_b;
         const int count = int(ChosenValues::from(chosen, toA).size());
-        const QString name = target ? target->name : (toA ? tr("A") : tr("B"));
-        button->setText(toA ? tr("Write %n Value(s) to A (%1)", nullptr, count).arg(name)
-                            : tr("Write %n Value(s) to B (%1)", nullptr, count).arg(name));
+        if (!target)
+            button->setText(toA ? tr("Write to A") : tr("Write to B"));
+        else if (toA)
+            button->setText(tr("Write %n Value(s) to A (%1)", nullptr, count).arg(target->name));
+        else
+            button->setText(tr("Write %n Value(s) to B (%1)", nullptr, count).arg(target->name));
         bool can = target && target->writable && count > 0;
         if (can && target->source == Source::Drive)
             can = m_host && m_host->canWriteToDrive();

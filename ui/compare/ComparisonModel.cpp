@@ -325,9 +325,9 @@ QVariant ComparisonModel::headerData(int section, Qt::Orientation orientation, i
     case SetColumn:
         return tr("Set");
     case AColumn:
-        return tr("A: %1").arg(m_nameA);
+        return m_nameA.isEmpty() ? tr("A") : tr("A: %1").arg(m_nameA);
     case BColumn:
-        return tr("B: %1").arg(m_nameB);
+        return m_nameB.isEmpty() ? tr("B") : tr("B: %1").arg(m_nameB);
     case StateColumn:
         return tr("State");
     }

@@ -76,8 +76,8 @@ private:
     std::vector<Group> m_groups;
     std::vector<QString> m_searchTexts; // per table row, lower-case
     std::vector<bool> m_chosen; // per table row
-    QString m_nameA = tr("A");
-    QString m_nameB = tr("B");
+    QString m_nameA; // empty until compared
+    QString m_nameB;
     bool m_raw = false;
 };
 
