@@ -69,6 +69,40 @@
     </message>
 </context>
 <context>
+    <name>ChosenValues</name>
+    <message>
+        <source>%1: the target has no such parameter</source>
+        <translation>%1: das Ziel hat diesen Parameter nicht</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>ComparisonTable</name>
+    <message>
+        <source>equal</source>
+        <translation>gleich</translation>
+    </message>
+    <message>
+        <source>different</source>
+        <translation>verschieden</translation>
+    </message>
+    <message>
+        <source>only in A</source>
+        <translation>nur in A</translation>
+    </message>
+    <message>
+        <source>only in B</source>
+        <translation>nur in B</translation>
+    </message>
+    <message>
+        <source>read-only</source>
+        <translation>schreibgeschützt</translation>
+    </message>
+</context>
+<context>
     <name>ConnectionOptions</name>
     <message>
         <source>--%1 %2: expected a number from %3 to %4</source>
@@ -792,6 +826,354 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::CompareFeature</name>
+    <message>
+        <source>Co&amp;mpare...</source>
+        <translation>&amp;Vergleichen …</translation>
+    </message>
+    <message>
+        <source>Compare the drive, parameter files and defaults, and write chosen values</source>
+        <translation>Umrichter, Parameterdateien und Vorgabewerte vergleichen und gewählte Werte schreiben</translation>
+    </message>
+    <message numerus="yes">
+        <source>Write %n compared value(s)</source>
+        <translation>
+            <numerusform>%n verglichenen Wert schreiben</numerusform>
+            <numerusform>%n verglichene Werte schreiben</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::CompareWindow</name>
+    <message>
+        <source>Compare Parameters - DriveDesk</source>
+        <translation>Parameter vergleichen - DriveDesk</translation>
+    </message>
+    <message>
+        <source>Compare one &amp;set of A with one set of B</source>
+        <translation>Einen &amp;Satz von A mit einem Satz von B vergleichen</translation>
+    </message>
+    <message>
+        <source>Only the set-programmable parameters, in the sets chosen on each side. Choose &quot;A itself&quot; for B to compare two sets of one drive or file.</source>
+        <translation>Nur die satzprogrammierbaren Parameter, in den auf jeder Seite gewählten Sätzen. Für B &quot;A selbst&quot; wählen, um zwei Sätze eines Umrichters oder einer Datei zu vergleichen.</translation>
+    </message>
+    <message>
+        <source>&amp;Compare</source>
+        <translation>&amp;Vergleichen</translation>
+    </message>
+    <message>
+        <source>C&amp;hoose Shown</source>
+        <translation>Angezeigte &amp;wählen</translation>
+    </message>
+    <message>
+        <source>Tick every row shown whose value can be written</source>
+        <translation>Jede angezeigte Zeile ankreuzen, deren Wert geschrieben werden kann</translation>
+    </message>
+    <message>
+        <source>C&amp;lear Choice</source>
+        <translation>Auswahl &amp;löschen</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Schließen</translation>
+    </message>
+    <message>
+        <source>Side &amp;A:</source>
+        <translation>Seite &amp;A:</translation>
+    </message>
+    <message>
+        <source>Side &amp;B:</source>
+        <translation>Seite &amp;B:</translation>
+    </message>
+    <message>
+        <source>The drive</source>
+        <translation>Der Umrichter</translation>
+    </message>
+    <message>
+        <source>The file shown in the window</source>
+        <translation>Die im Fenster angezeigte Datei</translation>
+    </message>
+    <message>
+        <source>A file</source>
+        <translation>Eine Datei</translation>
+    </message>
+    <message>
+        <source>Defaults of A</source>
+        <translation>Vorgabewerte von A</translation>
+    </message>
+    <message>
+        <source>A itself (another set)</source>
+        <translation>A selbst (ein anderer Satz)</translation>
+    </message>
+    <message>
+        <source>Parameter file (*.json)</source>
+        <translation>Parameterdatei (*.json)</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>Durchsuchen …</translation>
+    </message>
+    <message>
+        <source>Set:</source>
+        <translation>Satz:</translation>
+    </message>
+    <message>
+        <source>Show:</source>
+        <translation>Zeigen:</translation>
+    </message>
+    <message>
+        <source>All groups</source>
+        <translation>Alle Gruppen</translation>
+    </message>
+    <message>
+        <source>&amp;Group:</source>
+        <translation>&amp;Gruppe:</translation>
+    </message>
+    <message>
+        <source>Search id, name or value</source>
+        <translation>Kennung, Name oder Wert suchen</translation>
+    </message>
+    <message>
+        <source>Sea&amp;rch:</source>
+        <translation>Su&amp;chen:</translation>
+    </message>
+    <message>
+        <source>C&amp;hosen only</source>
+        <translation>Nur &amp;gewählte</translation>
+    </message>
+    <message>
+        <source>Show only the rows ticked to be written: a last look</source>
+        <translation>Nur die zum Schreiben angekreuzten Zeilen zeigen: ein letzter Blick</translation>
+    </message>
+    <message>
+        <source>Ra&amp;w values</source>
+        <translation>Ro&amp;hwerte</translation>
+    </message>
+    <message>
+        <source>Side A: Parameter File</source>
+        <translation>Seite A: Parameterdatei</translation>
+    </message>
+    <message>
+        <source>Side B: Parameter File</source>
+        <translation>Seite B: Parameterdatei</translation>
+    </message>
+    <message>
+        <source>DriveDesk parameter files (*.json)</source>
+        <translation>DriveDesk-Parameterdateien (*.json)</translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation>B</translation>
+    </message>
+    <message>
+        <source>Side %1: no drive is connected and read.</source>
+        <translation>Seite %1: kein Umrichter verbunden und gelesen.</translation>
+    </message>
+    <message>
+        <source>the drive</source>
+        <translation>der Umrichter</translation>
+    </message>
+    <message>
+        <source>Side %1: the window shows no parameter file.</source>
+        <translation>Seite %1: das Fenster zeigt keine Parameterdatei.</translation>
+    </message>
+    <message>
+        <source>%1 (shown)</source>
+        <translation>%1 (angezeigt)</translation>
+    </message>
+    <message>
+        <source>Side %1: choose a parameter file.</source>
+        <translation>Seite %1: eine Parameterdatei wählen.</translation>
+    </message>
+    <message>
+        <source>Side %1: could not read %2: %3</source>
+        <translation>Seite %1: %2 konnte nicht gelesen werden: %3</translation>
+    </message>
+    <message>
+        <source>defaults of %1</source>
+        <translation>Vorgabewerte von %1</translation>
+    </message>
+    <message>
+        <source>%1, set %2</source>
+        <translation>%1, Satz %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Compared %1 with %2: %n value(s) differ.</source>
+        <translation>
+            <numerusform>%1 mit %2 verglichen: %n Wert verschieden.</numerusform>
+            <numerusform>%1 mit %2 verglichen: %n Werte verschieden.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&amp;Equal (%1)</source>
+        <translation>Gl&amp;eich (%1)</translation>
+    </message>
+    <message>
+        <source>&amp;Different (%1)</source>
+        <translation>&amp;Verschieden (%1)</translation>
+    </message>
+    <message>
+        <source>Only in A (%1)</source>
+        <translation>Nur in A (%1)</translation>
+    </message>
+    <message>
+        <source>Only in B (%1)</source>
+        <translation>Nur in B (%1)</translation>
+    </message>
+    <message>
+        <source>Read-&amp;only (%1)</source>
+        <translation>Schreib&amp;geschützt (%1)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n value(s) shown, %2 chosen.</source>
+        <translation>
+            <numerusform>%1 von %n Wert angezeigt, %2 gewählt.</numerusform>
+            <numerusform>%1 von %n Werten angezeigt, %2 gewählt.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Write to A</source>
+        <translation>In A schreiben</translation>
+    </message>
+    <message>
+        <source>Write to B</source>
+        <translation>In B schreiben</translation>
+    </message>
+    <message numerus="yes">
+        <source>Write %n Value(s) to A (%1)</source>
+        <translation>
+            <numerusform>%n Wert in A schreiben (%1)</numerusform>
+            <numerusform>%n Werte in A schreiben (%1)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Write %n Value(s) to B (%1)</source>
+        <translation>
+            <numerusform>%n Wert in B schreiben (%1)</numerusform>
+            <numerusform>%n Werte in B schreiben (%1)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Compare Parameters</source>
+        <translation>Parameter vergleichen</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) were not written:</source>
+        <translation>
+            <numerusform>%n Wert wurde nicht geschrieben:</numerusform>
+            <numerusform>%n Werte wurden nicht geschrieben:</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Nothing written: no drive is connected that takes a download.</source>
+        <translation>Nichts geschrieben: kein Umrichter verbunden, der einen Download annimmt.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) handed to the window&apos;s download to the drive; it shows what it writes before it does.</source>
+        <translation>
+            <numerusform>%n Wert an den Download des Fensters zum Umrichter übergeben; er zeigt, was er schreibt, bevor er es tut.</numerusform>
+            <numerusform>%n Werte an den Download des Fensters zum Umrichter übergeben; er zeigt, was er schreibt, bevor er es tut.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Nothing written: the window no longer shows %1.</source>
+        <translation>Nichts geschrieben: das Fenster zeigt %1 nicht mehr.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) changed in %1 as one undoable edit of the window; save the file there to keep them.</source>
+        <translation>
+            <numerusform>%n Wert in %1 als ein rückgängig machbarer Schritt des Fensters geändert; die Datei dort speichern, um ihn zu behalten.</numerusform>
+            <numerusform>%n Werte in %1 als ein rückgängig machbarer Schritt des Fensters geändert; die Datei dort speichern, um sie zu behalten.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Nothing written: could not read %1: %2</source>
+        <translation>Nichts geschrieben: %1 konnte nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <source>Could not save %1: %2. The file on disk is as it was.</source>
+        <translation>%1 konnte nicht gespeichert werden: %2. Die Datei auf dem Datenträger ist unverändert.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) written into %1.</source>
+        <translation>
+            <numerusform>%n Wert in %1 geschrieben.</numerusform>
+            <numerusform>%n Werte in %1 geschrieben.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ComparisonModel</name>
+    <message>
+        <source>%1 - %2</source>
+        <translation>%1 - %2</translation>
+    </message>
+    <message>
+        <source>?</source>
+        <translation>?</translation>
+    </message>
+    <message>
+        <source>all</source>
+        <translation>alle</translation>
+    </message>
+    <message>
+        <source>%1 / %2</source>
+        <translation>%1 / %2</translation>
+    </message>
+    <message>
+        <source>read-only, different</source>
+        <translation>schreibgeschützt, verschieden</translation>
+    </message>
+    <message>
+        <source>read-only, equal</source>
+        <translation>schreibgeschützt, gleich</translation>
+    </message>
+    <message>
+        <source>The parameter holds one value for every set.</source>
+        <translation>Der Parameter hat einen Wert für alle Sätze.</translation>
+    </message>
+    <message>
+        <source>A download does not write this parameter: neither side can be changed to the other&apos;s value here.</source>
+        <translation>Ein Download schreibt diesen Parameter nicht: keine Seite kann hier auf den Wert der anderen geändert werden.</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Set</source>
+        <translation>Satz</translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>A: %1</source>
+        <translation>A: %1</translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation>B</translation>
+    </message>
+    <message>
+        <source>B: %1</source>
+        <translation>B: %1</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::ConnectionDialog</name>
     <message>
         <source>Connect to a drive</source>
@@ -1192,6 +1574,10 @@
     <message>
         <source>Download finished; the values are read again.</source>
         <translation>Download beendet; die Werte werden neu gelesen.</translation>
+    </message>
+    <message>
+        <source>the values chosen in the compare window</source>
+        <translation>die im Vergleichsfenster gewählten Werte</translation>
     </message>
 </context>
 <context>

@@ -69,6 +69,40 @@
     </message>
 </context>
 <context>
+    <name>ChosenValues</name>
+    <message>
+        <source>%1: the target has no such parameter</source>
+        <translation>%1: the target has no such parameter</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>ComparisonTable</name>
+    <message>
+        <source>equal</source>
+        <translation>equal</translation>
+    </message>
+    <message>
+        <source>different</source>
+        <translation>different</translation>
+    </message>
+    <message>
+        <source>only in A</source>
+        <translation>only in A</translation>
+    </message>
+    <message>
+        <source>only in B</source>
+        <translation>only in B</translation>
+    </message>
+    <message>
+        <source>read-only</source>
+        <translation>read-only</translation>
+    </message>
+</context>
+<context>
     <name>ConnectionOptions</name>
     <message>
         <source>--%1 %2: expected a number from %3 to %4</source>
@@ -792,6 +826,354 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::CompareFeature</name>
+    <message>
+        <source>Co&amp;mpare...</source>
+        <translation>Co&amp;mpare...</translation>
+    </message>
+    <message>
+        <source>Compare the drive, parameter files and defaults, and write chosen values</source>
+        <translation>Compare the drive, parameter files and defaults, and write chosen values</translation>
+    </message>
+    <message numerus="yes">
+        <source>Write %n compared value(s)</source>
+        <translation>
+            <numerusform>Write %n compared value</numerusform>
+            <numerusform>Write %n compared values</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::CompareWindow</name>
+    <message>
+        <source>Compare Parameters - DriveDesk</source>
+        <translation>Compare Parameters - DriveDesk</translation>
+    </message>
+    <message>
+        <source>Compare one &amp;set of A with one set of B</source>
+        <translation>Compare one &amp;set of A with one set of B</translation>
+    </message>
+    <message>
+        <source>Only the set-programmable parameters, in the sets chosen on each side. Choose &quot;A itself&quot; for B to compare two sets of one drive or file.</source>
+        <translation>Only the set-programmable parameters, in the sets chosen on each side. Choose &quot;A itself&quot; for B to compare two sets of one drive or file.</translation>
+    </message>
+    <message>
+        <source>&amp;Compare</source>
+        <translation>&amp;Compare</translation>
+    </message>
+    <message>
+        <source>C&amp;hoose Shown</source>
+        <translation>C&amp;hoose Shown</translation>
+    </message>
+    <message>
+        <source>Tick every row shown whose value can be written</source>
+        <translation>Tick every row shown whose value can be written</translation>
+    </message>
+    <message>
+        <source>C&amp;lear Choice</source>
+        <translation>C&amp;lear Choice</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Close</translation>
+    </message>
+    <message>
+        <source>Side &amp;A:</source>
+        <translation>Side &amp;A:</translation>
+    </message>
+    <message>
+        <source>Side &amp;B:</source>
+        <translation>Side &amp;B:</translation>
+    </message>
+    <message>
+        <source>The drive</source>
+        <translation>The drive</translation>
+    </message>
+    <message>
+        <source>The file shown in the window</source>
+        <translation>The file shown in the window</translation>
+    </message>
+    <message>
+        <source>A file</source>
+        <translation>A file</translation>
+    </message>
+    <message>
+        <source>Defaults of A</source>
+        <translation>Defaults of A</translation>
+    </message>
+    <message>
+        <source>A itself (another set)</source>
+        <translation>A itself (another set)</translation>
+    </message>
+    <message>
+        <source>Parameter file (*.json)</source>
+        <translation>Parameter file (*.json)</translation>
+    </message>
+    <message>
+        <source>Browse...</source>
+        <translation>Browse...</translation>
+    </message>
+    <message>
+        <source>Set:</source>
+        <translation>Set:</translation>
+    </message>
+    <message>
+        <source>Show:</source>
+        <translation>Show:</translation>
+    </message>
+    <message>
+        <source>All groups</source>
+        <translation>All groups</translation>
+    </message>
+    <message>
+        <source>&amp;Group:</source>
+        <translation>&amp;Group:</translation>
+    </message>
+    <message>
+        <source>Search id, name or value</source>
+        <translation>Search id, name or value</translation>
+    </message>
+    <message>
+        <source>Sea&amp;rch:</source>
+        <translation>Sea&amp;rch:</translation>
+    </message>
+    <message>
+        <source>C&amp;hosen only</source>
+        <translation>C&amp;hosen only</translation>
+    </message>
+    <message>
+        <source>Show only the rows ticked to be written: a last look</source>
+        <translation>Show only the rows ticked to be written: a last look</translation>
+    </message>
+    <message>
+        <source>Ra&amp;w values</source>
+        <translation>Ra&amp;w values</translation>
+    </message>
+    <message>
+        <source>Side A: Parameter File</source>
+        <translation>Side A: Parameter File</translation>
+    </message>
+    <message>
+        <source>Side B: Parameter File</source>
+        <translation>Side B: Parameter File</translation>
+    </message>
+    <message>
+        <source>DriveDesk parameter files (*.json)</source>
+        <translation>DriveDesk parameter files (*.json)</translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation>B</translation>
+    </message>
+    <message>
+        <source>Side %1: no drive is connected and read.</source>
+        <translation>Side %1: no drive is connected and read.</translation>
+    </message>
+    <message>
+        <source>the drive</source>
+        <translation>the drive</translation>
+    </message>
+    <message>
+        <source>Side %1: the window shows no parameter file.</source>
+        <translation>Side %1: the window shows no parameter file.</translation>
+    </message>
+    <message>
+        <source>%1 (shown)</source>
+        <translation>%1 (shown)</translation>
+    </message>
+    <message>
+        <source>Side %1: choose a parameter file.</source>
+        <translation>Side %1: choose a parameter file.</translation>
+    </message>
+    <message>
+        <source>Side %1: could not read %2: %3</source>
+        <translation>Side %1: could not read %2: %3</translation>
+    </message>
+    <message>
+        <source>defaults of %1</source>
+        <translation>defaults of %1</translation>
+    </message>
+    <message>
+        <source>%1, set %2</source>
+        <translation>%1, set %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Compared %1 with %2: %n value(s) differ.</source>
+        <translation>
+            <numerusform>Compared %1 with %2: %n value differs.</numerusform>
+            <numerusform>Compared %1 with %2: %n values differ.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&amp;Equal (%1)</source>
+        <translation>&amp;Equal (%1)</translation>
+    </message>
+    <message>
+        <source>&amp;Different (%1)</source>
+        <translation>&amp;Different (%1)</translation>
+    </message>
+    <message>
+        <source>Only in A (%1)</source>
+        <translation>Only in A (%1)</translation>
+    </message>
+    <message>
+        <source>Only in B (%1)</source>
+        <translation>Only in B (%1)</translation>
+    </message>
+    <message>
+        <source>Read-&amp;only (%1)</source>
+        <translation>Read-&amp;only (%1)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n value(s) shown, %2 chosen.</source>
+        <translation>
+            <numerusform>%1 of %n value shown, %2 chosen.</numerusform>
+            <numerusform>%1 of %n values shown, %2 chosen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Write to A</source>
+        <translation>Write to A</translation>
+    </message>
+    <message>
+        <source>Write to B</source>
+        <translation>Write to B</translation>
+    </message>
+    <message numerus="yes">
+        <source>Write %n Value(s) to A (%1)</source>
+        <translation>
+            <numerusform>Write %n Value to A (%1)</numerusform>
+            <numerusform>Write %n Values to A (%1)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Write %n Value(s) to B (%1)</source>
+        <translation>
+            <numerusform>Write %n Value to B (%1)</numerusform>
+            <numerusform>Write %n Values to B (%1)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Compare Parameters</source>
+        <translation>Compare Parameters</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) were not written:</source>
+        <translation>
+            <numerusform>%n value was not written:</numerusform>
+            <numerusform>%n values were not written:</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Nothing written: no drive is connected that takes a download.</source>
+        <translation>Nothing written: no drive is connected that takes a download.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) handed to the window&apos;s download to the drive; it shows what it writes before it does.</source>
+        <translation>
+            <numerusform>%n value handed to the window&apos;s download to the drive; it shows what it writes before it does.</numerusform>
+            <numerusform>%n values handed to the window&apos;s download to the drive; it shows what it writes before it does.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Nothing written: the window no longer shows %1.</source>
+        <translation>Nothing written: the window no longer shows %1.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) changed in %1 as one undoable edit of the window; save the file there to keep them.</source>
+        <translation>
+            <numerusform>%n value changed in %1 as one undoable edit of the window; save the file there to keep it.</numerusform>
+            <numerusform>%n values changed in %1 as one undoable edit of the window; save the file there to keep them.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Nothing written: could not read %1: %2</source>
+        <translation>Nothing written: could not read %1: %2</translation>
+    </message>
+    <message>
+        <source>Could not save %1: %2. The file on disk is as it was.</source>
+        <translation>Could not save %1: %2. The file on disk is as it was.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) written into %1.</source>
+        <translation>
+            <numerusform>%n value written into %1.</numerusform>
+            <numerusform>%n values written into %1.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ComparisonModel</name>
+    <message>
+        <source>%1 - %2</source>
+        <translation>%1 - %2</translation>
+    </message>
+    <message>
+        <source>?</source>
+        <translation>?</translation>
+    </message>
+    <message>
+        <source>all</source>
+        <translation>all</translation>
+    </message>
+    <message>
+        <source>%1 / %2</source>
+        <translation>%1 / %2</translation>
+    </message>
+    <message>
+        <source>read-only, different</source>
+        <translation>read-only, different</translation>
+    </message>
+    <message>
+        <source>read-only, equal</source>
+        <translation>read-only, equal</translation>
+    </message>
+    <message>
+        <source>The parameter holds one value for every set.</source>
+        <translation>The parameter holds one value for every set.</translation>
+    </message>
+    <message>
+        <source>A download does not write this parameter: neither side can be changed to the other&apos;s value here.</source>
+        <translation>A download does not write this parameter: neither side can be changed to the other&apos;s value here.</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Set</source>
+        <translation>Set</translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>A: %1</source>
+        <translation>A: %1</translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation>B</translation>
+    </message>
+    <message>
+        <source>B: %1</source>
+        <translation>B: %1</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>State</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::ConnectionDialog</name>
     <message>
         <source>Connect to a drive</source>
@@ -1192,6 +1574,10 @@
     <message>
         <source>Download finished; the values are read again.</source>
         <translation>Download finished; the values are read again.</translation>
+    </message>
+    <message>
+        <source>the values chosen in the compare window</source>
+        <translation>the values chosen in the compare window</translation>
     </message>
 </context>
 <context>

@@ -4,6 +4,8 @@
 #include "compare/CompareWindow.h"
 #include "compare/ComparisonFilterModel.h"
 #include "compare/ComparisonModel.h"
+#include "transfer/DownloadDialog.h"
+#include "transfer/DownloadFeature.h"
 #include "parameters/ChosenValues.h"
 #include "parameters/DriveIdentity.h"
 #include "parameters/ParameterDocument.h"
@@ -358,7 +360,7 @@ private slots:
         window->close();
     }
 
-    void theDriveGetsASelectionThroughTheSignal()
+    void chosenValuesReachTheDriveThroughTheDownload()
     {
         auto *feature = m_window->findChild<CompareFeature *>();
         QVERIFY(feature);
@@ -368,13 +370,9 @@ private slots:
         QVERIFY(window->compare());
         QVERIFY(choose(*window, kFixedSpeed1, 3));
         QVERIFY(choose(*window, kDemoPeriod, 0));
-        // Nobody takes a download yet: the drive cannot be written from here.
+        // The window's download takes the chosen values to the drive.
         QPushButton *writeA = button(*window, "writeToAButton");
-        QVERIFY(!writeA->isEnabled());
-        QVERIFY(!feature->canWriteToDrive());
-
         QSignalSpy requested(feature, &CompareFeature::writeToDriveRequested);
-        window->updateSources();
         QVERIFY(feature->canWriteToDrive());
         QVERIFY(writeA->isEnabled());
         QVERIFY2(isWriteText(writeA->text(), 2, QStringLiteral("A (the drive)")), qPrintable(writeA->text()));
@@ -415,8 +413,21 @@ private slots:
         for (quint16 address : std::as_const(identification))
             identificationValues += b.find(address) && b.find(address)->values[0] ? 1 : 0;
         QCOMPARE(values, identificationValues + 2);
-        // The drive itself is untouched: writing is the download's.
+        // The drive is untouched until the download's last look is accepted.
         QCOMPARE(driveValue(m_window->session()->client(), kFixedSpeed1, 3), 100);
+        auto *download = m_window->findChild<DownloadFeature *>();
+        QTRY_VERIFY_WITH_TIMEOUT(download->dialog()
+                                     && download->dialog()->run()->stage() == DownloadRun::Stage::Planned,
+                                 kWaitMs);
+        const DownloadPlan &plan = download->dialog()->run()->plan();
+        QVERIFY2(plan.problems.isEmpty(), qPrintable(plan.problems.join(QLatin1Char('\n'))));
+        QCOMPARE(plan.valueCount(), 2);
+        QCOMPARE(driveValue(m_window->session()->client(), kFixedSpeed1, 3), 100);
+        download->dialog()->findChild<QPushButton *>(QStringLiteral("downloadWrite"))->click();
+        QTRY_VERIFY_WITH_TIMEOUT(download->dialog()->run()->stage() == DownloadRun::Stage::Done, kWaitMs);
+        QCOMPARE(driveValue(m_window->session()->client(), kFixedSpeed1, 3), 250);
+        QCOMPARE(driveValue(m_window->session()->client(), kDemoPeriod, 0), m_demoPeriod + 15);
+        download->dialog()->reject();
         window->close();
     }
 };
