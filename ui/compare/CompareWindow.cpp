@@ -242,6 +242,8 @@ QWidget *CompareWindow::makeFilterRow()
     m_searchEdit->setObjectName(QStringLiteral("compareSearch"));
     m_searchEdit->setPlaceholderText(tr("Search id, name or value"));
     m_searchEdit->setClearButtonEnabled(true);
+    // Room for a parameter id and a word in every language, however long the filters' labels.
+    m_searchEdit->setMinimumWidth(m_searchEdit->fontMetrics().horizontalAdvance(QLatin1Char('x')) * 18);
     connect(m_searchEdit, &QLineEdit::textChanged, m_filter,
             &ComparisonFilterModel::setFilterText);
     auto *searchLabel = new QLabel(tr("Sea&rch:"), row);
