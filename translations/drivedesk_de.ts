@@ -1394,18 +1394,6 @@
         <source>; left as they are: %1</source>
         <translation>; unverändert gelassen: %1</translation>
     </message>
-    <message>
-        <source> (all sets)</source>
-        <translation> (alle Sätze)</translation>
-    </message>
-    <message>
-        <source> (set %1)</source>
-        <translation> (Satz %1)</translation>
-    </message>
-    <message>
-        <source> (sets %1)</source>
-        <translation> (Sätze %1)</translation>
-    </message>
 </context>
 <context>
     <name>DriveDesk::DownloadDialog</name>
@@ -1828,18 +1816,6 @@
     <message>
         <source>Redo failed: %1: %2</source>
         <translation>Wiederherstellen fehlgeschlagen: %1: %2</translation>
-    </message>
-    <message>
-        <source> (all sets)</source>
-        <translation> (alle Sätze)</translation>
-    </message>
-    <message>
-        <source> (set %1)</source>
-        <translation> (Satz %1)</translation>
-    </message>
-    <message>
-        <source> (sets %1)</source>
-        <translation> (Sätze %1)</translation>
     </message>
     <message>
         <source>the drive holds %1%2</source>
@@ -3372,18 +3348,6 @@ Verbindungsdialog.
     <message>
         <source>?</source>
         <translation>?</translation>
-    </message>
-    <message>
-        <source>different</source>
-        <translation>verschieden</translation>
-    </message>
-    <message>
-        <source>only in A</source>
-        <translation>nur in A</translation>
-    </message>
-    <message>
-        <source>only in B</source>
-        <translation>nur in B</translation>
     </message>
 </context>
 <context>

@@ -1394,18 +1394,6 @@
         <source>; left as they are: %1</source>
         <translation>; left as they are: %1</translation>
     </message>
-    <message>
-        <source> (all sets)</source>
-        <translation> (all sets)</translation>
-    </message>
-    <message>
-        <source> (set %1)</source>
-        <translation> (set %1)</translation>
-    </message>
-    <message>
-        <source> (sets %1)</source>
-        <translation> (sets %1)</translation>
-    </message>
 </context>
 <context>
     <name>DriveDesk::DownloadDialog</name>
@@ -1828,18 +1816,6 @@
     <message>
         <source>Redo failed: %1: %2</source>
         <translation>Redo failed: %1: %2</translation>
-    </message>
-    <message>
-        <source> (all sets)</source>
-        <translation> (all sets)</translation>
-    </message>
-    <message>
-        <source> (set %1)</source>
-        <translation> (set %1)</translation>
-    </message>
-    <message>
-        <source> (sets %1)</source>
-        <translation> (sets %1)</translation>
     </message>
     <message>
         <source>the drive holds %1%2</source>
@@ -3372,18 +3348,6 @@ dialog.
     <message>
         <source>?</source>
         <translation>?</translation>
-    </message>
-    <message>
-        <source>different</source>
-        <translation>different</translation>
-    </message>
-    <message>
-        <source>only in A</source>
-        <translation>only in A</translation>
-    </message>
-    <message>
-        <source>only in B</source>
-        <translation>only in B</translation>
     </message>
 </context>
 <context>

@@ -48,11 +48,11 @@ QString ParameterComparison::kindText(ParameterDifference::Kind kind)
 {
     switch (kind) {
     case ParameterDifference::Kind::Different:
-        return tr("different");
+        return ComparisonTable::stateText(ComparisonRow::State::Different);
     case ParameterDifference::Kind::OnlyInA:
-        return tr("only in A");
+        return ComparisonTable::stateText(ComparisonRow::State::OnlyInA);
     case ParameterDifference::Kind::OnlyInB:
-        return tr("only in B");
+        return ComparisonTable::stateText(ComparisonRow::State::OnlyInB);
     }
     return {};
 }

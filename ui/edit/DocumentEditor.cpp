@@ -6,6 +6,7 @@
 #include "parameters/ParameterFormat.h"
 #include "parameters/ParameterId.h"
 #include "parameters/PasswordLevel.h"
+#include "parameters/SetList.h"
 #include "session/CopySet.h"
 
 #include <QUndoStack>
@@ -165,16 +166,9 @@ QString DocumentEditor::inSets(quint16 address, quint8 setMask) const
     const ParameterDescription *parameter = m_model->parameter(address);
     if (parameter && !parameter->isSetProgrammable())
         return {};
-    QStringList sets;
-    for (int set = 0; set < kParameterSets; ++set) {
-        if (setMask & (1u << set))
-            sets << QString::number(set);
-    }
-    if (sets.size() == kParameterSets)
-        return tr(" (all sets)");
-    if (sets.size() == 1)
-        return tr(" (set %1)").arg(sets.constFirst());
-    return tr(" (sets %1)").arg(sets.join(QStringLiteral(", ")));
+    // A note in parentheses after the parameter or the value: it takes no part in the
+    // sentence's grammar, so every language can append it where the sentence names them.
+    return QStringLiteral(" (%1)").arg(SetList::text(setMask));
 }
 
 } // namespace DriveDesk
