@@ -2013,6 +2013,36 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::ExportFeature</name>
+    <message>
+        <source>Export as &amp;CSV...</source>
+        <translation>Als &amp;CSV exportieren …</translation>
+    </message>
+    <message>
+        <source>Write every parameter with its unit and each set&apos;s value as shown to a CSV file for a spreadsheet</source>
+        <translation>Jeden Parameter mit Einheit und dem angezeigten Wert jedes Satzes in eine CSV-Datei für eine Tabellenkalkulation schreiben</translation>
+    </message>
+    <message>
+        <source>Export as CSV</source>
+        <translation>Als CSV exportieren</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <source>Not exported: %1. The file on disk is as it was.</source>
+        <translation>Nicht exportiert: %1. Die Datei auf dem Datenträger ist unverändert.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Exported %n parameter(s) to %1.</source>
+        <translation>
+            <numerusform>%n Parameter nach %1 exportiert.</numerusform>
+            <numerusform>%n Parameter nach %1 exportiert.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::FilterBar</name>
     <message>
         <source>Search every group by id, name or value</source>
@@ -3385,14 +3415,6 @@ Verbindungsdialog.
         <translation>unbekanntes Feld</translation>
     </message>
     <message>
-        <source>cannot write &apos;%1&apos;: %2</source>
-        <translation>„%1“ kann nicht geschrieben werden: %2</translation>
-    </message>
-    <message>
-        <source>cannot save &apos;%1&apos;: %2</source>
-        <translation>„%1“ kann nicht gespeichert werden: %2</translation>
-    </message>
-    <message>
         <source>cannot read &apos;%1&apos;: %2</source>
         <translation>„%1“ kann nicht gelesen werden: %2</translation>
     </message>
@@ -4015,6 +4037,17 @@ Verbindungsdialog.
     <message>
         <source>sent to a group of drives or to all drives, which never answer: carried out, not confirmed</source>
         <translation>an eine Gruppe oder an alle Umrichter gesendet, die nie antworten: ausgeführt, nicht bestätigt</translation>
+    </message>
+</context>
+<context>
+    <name>SavedFile</name>
+    <message>
+        <source>cannot write &apos;%1&apos;: %2</source>
+        <translation>„%1“ kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>cannot save &apos;%1&apos;: %2</source>
+        <translation>„%1“ kann nicht gespeichert werden: %2</translation>
     </message>
 </context>
 <context>

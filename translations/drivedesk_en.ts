@@ -2013,6 +2013,36 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::ExportFeature</name>
+    <message>
+        <source>Export as &amp;CSV...</source>
+        <translation>Export as &amp;CSV...</translation>
+    </message>
+    <message>
+        <source>Write every parameter with its unit and each set&apos;s value as shown to a CSV file for a spreadsheet</source>
+        <translation>Write every parameter with its unit and each set&apos;s value as shown to a CSV file for a spreadsheet</translation>
+    </message>
+    <message>
+        <source>Export as CSV</source>
+        <translation>Export as CSV</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV files (*.csv)</translation>
+    </message>
+    <message>
+        <source>Not exported: %1. The file on disk is as it was.</source>
+        <translation>Not exported: %1. The file on disk is as it was.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Exported %n parameter(s) to %1.</source>
+        <translation>
+            <numerusform>Exported %n parameter to %1.</numerusform>
+            <numerusform>Exported %n parameters to %1.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::FilterBar</name>
     <message>
         <source>Search every group by id, name or value</source>
@@ -3385,14 +3415,6 @@ dialog.
         <translation>unknown field</translation>
     </message>
     <message>
-        <source>cannot write &apos;%1&apos;: %2</source>
-        <translation>cannot write &apos;%1&apos;: %2</translation>
-    </message>
-    <message>
-        <source>cannot save &apos;%1&apos;: %2</source>
-        <translation>cannot save &apos;%1&apos;: %2</translation>
-    </message>
-    <message>
         <source>cannot read &apos;%1&apos;: %2</source>
         <translation>cannot read &apos;%1&apos;: %2</translation>
     </message>
@@ -4015,6 +4037,17 @@ dialog.
     <message>
         <source>sent to a group of drives or to all drives, which never answer: carried out, not confirmed</source>
         <translation>sent to a group of drives or to all drives, which never answer: carried out, not confirmed</translation>
+    </message>
+</context>
+<context>
+    <name>SavedFile</name>
+    <message>
+        <source>cannot write &apos;%1&apos;: %2</source>
+        <translation>cannot write &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <source>cannot save &apos;%1&apos;: %2</source>
+        <translation>cannot save &apos;%1&apos;: %2</translation>
     </message>
 </context>
 <context>

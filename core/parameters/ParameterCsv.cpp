@@ -1,6 +1,7 @@
 #include "ParameterCsv.h"
 
 #include "ParameterFormat.h"
+#include "SavedFile.h"
 
 #include <QStringList>
 
@@ -52,6 +53,11 @@ QByteArray parametersAsCsv(const DriveDescription &drive)
         }
     }
     return csv;
+}
+
+bool saveParametersAsCsv(const QString &path, const DriveDescription &drive, QString *error)
+{
+    return SavedFile::write(path, parametersAsCsv(drive), error);
 }
 
 } // namespace DriveDesk

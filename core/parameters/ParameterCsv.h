@@ -15,6 +15,9 @@ namespace DriveDesk {
 // UTF-8 with CRLF line ends. Numbers follow the default QLocale's decimal separator, so the
 // command line (C locale) writes "12.50".
 QByteArray parametersAsCsv(const DriveDescription &drive);
+// The same, saved to a file whole or not at all (SavedFile).
+bool saveParametersAsCsv(const QString &path, const DriveDescription &drive,
+                         QString *error = nullptr);
 
 // One CSV record (RFC 4180) without its line end: the fields joined by commas, each quoted
 // where it holds a comma, a quote or a line break. The telegram monitor's CSV files use it too.

@@ -3,12 +3,12 @@
 #include "DisplayScaling.h"
 #include "ParameterId.h"
 #include "ParameterProperties.h"
+#include "SavedFile.h"
 
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 
 namespace DriveDesk {
 
@@ -163,25 +163,7 @@ QByteArray ParameterDocument::toJson(const DriveDescription &drive)
 
 bool ParameterDocument::save(const QString &path, const DriveDescription &drive, QString *error)
 {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) {
-        if (error)
-            *error = tr("cannot write '%1': %2").arg(path, file.errorString());
-        return false;
-    }
-    const QByteArray json = toJson(drive);
-    if (file.write(json) != json.size()) {
-        if (error)
-            *error = tr("cannot write '%1': %2").arg(path, file.errorString());
-        file.cancelWriting();
-        return false;
-    }
-    if (!file.commit()) {
-        if (error)
-            *error = tr("cannot save '%1': %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
+    return SavedFile::write(path, toJson(drive), error);
 }
 
 std::optional<DriveDescription> ParameterDocument::load(const QString &path, QString *error)

@@ -3,6 +3,7 @@
 #include "parameters/ParameterDocument.h"
 #include "transfer/DownloadDialog.h"
 #include "transfer/DownloadFeature.h"
+#include "transfer/ExportFeature.h"
 
 #include <QAction>
 #include <QCheckBox>
@@ -192,6 +193,24 @@ private slots:
         dialog()->reject();
         QTRY_VERIFY(!dialog());
         QCOMPARE(onDrive(kFixedSpeed1, 4), 100);
+    }
+
+    // File > Export as CSV: what the table shows, as core's CSV rule writes it.
+    void theDriveReadIsExportedForASpreadsheet()
+    {
+        auto *action = m_window->findChild<QAction *>(QStringLiteral("exportCsvAction"));
+        QVERIFY(action && action->isEnabled());
+        const QString path = m_dir.filePath(QStringLiteral("drive.csv"));
+        QVERIFY(m_window->findChild<ExportFeature *>()->exportCsv(path));
+        QFile csv(path);
+        QVERIFY(csv.open(QIODevice::ReadOnly));
+        const QStringList lines = QString::fromUtf8(csv.readAll()).split(QStringLiteral("\r\n"), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 1 + kSimulatedParameters);
+        QVERIFY(lines.contains(QStringLiteral("op.20,Fixed speed 1,1/min,100,100,100,100,100,100,100,100")));
+        QVERIFY(m_window->statusBar()->currentMessage().contains(QStringLiteral("drive.csv")));
+        // A folder that is not there: a message, and no file.
+        QVERIFY(!m_window->findChild<ExportFeature *>()->exportCsv(m_dir.filePath(QStringLiteral("none/x.csv"))));
+        QVERIFY(m_window->statusBar()->currentMessage().contains(QStringLiteral("Not exported")));
     }
 
     void aCorruptFileIsNamedAndNothingStarts()

@@ -82,6 +82,8 @@ public:
     void showMessage(const QString &text) override;
     void chooseParameterFile(const QString &title,
                              std::function<void(const QString &path)> chosen) override;
+    void chooseFileToWrite(const QString &title, const QString &name, const QString &filter,
+                           std::function<void(const QString &path)> chosen) override;
     void updateActions() override;
 
 signals:
@@ -108,7 +110,8 @@ private:
     void chooseFileToSaveAs();
     void chooseDriveFile();
     // `name`: a file name to suggest; empty for a dialog that opens a file.
-    QFileDialog *fileDialog(const QString &title, const QString &name = {});
+    QFileDialog *fileDialog(const QString &title, const QString &name = {},
+                           const QString &filter = {});
     void showParameterFile(const DriveDescription &drive, const QString &path);
     // The file shown goes (its changes with it), and the table empties.
     void closeParameterFile();

@@ -168,6 +168,7 @@ void MainWindow::finishMenus()
 QMenu *MainWindow::menu(Menu menu)
 {
     switch (menu) {
+    case Menu::File: return m_fileMenu;
     case Menu::Drive: return m_driveMenu;
     case Menu::Edit: return m_editMenu;
     case Menu::View: return m_viewMenu;

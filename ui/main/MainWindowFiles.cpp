@@ -216,11 +216,13 @@ void MainWindow::confirmReplace(const QString &path, const std::function<void()>
     openDialog(box);
 }
 
-QFileDialog *MainWindow::fileDialog(const QString &title, const QString &name)
+QFileDialog *MainWindow::fileDialog(const QString &title, const QString &name,
+                                    const QString &filter)
 {
     const QString directory = QSettings().value(kDirectoryKey, QDir::homePath()).toString();
-    auto *dialog
-        = new QFileDialog(this, title, directory, tr("DriveDesk parameter files (*.json)"));
+    auto *dialog = new QFileDialog(this, title, directory,
+                                   filter.isEmpty() ? tr("DriveDesk parameter files (*.json)")
+                                                    : filter);
     dialog->setObjectName(QStringLiteral("parameterFileDialog"));
     if (name.isEmpty()) {
         dialog->setAcceptMode(QFileDialog::AcceptOpen);
@@ -228,7 +230,8 @@ QFileDialog *MainWindow::fileDialog(const QString &title, const QString &name)
     } else {
         dialog->setAcceptMode(QFileDialog::AcceptSave);
         dialog->setFileMode(QFileDialog::AnyFile);
-        dialog->setDefaultSuffix(QStringLiteral("json"));
+        const QString suffix = QFileInfo(name).suffix();
+        dialog->setDefaultSuffix(suffix.isEmpty() ? QStringLiteral("json") : suffix);
         // Asked by confirmReplace(), without the dialog's own nested event loop.
         dialog->setOption(QFileDialog::DontConfirmOverwrite);
         dialog->selectFile(name);
@@ -244,6 +247,21 @@ void MainWindow::chooseParameterFile(const QString &title,
             [chosen = std::move(chosen)](const QString &path) {
                 rememberDirectory(path);
                 chosen(path);
+            });
+    openDialog(dialog);
+}
+
+void MainWindow::chooseFileToWrite(const QString &title, const QString &name,
+                                   const QString &filter,
+                                   std::function<void(const QString &path)> chosen)
+{
+    QFileDialog *dialog = fileDialog(title, name, filter);
+    connect(dialog, &QFileDialog::fileSelected, this,
+            [this, chosen = std::move(chosen)](const QString &path) {
+                confirmReplace(path, [path, chosen] {
+                    rememberDirectory(path);
+                    chosen(path);
+                });
             });
     openDialog(dialog);
 }

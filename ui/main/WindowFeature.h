@@ -24,7 +24,7 @@ class ParameterModel;
 class WindowFrame
 {
 public:
-    enum class Menu { Drive, Edit, View };
+    enum class Menu { File, Drive, Edit, View };
 
     virtual ~WindowFrame() = default;
 
@@ -50,6 +50,11 @@ public:
     // its path once the user picked one.
     virtual void chooseParameterFile(const QString &title,
                                      std::function<void(const QString &path)> chosen) = 0;
+    // Asks where to write a file (`filter` like "CSV files (*.csv)"), and whether to replace one
+    // that is there; `chosen` runs with the path once the user agreed.
+    virtual void chooseFileToWrite(const QString &title, const QString &name,
+                                   const QString &filter,
+                                   std::function<void(const QString &path)> chosen) = 0;
     // Something an action depends on changed: every feature's actions enable as they apply.
     virtual void updateActions() = 0;
 };

@@ -6,6 +6,7 @@
 #include "edit/PollingFeature.h"
 #include "monitor/MonitorFeature.h"
 #include "transfer/DownloadFeature.h"
+#include "transfer/ExportFeature.h"
 
 namespace DriveDesk {
 
@@ -26,6 +27,7 @@ QList<WindowFeature *> makeWindowFeatures(WindowFrame &frame)
         new MonitorFeature(frame),
         download,
         compare,
+        new ExportFeature(frame),
     };
 }
 
