@@ -2,7 +2,6 @@
 
 #include "CompareWindow.h"
 
-#include "main/MainWindow.h"
 #include "model/ParameterModel.h"
 
 #include <QAction>
@@ -62,8 +61,7 @@ DriveDescription CompareFeature::drive() const
 QString CompareFeature::shownFilePath() const
 {
     // The window shows a file or a drive, never both.
-    const auto *window = qobject_cast<const MainWindow *>(frame().frameWidget());
-    return window && !frame().session() ? window->parameterFilePath() : QString();
+    return frame().session() ? QString() : frame().parameterFilePath();
 }
 
 DriveDescription CompareFeature::shownFile() const

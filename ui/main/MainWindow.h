@@ -61,7 +61,7 @@ public:
     // the drive.
     bool saveDriveToFile(const QString &path);
     // The parameter file shown instead of a drive, absolute; empty while none is.
-    QString parameterFilePath() const { return m_filePath; }
+    QString parameterFilePath() const override { return m_filePath; }
     // The file shown was changed since it was opened or saved (undoing back clears this).
     bool hasUnsavedChanges() const;
 

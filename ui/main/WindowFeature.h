@@ -41,6 +41,8 @@ public:
     virtual DriveSession *session() const = 0;
     // Connected to a drive and read.
     virtual bool isReady() const = 0;
+    // The parameter file the window shows instead of a drive; empty while it shows none.
+    virtual QString parameterFilePath() const = 0;
     // Where edits go now: the drive's edit controller (connected and read) or the editor of the
     // parameter file shown instead of a drive; nullptr while nothing may be edited.
     virtual ParameterEditing *editing() const = 0;
