@@ -84,7 +84,8 @@ private slots:
         // request of the test's own.
         QVERIFY(drive.answerToALaterRead());
         const int settled = records(traffic, TrafficRecord::Kind::Sent) - 1;
-        const GroupDescription *run = drive.model.description().findGroup(QStringLiteral("ru"));
+        const DriveDescription shown = drive.model.description();
+        const GroupDescription *run = shown.findGroup(QStringLiteral("ru"));
         QVERIFY(run);
         QVERIFY2(settled <= int(run->parameters.size()), qPrintable(QString::number(settled)));
         QVERIFY(waitIntervals(polling, 2));
