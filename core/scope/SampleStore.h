@@ -1,0 +1,65 @@
+#pragma once
+
+#include "ScopeSample.h"
+
+#include <memory>
+#include <vector>
+
+namespace DriveDesk {
+
+// The scope's samples in time order, compactly: the time and the raw channels in columns,
+// in chunks of kChunkSize samples (20 bytes a sample). A new chunk is added when the last
+// is full; samples already stored never move, so appending never copies them.
+//
+// Single-threaded: written and read from one thread. Whoever polls hands samples over to
+// that thread in batches.
+class SampleStore
+{
+public:
+    static constexpr qsizetype kChunkSize = 4096;
+
+    // Half-open [begin, end) of sample indices.
+    struct IndexRange
+    {
+        qsizetype begin = 0;
+        qsizetype end = 0;
+        qsizetype count() const { return end - begin; }
+        bool isEmpty() const { return end <= begin; }
+        bool operator==(const IndexRange &) const = default;
+    };
+
+    SampleStore();
+    ~SampleStore();
+    SampleStore(SampleStore &&) noexcept;
+    SampleStore &operator=(SampleStore &&) noexcept;
+
+    // Samples must come in time order; one earlier than the last is refused (false). An equal
+    // time is kept.
+    bool append(const ScopeSample &sample);
+    void clear();
+
+    qsizetype count() const { return m_count; }
+    bool isEmpty() const { return m_count == 0; }
+
+    // 0 <= index < count()
+    ScopeSample at(qsizetype index) const;
+    qint64 time(qsizetype index) const;
+    qint32 value(qsizetype index, int channel) const;
+
+    // The samples with from <= time <= to, by binary search: O(log count()).
+    IndexRange indexRange(qint64 fromMs, qint64 toMs) const;
+    // The first index whose time is >= ms (count() if none).
+    qsizetype lowerBound(qint64 ms) const;
+    // The first index whose time is > ms (count() if none).
+    qsizetype upperBound(qint64 ms) const;
+
+    // The heap this store holds: its chunks and the table of them.
+    qsizetype bytesUsed() const;
+
+private:
+    struct Chunk;
+    std::vector<std::unique_ptr<Chunk>> m_chunks;
+    qsizetype m_count = 0;
+};
+
+} // namespace DriveDesk
