@@ -1,0 +1,65 @@
+// Scope storage: appending four channels of a million samples, drawing them into 1600 columns,
+// and the memory a sample takes.
+#include "scope/ScopeBuffer.h"
+#include "scope/ScopeClock.h"
+
+#include <QElapsedTimer>
+
+#include <cmath>
+#include <cstdio>
+
+using namespace DriveDesk;
+
+int main()
+{
+    constexpr qsizetype kSamples = 1'000'000;
+    constexpr int kColumns = 1600;
+
+    ScopeBuffer buffer;
+    ScopeClock clock;
+    QElapsedTimer timer;
+    timer.start();
+    quint16 timestamp = 0;
+    for (qsizetype i = 0; i < kSamples; ++i) {
+        timestamp += quint16(1 + i % 3); // uneven, wrapping every ~33,000 samples
+        ScopeSample sample;
+        sample.time = clock.unwrap(timestamp).time;
+        sample.wide = {qint32(100000 * std::sin(i * 0.001)), qint32(i)};
+        sample.narrow = {qint16(i % 4000 - 2000), qint16(i % 1000 == 0 ? 32767 : 0)};
+        buffer.append(sample);
+    }
+    const double appendMs = timer.nsecsElapsed() / 1e6;
+    std::printf("append %lld samples x 4 channels (with unwrapping): %.1f ms (%.1f ns a sample)\n",
+                qlonglong(kSamples), appendMs, appendMs * 1e6 / kSamples);
+
+    constexpr int kRounds = 20;
+    timer.restart();
+    qint64 sink = 0;
+    for (int round = 0; round < kRounds; ++round) {
+        for (int channel = 0; channel < ScopeSample::kChannelCount; ++channel) {
+            for (const auto &column : buffer.decimate(channel, 0, buffer.count(), kColumns))
+                sink += column.max - column.min;
+        }
+    }
+    const double decimateMs = timer.nsecsElapsed() / 1e6 / kRounds;
+    std::printf("decimate 4 channels of %lld samples to %d columns: %.3f ms\n",
+                qlonglong(kSamples), kColumns, decimateMs);
+
+    timer.restart();
+    const qint64 last = buffer.samples().time(buffer.count() - 1);
+    for (int round = 0; round < kRounds; ++round) {
+        for (int channel = 0; channel < ScopeSample::kChannelCount; ++channel) {
+            for (const auto &column : buffer.decimateTime(channel, last / 3, last, kColumns))
+                sink += column.max - column.min;
+        }
+    }
+    const double byTimeMs = timer.nsecsElapsed() / 1e6 / kRounds;
+    std::printf("decimate 4 channels, two thirds of the time, to %d columns of equal time: "
+                "%.3f ms\n",
+                kColumns, byTimeMs);
+
+    std::printf("bytes a sample: %.2f samples, %.2f with min/max levels (checksum %lld)\n",
+                double(buffer.samples().bytesUsed()) / buffer.count(),
+                double(buffer.bytesUsed()) / buffer.count(), qlonglong(sink));
+    return 0;
+}
