@@ -1,7 +1,7 @@
 # core/scope: the clock, the sample store and the min/max levels; each links drivedesk_scope only.
 drivedesk_add_test(NAME tst_scopeclock LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopeclock.cpp LIBS drivedesk_scope)
-drivedesk_add_test(NAME tst_samplestore LABELS unit
-    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_samplestore.cpp LIBS drivedesk_scope)
-drivedesk_add_test(NAME tst_minmaxpyramid LABELS unit
-    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_minmaxpyramid.cpp LIBS drivedesk_scope)
+drivedesk_add_test(NAME tst_scopestore LABELS unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopestore.cpp LIBS drivedesk_scope)
+drivedesk_add_test(NAME tst_scopepyramid LABELS unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopepyramid.cpp LIBS drivedesk_scope)

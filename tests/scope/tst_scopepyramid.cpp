@@ -213,4 +213,4 @@ private slots:
 };
 
 QTEST_APPLESS_MAIN(TestMinMaxPyramid)
-#include "tst_minmaxpyramid.moc"
+#include "tst_scopepyramid.moc"

@@ -153,4 +153,4 @@ private slots:
 };
 
 QTEST_APPLESS_MAIN(TestSampleStore)
-#include "tst_samplestore.moc"
+#include "tst_scopestore.moc"
