@@ -58,7 +58,7 @@ int main()
                 "%.3f ms\n",
                 kColumns, byTimeMs);
 
-    std::printf("bytes a sample: %.2f samples, %.2f with min/max levels (checksum %lld)\n",
+    std::printf("bytes a sample: %.2f in the store, %.2f with the min/max levels (checksum %lld)\n",
                 double(buffer.samples().bytesUsed()) / buffer.count(),
                 double(buffer.bytesUsed()) / buffer.count(), qlonglong(sink));
     return 0;
