@@ -57,50 +57,33 @@ QString ParameterComparison::kindText(ParameterDifference::Kind kind)
     return {};
 }
 
+// The view's rows, reduced to what differs: a parameter only one side has once, as that side
+// holds its first value; a value that differs once per set.
 ParameterComparison compareDescriptions(const DriveDescription &a, const DriveDescription &b)
 {
     ParameterComparison comparison;
-    const QMap<quint16, Located> left = byAddress(a);
-    const QMap<quint16, Located> right = byAddress(b);
-    QList<quint16> addresses = left.keys();
-    for (quint16 address : right.keys()) {
-        if (!left.contains(address))
-            addresses.append(address);
-    }
-    std::sort(addresses.begin(), addresses.end());
-
-    for (quint16 address : std::as_const(addresses)) {
-        const Located l = left.value(address);
-        const Located r = right.value(address);
-        if (!l.parameter || !r.parameter) {
-            const Located &present = l.parameter ? l : r;
-            ParameterDifference difference;
-            difference.kind = l.parameter ? ParameterDifference::Kind::OnlyInA
-                                          : ParameterDifference::Kind::OnlyInB;
-            difference.address = address;
-            difference.id = present.id;
-            difference.name = present.parameter->name;
-            (l.parameter ? difference.a : difference.b)
-                = shown(*present.parameter, present.parameter->values[0]);
-            comparison.differences.append(difference);
+    std::optional<quint16> previous;
+    for (const ComparisonRow &row : compareAll(a, b).rows) {
+        const bool firstOfParameter = previous != row.address;
+        previous = row.address;
+        const bool only = row.state == ComparisonRow::State::OnlyInA
+            || row.state == ComparisonRow::State::OnlyInB;
+        if (!only && firstOfParameter)
+            ++comparison.compared;
+        if (!row.differs || (only && !firstOfParameter))
             continue;
-        }
-        ++comparison.compared;
-        const bool perSet = l.parameter->isSetProgrammable() || r.parameter->isSetProgrammable();
-        for (int set = 0; set < (perSet ? kParameterSets : 1); ++set) {
-            const std::optional<qint32> x = valueOf(*l.parameter, set);
-            const std::optional<qint32> y = valueOf(*r.parameter, set);
-            if (x == y)
-                continue;
-            ParameterDifference difference;
-            difference.address = address;
-            difference.id = l.id;
-            difference.name = l.parameter->name;
-            difference.set = set;
-            difference.a = shown(*l.parameter, x);
-            difference.b = shown(*r.parameter, y);
-            comparison.differences.append(difference);
-        }
+        ParameterDifference difference;
+        difference.kind = row.state == ComparisonRow::State::OnlyInA
+            ? ParameterDifference::Kind::OnlyInA
+            : row.state == ComparisonRow::State::OnlyInB ? ParameterDifference::Kind::OnlyInB
+                                                         : ParameterDifference::Kind::Different;
+        difference.address = row.address;
+        difference.id = row.id;
+        difference.name = row.name;
+        difference.set = only ? -1 : row.setA;
+        difference.a = row.a;
+        difference.b = row.b;
+        comparison.differences.append(difference);
     }
     return comparison;
 }
