@@ -324,6 +324,34 @@
         <source>  (always written)</source>
         <translation>  (wird immer geschrieben)</translation>
     </message>
+    <message numerus="yes">
+        <source>%n value(s) to write</source>
+        <translation>
+            <numerusform>%n Wert zu schreiben</numerusform>
+            <numerusform>%n Werte zu schreiben</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n unchanged</source>
+        <translation>
+            <numerusform>%n unverändert</numerusform>
+            <numerusform>%n unverändert</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n left</source>
+        <translation>
+            <numerusform>%n ausgelassen</numerusform>
+            <numerusform>%n ausgelassen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n read-only value(s) differ and are never written</source>
+        <translation>
+            <numerusform>%n schreibgeschützter Wert weicht ab und wird nie geschrieben</numerusform>
+            <numerusform>%n schreibgeschützte Werte weichen ab und werden nie geschrieben</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>DownloadReport</name>
@@ -644,41 +672,13 @@
         <source>skipped  %1  %2: %3</source>
         <translation>ausgelassen  %1  %2: %3</translation>
     </message>
-    <message numerus="yes">
-        <source>dry run: %n value(s) would be written</source>
-        <translation>
-            <numerusform>Probelauf: %n Wert würde geschrieben</numerusform>
-            <numerusform>Probelauf: %n Werte würden geschrieben</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%n unchanged</source>
-        <translation>
-            <numerusform>%n unverändert</numerusform>
-            <numerusform>%n unverändert</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%n skipped</source>
-        <translation>
-            <numerusform>%n ausgelassen</numerusform>
-            <numerusform>%n ausgelassen</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>nothing was written</source>
-        <translation>es wurde nichts geschrieben</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n read-only value(s) of the file differ from the drive&apos;s; they are never written</source>
-        <translation>
-            <numerusform>%n schreibgeschützter Wert der Datei weicht vom Umrichter ab; er wird nie geschrieben</numerusform>
-            <numerusform>%n schreibgeschützte Werte der Datei weichen vom Umrichter ab; sie werden nie geschrieben</numerusform>
-        </translation>
-    </message>
     <message>
         <source>the download did not write everything; the report says what the drive holds</source>
         <translation>der Download hat nicht alles geschrieben; der Bericht sagt, was der Umrichter enthält</translation>
+    </message>
+    <message>
+        <source>dry run: %1; nothing was written</source>
+        <translation>Probelauf: %1; es wurde nichts geschrieben</translation>
     </message>
 </context>
 <context>
@@ -1460,34 +1460,6 @@
     <message>
         <source>&lt;b&gt;The file does not fit the drive:&lt;/b&gt;&lt;ul&gt;%1&lt;/ul&gt;</source>
         <translation>&lt;b&gt;Die Datei passt nicht zum Umrichter:&lt;/b&gt;&lt;ul&gt;%1&lt;/ul&gt;</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n value(s) to write</source>
-        <translation>
-            <numerusform>%n Wert zu schreiben</numerusform>
-            <numerusform>%n Werte zu schreiben</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%n unchanged</source>
-        <translation>
-            <numerusform>%n unverändert</numerusform>
-            <numerusform>%n unverändert</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%n left</source>
-        <translation>
-            <numerusform>%n ausgelassen</numerusform>
-            <numerusform>%n ausgelassen</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%n read-only value(s) differ and are never written</source>
-        <translation>
-            <numerusform>%n schreibgeschützter Wert weicht ab und wird nie geschrieben</numerusform>
-            <numerusform>%n schreibgeschützte Werte weichen ab und werden nie geschrieben</numerusform>
-        </translation>
     </message>
     <message>
         <source>Nothing will be written unless you overrule the checks.</source>

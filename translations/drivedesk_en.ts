@@ -324,6 +324,34 @@
         <source>  (always written)</source>
         <translation>  (always written)</translation>
     </message>
+    <message numerus="yes">
+        <source>%n value(s) to write</source>
+        <translation>
+            <numerusform>%n value to write</numerusform>
+            <numerusform>%n values to write</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n unchanged</source>
+        <translation>
+            <numerusform>%n unchanged</numerusform>
+            <numerusform>%n unchanged</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n left</source>
+        <translation>
+            <numerusform>%n left</numerusform>
+            <numerusform>%n left</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n read-only value(s) differ and are never written</source>
+        <translation>
+            <numerusform>%n read-only value differs and is never written</numerusform>
+            <numerusform>%n read-only values differ and are never written</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>DownloadReport</name>
@@ -644,41 +672,13 @@
         <source>skipped  %1  %2: %3</source>
         <translation>skipped  %1  %2: %3</translation>
     </message>
-    <message numerus="yes">
-        <source>dry run: %n value(s) would be written</source>
-        <translation>
-            <numerusform>dry run: %n value would be written</numerusform>
-            <numerusform>dry run: %n values would be written</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%n unchanged</source>
-        <translation>
-            <numerusform>%n unchanged</numerusform>
-            <numerusform>%n unchanged</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%n skipped</source>
-        <translation>
-            <numerusform>%n skipped</numerusform>
-            <numerusform>%n skipped</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>nothing was written</source>
-        <translation>nothing was written</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n read-only value(s) of the file differ from the drive&apos;s; they are never written</source>
-        <translation>
-            <numerusform>%n read-only value of the file differs from the drive&apos;s; it is never written</numerusform>
-            <numerusform>%n read-only values of the file differ from the drive&apos;s; they are never written</numerusform>
-        </translation>
-    </message>
     <message>
         <source>the download did not write everything; the report says what the drive holds</source>
         <translation>the download did not write everything; the report says what the drive holds</translation>
+    </message>
+    <message>
+        <source>dry run: %1; nothing was written</source>
+        <translation>dry run: %1; nothing was written</translation>
     </message>
 </context>
 <context>
@@ -1460,34 +1460,6 @@
     <message>
         <source>&lt;b&gt;The file does not fit the drive:&lt;/b&gt;&lt;ul&gt;%1&lt;/ul&gt;</source>
         <translation>&lt;b&gt;The file does not fit the drive:&lt;/b&gt;&lt;ul&gt;%1&lt;/ul&gt;</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n value(s) to write</source>
-        <translation>
-            <numerusform>%n value to write</numerusform>
-            <numerusform>%n values to write</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%n unchanged</source>
-        <translation>
-            <numerusform>%n unchanged</numerusform>
-            <numerusform>%n unchanged</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%n left</source>
-        <translation>
-            <numerusform>%n left</numerusform>
-            <numerusform>%n left</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%n read-only value(s) differ and are never written</source>
-        <translation>
-            <numerusform>%n read-only value differs and is never written</numerusform>
-            <numerusform>%n read-only values differ and are never written</numerusform>
-        </translation>
     </message>
     <message>
         <source>Nothing will be written unless you overrule the checks.</source>

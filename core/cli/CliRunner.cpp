@@ -138,21 +138,14 @@ void CliRunner::scan(ScanOptions options, std::function<void(const DriveDescript
 {
     options.metadata = m_request.useCache ? MetadataSource::Cache : MetadataSource::RefreshCache;
     auto *watcher = new QFutureWatcher<DriveDescription>(this);
-    const bool showProgress = !m_request.quiet && isatty(STDERR_FILENO);
-    if (showProgress) {
-        connect(watcher, &QFutureWatcher<DriveDescription>::progressTextChanged, this,
-                [this, watcher](const QString &text) {
-                    const int range = std::max(1, watcher->progressMaximum());
-                    m_err << QStringLiteral("\r\x1b[K[%1%] %2")
-                                 .arg(watcher->progressValue() * 100 / range, 3)
-                                 .arg(text)
-                          << Qt::flush;
-                });
-    }
+    connect(watcher, &QFutureWatcher<DriveDescription>::progressTextChanged, this,
+            [this, watcher](const QString &text) {
+                progressLine(watcher->progressValue() * 100 / std::max(1, watcher->progressMaximum()),
+                             text);
+            });
     connect(watcher, &QFutureWatcher<DriveDescription>::finished, this,
-            [this, watcher, showProgress, options, next = std::move(next)] {
-                if (showProgress)
-                    m_err << QStringLiteral("\r\x1b[K") << Qt::flush;
+            [this, watcher, options, next = std::move(next)] {
+                progressLine(-1, {});
                 const DriveDescription description = watcher->future().result();
                 watcher->deleteLater();
                 noteScan(description, options.cacheDirectory);

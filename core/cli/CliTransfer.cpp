@@ -103,15 +103,7 @@ void CliRunner::runDownload()
         m_out << plan.text(m_download->drive());
         for (const DownloadSkip &skip : plan.skipped)
             m_out << tr("skipped  %1  %2: %3").arg(skip.id, skip.name, skip.reason) << '\n';
-        m_out << tr("dry run: %n value(s) would be written", nullptr, plan.valueCount())
-              << QStringLiteral(", ") << tr("%n unchanged", nullptr, plan.unchanged)
-              << QStringLiteral(", ") << tr("%n skipped", nullptr, int(plan.skipped.size()))
-              << QStringLiteral("; ") << tr("nothing was written") << '\n';
-        if (plan.readOnlyDiffering) {
-            m_out << tr("%n read-only value(s) of the file differ from the drive's; they are "
-                        "never written", nullptr, plan.readOnlyDiffering)
-                  << '\n';
-        }
+        m_out << tr("dry run: %1; nothing was written").arg(plan.summary()) << '\n';
         done();
     });
     connect(m_download, &DownloadRun::finished, this, [this](const DownloadReport &report) {

@@ -50,6 +50,14 @@ struct ParameterDescription {
 
     quint8 number() const { return quint8(address & 0xFF); }
     bool isSetProgrammable() const { return properties1 & (1u << 11); }
+    // The default in every set the parameter has ([0] alone where it is not set-programmable).
+    std::array<std::optional<qint32>, kParameterSets> defaultValues() const
+    {
+        std::array<std::optional<qint32>, kParameterSets> defaults{};
+        for (std::size_t set = 0; set < (isSetProgrammable() ? defaults.size() : 1); ++set)
+            defaults[set] = defaultValue;
+        return defaults;
+    }
     bool operator==(const ParameterDescription &) const = default;
 };
 

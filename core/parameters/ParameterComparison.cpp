@@ -102,12 +102,8 @@ DriveDescription defaultsOf(const DriveDescription &drive)
 {
     DriveDescription defaults = userSettingsOf(drive);
     for (GroupDescription &group : defaults.groups) {
-        for (ParameterDescription &parameter : group.parameters) {
-            parameter.values = {};
-            const int sets = parameter.isSetProgrammable() ? kParameterSets : 1;
-            for (int set = 0; set < sets; ++set)
-                parameter.values[std::size_t(set)] = parameter.defaultValue;
-        }
+        for (ParameterDescription &parameter : group.parameters)
+            parameter.values = parameter.defaultValues();
     }
     return defaults;
 }

@@ -25,10 +25,7 @@ DriveDescription ParameterList::fromScan(const DriveDescription &scanned)
         for (ParameterDescription &parameter : group.parameters) {
             if (isReadByUpload(parameter))
                 continue;
-            parameter.values = {};
-            const int sets = parameter.isSetProgrammable() ? kParameterSets : 1;
-            for (int set = 0; set < sets; ++set)
-                parameter.values[std::size_t(set)] = parameter.defaultValue;
+            parameter.values = parameter.defaultValues();
             parameter.error.clear();
         }
     }

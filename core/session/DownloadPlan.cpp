@@ -284,6 +284,18 @@ QList<DownloadPlan::Line> DownloadPlan::lines(const DriveDescription &drive) con
     return lines;
 }
 
+QString DownloadPlan::summary() const
+{
+    QString summary = tr("%n value(s) to write", nullptr, valueCount()) + QStringLiteral(", ")
+        + tr("%n unchanged", nullptr, unchanged) + QStringLiteral(", ")
+        + tr("%n left", nullptr, int(skipped.size()));
+    if (readOnlyDiffering) {
+        summary += QStringLiteral("; ")
+            + tr("%n read-only value(s) differ and are never written", nullptr, readOnlyDiffering);
+    }
+    return summary;
+}
+
 QString DownloadPlan::text(const DriveDescription &drive) const
 {
     QString text;

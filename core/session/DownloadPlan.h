@@ -76,6 +76,9 @@ public:
     // For --dry-run and the window's last look: every value to write, drive's and file's.
     QList<Line> lines(const DriveDescription &drive) const;
     QString text(const DriveDescription &drive) const;
+    // "3 values to write, 640 unchanged, 1 left; 2 read-only values differ and are never
+    // written".
+    QString summary() const;
 };
 
 // `drive` is a scan of the drive with its values; `file` a parameter file.

@@ -141,15 +141,7 @@ void DownloadDialog::showPlan(const DownloadPlan &plan)
     m_force->setVisible(!plan.problems.isEmpty());
 
     const int values = plan.valueCount();
-    QString summary = tr("%n value(s) to write", nullptr, values) + QStringLiteral(", ")
-        + tr("%n unchanged", nullptr, plan.unchanged) + QStringLiteral(", ")
-        + tr("%n left", nullptr, int(plan.skipped.size()));
-    if (plan.readOnlyDiffering) {
-        summary += QStringLiteral("; ")
-            + tr("%n read-only value(s) differ and are never written", nullptr,
-                 plan.readOnlyDiffering);
-    }
-    m_summary->setText(summary + QLatin1Char('.'));
+    m_summary->setText(plan.summary() + QLatin1Char('.'));
     m_status->setText(plan.isRefused()
                           ? tr("Nothing will be written unless you overrule the checks.")
                           : values ? tr("Look at what will be written, then write it.")
