@@ -958,10 +958,6 @@
         <translation>Seite B: Parameterdatei</translation>
     </message>
     <message>
-        <source>DriveDesk parameter files (*.json)</source>
-        <translation>DriveDesk-Parameterdateien (*.json)</translation>
-    </message>
-    <message>
         <source>A</source>
         <translation>A</translation>
     </message>

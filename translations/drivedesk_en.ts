@@ -958,10 +958,6 @@
         <translation>Side B: Parameter File</translation>
     </message>
     <message>
-        <source>DriveDesk parameter files (*.json)</source>
-        <translation>DriveDesk parameter files (*.json)</translation>
-    </message>
-    <message>
         <source>A</source>
         <translation>A</translation>
     </message>

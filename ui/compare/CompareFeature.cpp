@@ -112,4 +112,10 @@ void CompareFeature::writeToDrive(const DriveDescription &selection)
         emit writeToDriveRequested(selection);
 }
 
+void CompareFeature::chooseFile(const QString &title,
+                                std::function<void(const QString &path)> chosen)
+{
+    frame().chooseParameterFile(title, std::move(chosen));
+}
+
 } // namespace DriveDesk

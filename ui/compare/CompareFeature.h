@@ -33,6 +33,8 @@ public:
     DriveDescription shownFile() const override;
     int writeToShownFile(const QList<ChosenValue> &values, QStringList *refusals) override;
     bool canWriteToDrive() const override;
+    void chooseFile(const QString &title,
+                    std::function<void(const QString &path)> chosen) override;
     void writeToDrive(const DriveDescription &selection) override;
 
 signals:

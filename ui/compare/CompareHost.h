@@ -7,6 +7,8 @@
 #include <QString>
 #include <QStringList>
 
+#include <functional>
+
 namespace DriveDesk {
 
 // What the compare window takes from the window it belongs to: the drive it is connected to and
@@ -31,6 +33,9 @@ public:
     virtual int writeToShownFile(const QList<ChosenValue> &values, QStringList *refusals) = 0;
     // A drive is connected and someone takes a selection to download.
     virtual bool canWriteToDrive() const = 0;
+    // Asks for a parameter file to read, as the window asks for every file it opens; `chosen`
+    // runs with its path.
+    virtual void chooseFile(const QString &title, std::function<void(const QString &path)> chosen) = 0;
     // Hands the selection (ChosenValues::selectionFor) to the window's download, which checks,
     // shows a last look, writes and reports. Nothing is written here.
     virtual void writeToDrive(const DriveDescription &selection) = 0;

@@ -13,7 +13,6 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QGridLayout>
 #include <QHBoxLayout>
@@ -317,18 +316,8 @@ void CompareWindow::updateSideWidgets()
 
 void CompareWindow::chooseFile(bool a)
 {
-    SideWidgets &side = a ? m_sideA : m_sideB;
-    QString directory = QFileInfo(side.path->text()).absolutePath();
-    if (side.path->text().isEmpty())
-        directory = QDir::homePath();
-    auto *dialog = new QFileDialog(this, a ? tr("Side A: Parameter File") : tr("Side B: Parameter File"),
-                                   directory, tr("DriveDesk parameter files (*.json)"));
-    dialog->setObjectName(QStringLiteral("compareFileDialog"));
-    dialog->setAcceptMode(QFileDialog::AcceptOpen);
-    dialog->setFileMode(QFileDialog::ExistingFile);
-    connect(dialog, &QFileDialog::fileSelected, this,
-            [this, a](const QString &path) { setSide(a, Source::File, path); });
-    openDialog(dialog);
+    m_host->chooseFile(a ? tr("Side A: Parameter File") : tr("Side B: Parameter File"),
+                       [this, a](const QString &path) { setSide(a, Source::File, path); });
 }
 
 std::optional<CompareWindow::Side> CompareWindow::readSide(bool a, const Side *sideA,
