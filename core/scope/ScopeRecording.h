@@ -1,0 +1,33 @@
+#pragma once
+
+#include "ScopeBuffer.h"
+#include "ScopeChannel.h"
+
+#include <QDateTime>
+#include <QString>
+
+namespace DriveDesk {
+
+// One scope recording: its samples with their min/max levels, what each channel carries, and
+// where and when it was taken. What the chart shows, the CSV and the recording file hold.
+// Single-threaded (see SampleStore).
+struct ScopeRecording
+{
+    ScopeRecording();
+
+    ScopeBuffer buffer;
+    ScopeChannels channels; // ScopeSample::kChannelCount entries
+    QDateTime started;      // the host's clock at the first sample, UTC
+    QString source;         // the connection ("HSP5 on /dev/ttyUSB0"), or the file it came from
+
+    // The samples' first and last time in ms; 0 and 0 when there are none.
+    qint64 firstTime() const;
+    qint64 lastTime() const;
+    // The display number of sample `index` on `channel`.
+    double displayValue(qsizetype index, int channel) const
+    {
+        return channels.at(channel).toDisplay(buffer.samples().value(index, channel));
+    }
+};
+
+} // namespace DriveDesk
