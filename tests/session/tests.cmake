@@ -9,3 +9,9 @@ drivedesk_add_test(NAME tst_sessionjobs LABELS unit TIMEOUT 300
 drivedesk_add_test(NAME tst_download LABELS integration TIMEOUT 300
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_download.cpp
     LIBS drivedesk_session drivedesk_bus)
+
+# Scope recording: channels assigned and read back, samples in order with the drive's values,
+# the rate limit, a lost link and a silent drive, over HSP5 and DIN66019II.
+drivedesk_add_test(NAME tst_scoperecording LABELS integration TIMEOUT 300
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scoperecording.cpp
+    LIBS drivedesk_session drivedesk_bus)

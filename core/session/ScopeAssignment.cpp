@@ -1,0 +1,101 @@
+#include "ScopeAssignment.h"
+
+#include "parameters/ParameterId.h"
+#include "parameters/ParameterProperties.h"
+#include "scope/ScopeSample.h"
+
+namespace DriveDesk {
+
+namespace {
+
+// keb_f5_notes: read channel i is assigned at 0010h + 2i (address) and 0011h + 2i (set mask).
+constexpr quint16 kFirstAssignment = 0x0010;
+const QString kAssignmentGroup = QStringLiteral("Sy");
+
+const ParameterDescription *find(const DriveDescription &drive, quint16 address)
+{
+    for (const GroupDescription &group : drive.groups) {
+        for (const ParameterDescription &parameter : group.parameters) {
+            if (parameter.address == address)
+                return &parameter;
+        }
+    }
+    return nullptr;
+}
+
+bool inAssignmentGroup(const DriveDescription &drive, quint16 address)
+{
+    for (const GroupDescription &group : drive.groups) {
+        if (group.id.compare(kAssignmentGroup, Qt::CaseInsensitive) != 0)
+            continue;
+        for (const ParameterDescription &parameter : group.parameters) {
+            if (parameter.address == address)
+                return true;
+        }
+    }
+    return false;
+}
+
+} // namespace
+
+QList<quint16> ScopeAssignmentParameters::all() const
+{
+    QList<quint16> addresses;
+    for (std::size_t channel = 0; channel < source.size(); ++channel)
+        addresses << source[channel] << setMask[channel];
+    return addresses;
+}
+
+std::optional<ScopeAssignmentParameters> scopeAssignmentParameters(const DriveDescription &drive)
+{
+    ScopeAssignmentParameters parameters;
+    for (std::size_t channel = 0; channel < parameters.source.size(); ++channel) {
+        parameters.source[channel] = quint16(kFirstAssignment + 2 * channel);
+        parameters.setMask[channel] = quint16(kFirstAssignment + 2 * channel + 1);
+    }
+    for (const quint16 address : parameters.all()) {
+        if (!inAssignmentGroup(drive, address))
+            return std::nullopt;
+    }
+    return parameters;
+}
+
+QList<const ParameterDescription *> scopeSources(const DriveDescription &drive)
+{
+    QList<const ParameterDescription *> sources;
+    for (const GroupDescription &group : drive.groups) {
+        for (const ParameterDescription &parameter : group.parameters) {
+            if (ParameterProperties(parameter.properties1, parameter.properties2)
+                    .isProcessDataPermitted()) {
+                sources << &parameter;
+            }
+        }
+    }
+    return sources;
+}
+
+ScopeChannels scopeChannels(const DriveDescription &drive, const ScopeAssignment &assignment)
+{
+    ScopeChannels channels(ScopeSample::kChannelCount);
+    for (int index = 0; index < ScopeSample::kChannelCount; ++index) {
+        const std::optional<ChannelAssignment> &assigned = assignment[std::size_t(index)];
+        ScopeChannel &channel = channels[index];
+        if (!assigned)
+            continue; // raw, as the drive has it
+        channel.setMask = assigned->setMask;
+        if (assigned->source < 0 || assigned->source > 0xFFFF) {
+            channel.enabled = false;
+            continue;
+        }
+        const auto address = quint16(assigned->source);
+        channel.source = address;
+        channel.id = ParameterId::format(address, drive);
+        if (const ParameterDescription *parameter = find(drive, address)) {
+            channel.name = parameter->name;
+            channel.scaling = DisplayScaling(parameter->scaling);
+        }
+    }
+    return channels;
+}
+
+} // namespace DriveDesk

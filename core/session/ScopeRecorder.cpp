@@ -1,0 +1,117 @@
+#include "ScopeRecorder.h"
+
+#include "client/DriveClient.h"
+#include "scope/ScopeRecording.h"
+
+namespace DriveDesk {
+
+namespace {
+
+constexpr qint64 kRateWindowMs = 1000;
+
+} // namespace
+
+ScopeRecorder::ScopeRecorder(DriveClient *client, QObject *parent)
+    : QObject(parent)
+    , m_client(client)
+{
+    m_take.setInterval(kTakeIntervalMs);
+    connect(&m_take, &QTimer::timeout, this, &ScopeRecorder::takeSamples);
+    connect(&m_watcher, &QFutureWatcherBase::finished, this, &ScopeRecorder::pollingEnded);
+}
+
+ScopeRecorder::~ScopeRecorder()
+{
+    if (m_job)
+        m_watcher.cancel();
+}
+
+void ScopeRecorder::start(ScopeRecording *recording, ScopeRecorderOptions options)
+{
+    if (m_recording || !recording)
+        return;
+    m_recording = recording;
+    m_options = options;
+    m_status = ScopeRecorderStatus{};
+    m_status.samples = recording->buffer.count();
+    m_clock.reset();
+    m_rateWindow.clear();
+    m_firstTime = recording->buffer.count() == 0 ? 0 : recording->firstTime();
+    m_inbox = std::make_shared<ScopeInbox>();
+    m_job = std::make_shared<ScopePollJob>(m_inbox, options.polling);
+    m_watcher.setFuture(m_client->run(m_job));
+    m_take.start();
+}
+
+void ScopeRecorder::stop()
+{
+    if (m_job)
+        m_job->requestStop();
+}
+
+void ScopeRecorder::takeSamples()
+{
+    if (!m_recording)
+        return;
+    const QList<ScopePoll> polls = m_inbox->take(&m_status.counts);
+    ScopeBuffer &buffer = m_recording->buffer;
+    const qsizetype first = buffer.count();
+    bool durationReached = false;
+    for (const ScopePoll &poll : polls) {
+        const ScopeClock::Tick tick = m_clock.unwrap(poll.timestamp, poll.hostMs);
+        if (buffer.count() == 0) {
+            m_recording->started = QDateTime::currentDateTimeUtc();
+            m_firstTime = tick.time;
+        }
+        if (m_options.durationMs > 0 && tick.time - m_firstTime > m_options.durationMs) {
+            durationReached = true;
+            break;
+        }
+        if (!buffer.append(ScopeSample{tick.time, poll.wide, poll.narrow}))
+            ++m_status.discarded;
+    }
+    const qsizetype added = buffer.count() - first;
+    m_status.samples = buffer.count();
+    if (!polls.isEmpty())
+        updateRate(polls.last().hostMs);
+    if (added > 0)
+        emit samplesAppended(first, added);
+    emit statusChanged(m_status);
+    if (durationReached)
+        stop();
+}
+
+void ScopeRecorder::updateRate(qint64 hostMs)
+{
+    m_rateWindow.emplace_back(hostMs, m_status.samples);
+    while (m_rateWindow.size() > 2 && hostMs - m_rateWindow[1].first >= kRateWindowMs)
+        m_rateWindow.pop_front();
+    const auto &[oldestMs, oldestCount] = m_rateWindow.front();
+    if (hostMs > oldestMs)
+        m_status.rateHz = double(m_status.samples - oldestCount) * 1000.0 / double(hostMs - oldestMs);
+    const ScopeBuffer &buffer = m_recording->buffer;
+    if (buffer.count() > 1) {
+        const qint64 spanMs = m_recording->lastTime() - m_recording->firstTime();
+        if (spanMs > 0)
+            m_status.averageHz = double(buffer.count() - 1) * 1000.0 / double(spanMs);
+    }
+}
+
+void ScopeRecorder::pollingEnded()
+{
+    if (!m_recording)
+        return;
+    takeSamples(); // the last ones the job let out
+    m_take.stop();
+    ScopePollEnd end;
+    const QFuture<ScopePollEnd> future = m_watcher.future();
+    if (future.resultCount() > 0)
+        end = future.result();
+    end.counts = m_status.counts;
+    m_recording = nullptr;
+    m_job.reset();
+    m_inbox.reset();
+    emit finished(end);
+}
+
+} // namespace DriveDesk

@@ -1,0 +1,232 @@
+#include "../client/ClientTestSupport.h"
+#include "bus/SimulatedBus.h"
+#include "bus/SimulatorServer.h"
+#include "scope/ScopeRecording.h"
+#include "session/ScopeChannelsJob.h"
+#include "session/ScopeRecorder.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace DriveDesk;
+using namespace DriveDesk::ClientTest;
+
+namespace {
+
+constexpr quint16 kChannel1Source = 0x0010; // Sy.16: itself no process data
+constexpr quint16 kChannel1Set = 0x0011;    // Sy.17
+
+DriveDescription scanned(Session &s)
+{
+    const QFuture<DriveDescription> scan = s.client->scan();
+    if (!waitFinished(scan) || scan.resultCount() == 0)
+        return {};
+    return scan.result();
+}
+
+ScopeChannelsOutcome assign(Session &s, const DriveDescription &drive, ScopeAssignment choices)
+{
+    const QFuture<ScopeChannelsOutcome> job = s.client->run(
+        std::make_shared<ScopeChannelsJob>(s.client->settings().protocol, drive, choices));
+    if (!waitFinished(job) || job.resultCount() == 0)
+        return {{}, QStringLiteral("the job did not finish"), false};
+    return job.result();
+}
+
+// Records until `done` says so or the recording ends by itself; returns how it ended.
+ScopePollEnd record(ScopeRecorder &recorder, ScopeRecording &recording,
+                    ScopeRecorderOptions options, const std::function<bool()> &done)
+{
+    QSignalSpy finished(&recorder, &ScopeRecorder::finished);
+    recorder.start(&recording, options);
+    if (!QTest::qWaitFor([&] { return done() || !finished.isEmpty(); }, kWaitMs))
+        return {{}, QStringLiteral("the recording neither ended nor got far enough"), false};
+    recorder.stop();
+    if (!QTest::qWaitFor([&] { return !finished.isEmpty(); }, kWaitMs))
+        return {{}, QStringLiteral("the recording did not stop"), false};
+    return finished.first().at(0).value<ScopePollEnd>();
+}
+
+bool timesAscend(const ScopeRecording &recording)
+{
+    for (qsizetype i = 1; i < recording.buffer.count(); ++i) {
+        if (recording.buffer.samples().time(i) < recording.buffer.samples().time(i - 1))
+            return false;
+    }
+    return true;
+}
+
+} // namespace
+
+// The scope against the simulated F5 through a real client: channels assigned and read back,
+// samples recorded in order with the drive's values, the rate limit, a lost link.
+class TestScopeRecording : public QObject
+{
+    Q_OBJECT
+private slots:
+    void initTestCase()
+    {
+        qRegisterMetaType<ScopePollEnd>();
+    }
+
+    void choosesChannelsAndRecordsTheirValues_data()
+    {
+        QTest::addColumn<Protocol>("protocol");
+        QTest::newRow("HSP5") << Protocol::Hsp5;
+        QTest::newRow("DIN66019II") << Protocol::Din66019II;
+    }
+
+    void choosesChannelsAndRecordsTheirValues()
+    {
+        QFETCH(Protocol, protocol);
+        Session s(simulated(protocol, fast()));
+        QVERIFY(s.connected());
+        const DriveDescription drive = scanned(s);
+        QVERIFY(scopeAssignmentParameters(drive).has_value());
+
+        // A wide and a narrow channel on parameters whose values do not move.
+        ScopeAssignment choices;
+        choices[0] = ChannelAssignment{kMaxSpeedForward, 0x01};
+        choices[2] = ChannelAssignment{kMotorVoltage, 0x01};
+        choices[3] = ChannelAssignment{ChannelAssignment::kOff, 0x01};
+        const ScopeChannelsOutcome outcome = assign(s, drive, choices);
+        QVERIFY2(outcome.error.isEmpty(), qPrintable(outcome.error));
+        QCOMPARE(outcome.assignment[0], choices[0]);
+        QCOMPARE(outcome.assignment[2], choices[2]);
+        QCOMPARE(outcome.assignment[3], choices[3]);
+        QVERIFY(outcome.assignment[1].has_value()); // left alone, but read back all the same
+
+        ScopeRecording recording;
+        recording.channels = scopeChannels(drive, outcome.assignment);
+        QCOMPARE(recording.channels[0].id, QStringLiteral("op.11"));
+        QCOMPARE(recording.channels[0].unit(), QStringLiteral("1/min"));
+        QCOMPARE(recording.channels[2].id, QStringLiteral("dr.04"));
+        QVERIFY(!recording.channels[3].enabled);
+
+        ScopeRecorder recorder(s.client.get());
+        const ScopePollEnd end = record(recorder, recording, {},
+                                        [&] { return recording.buffer.count() >= 200; });
+        QVERIFY2(end.reason.isEmpty(), qPrintable(end.reason));
+        QVERIFY(recording.buffer.count() >= 200);
+        QCOMPARE(end.counts.answered, recording.buffer.count());
+        QCOMPARE(end.counts.lost + end.counts.failed, 0);
+        QVERIFY(recording.started.isValid());
+        QVERIFY(timesAscend(recording));
+        for (qsizetype i = 0; i < recording.buffer.count(); ++i) {
+            QCOMPARE(recording.buffer.samples().value(i, 0), kMaxSpeedDefault);
+            QCOMPARE(recording.buffer.samples().value(i, 2), 400);
+            QCOMPARE(recording.buffer.samples().value(i, 3), 0);
+        }
+    }
+
+    void refusesSourcesTheDriveDoesNotPermit()
+    {
+        Session s(simulated(Protocol::Hsp5, fast()));
+        QVERIFY(s.connected());
+        const DriveDescription drive = scanned(s);
+        const qsizetype sentBefore = s.records().size();
+        ScopeAssignment choices;
+        choices[1] = ChannelAssignment{kChannel1Source, 0x01};
+        const ScopeChannelsOutcome outcome = assign(s, drive, choices);
+        QVERIFY2(outcome.error.contains(QStringLiteral("Sy.16")), qPrintable(outcome.error));
+        QCOMPARE(s.records().size(), sentBefore); // nothing was sent
+        for (const ParameterDescription *source : scopeSources(drive))
+            QVERIFY(source->address != kChannel1Source && source->address != kChannel1Set);
+    }
+
+    void aDriveWithoutAssignmentIsRecordedRaw()
+    {
+        DriveDescription drive;
+        GroupDescription group;
+        group.id = QStringLiteral("ru");
+        group.address = 0x0200;
+        group.parameters << ParameterDescription{};
+        drive.groups << group;
+        QVERIFY(!scopeAssignmentParameters(drive));
+        const ScopeChannels channels = scopeChannels(drive, ScopeAssignment{});
+        QCOMPARE(channels.size(), 4);
+        QCOMPARE(channels[1].title(1), QStringLiteral("Channel 2"));
+        QVERIFY(!channels[1].source);
+        QCOMPARE(channels[1].toDisplay(-1234), -1234.0);
+
+        Session s(simulated(Protocol::Hsp5, fast()));
+        ScopeAssignment choices;
+        choices[0] = ChannelAssignment{kMaxSpeedForward, 1};
+        const ScopeChannelsOutcome outcome = assign(s, drive, choices);
+        QVERIFY(outcome.error.contains(QStringLiteral("Sy.16")));
+    }
+
+    void theRateLimitHolds()
+    {
+        Session s(simulated(Protocol::Hsp5, fast()));
+        QVERIFY(s.connected());
+        ScopeRecording recording;
+        ScopeRecorder recorder(s.client.get());
+        ScopeRecorderOptions options;
+        options.polling.maxRateHz = 100;
+        options.durationMs = 500;
+        const ScopePollEnd end = record(recorder, recording, options, [] { return false; });
+        QVERIFY2(end.reason.isEmpty(), qPrintable(end.reason));
+        // The duration is the drive's: 500 ms at 100 Hz are 51 samples at most, give or take
+        // the first poll's start.
+        QVERIFY(recording.lastTime() - recording.firstTime() <= 500);
+        QVERIFY2(recording.buffer.count() <= 53, qPrintable(QString::number(recording.buffer.count())));
+        QVERIFY(recording.buffer.count() >= 10);
+    }
+
+    void aLostLinkEndsTheRecordingAndKeepsItsSamples()
+    {
+        SimulatorServer server(Protocol::Hsp5, fast());
+        QString error;
+        QVERIFY2(server.listenTcp(QStringLiteral("127.0.0.1"), 0, &error), qPrintable(error));
+        ConnectionSettings settings;
+        settings.kind = ConnectionSettings::Kind::Tcp;
+        settings.host = QStringLiteral("127.0.0.1");
+        settings.port = server.tcpPort();
+        ClientOptions clientOptions;
+        clientOptions.timeoutMs = 10000; // the lost link, not a timeout, must end it
+        Session s(settings, clientOptions);
+        QVERIFY(s.connected());
+        ScopeRecording recording;
+        ScopeRecorder recorder(s.client.get());
+        const ScopePollEnd end = record(recorder, recording, {}, [&] {
+            if (recording.buffer.count() >= 50)
+                server.close();
+            return false;
+        });
+        QVERIFY(end.linkLost);
+        QVERIFY2(!end.reason.isEmpty(), "no reason given");
+        QVERIFY(recording.buffer.count() >= 50);
+        QCOMPARE(end.counts.answered, recording.buffer.count());
+    }
+
+    void aSilentDriveEndsTheRecording()
+    {
+        SimulatorServer server(Protocol::Hsp5, fast());
+        QString error;
+        QVERIFY2(server.listenTcp(QStringLiteral("127.0.0.1"), 0, &error), qPrintable(error));
+        ConnectionSettings settings;
+        settings.kind = ConnectionSettings::Kind::Tcp;
+        settings.host = QStringLiteral("127.0.0.1");
+        settings.port = server.tcpPort();
+        ClientOptions clientOptions;
+        clientOptions.timeoutMs = 50;
+        clientOptions.retries = 0;
+        Session s(settings, clientOptions);
+        QVERIFY(s.connected());
+        ScopeRecording recording;
+        ScopeRecorder recorder(s.client.get());
+        const ScopePollEnd end = record(recorder, recording, {}, [&] {
+            if (recording.buffer.count() >= 50)
+                server.bus().setSilent(true);
+            return false;
+        });
+        QVERIFY(end.linkLost);
+        QVERIFY2(end.reason.contains(QStringLiteral("stopped answering")), qPrintable(end.reason));
+        QVERIFY(end.counts.lost >= 3);
+        QVERIFY(recording.buffer.count() >= 50);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestScopeRecording)
+#include "tst_scoperecording.moc"
