@@ -36,6 +36,7 @@ ScopeChannelsJob::ScopeChannelsJob(Protocol protocol, const DriveDescription &dr
     const bool anyChoice = std::any_of(choices.begin(), choices.end(),
                                        [](const auto &choice) { return choice.has_value(); });
     if (!m_parameters) {
+        m_outcome.refusedChoice = anyChoice;
         if (anyChoice)
             m_outcome.error = tr("This drive has no channel-assignment parameters (Sy.16 to "
                                  "Sy.23): its channels are recorded as it has them assigned.");
@@ -71,6 +72,7 @@ ScopeChannelsJob::ScopeChannelsJob(Protocol protocol, const DriveDescription &dr
         m_writes << Write{sourceParameter, source && source->isSetProgrammable(), choice->source}
                  << Write{maskParameter, mask && mask->isSetProgrammable(), choice->setMask};
     }
+    m_outcome.refusedChoice = !m_outcome.error.isEmpty();
     m_reads = m_parameters->all();
 }
 

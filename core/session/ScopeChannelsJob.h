@@ -14,6 +14,7 @@ struct ScopeChannelsOutcome
     ScopeAssignment assignment; // as read back; empty entries where it could not be read
     QString error;              // the first refusal or failure, in words; empty when all went well
     bool connectionFailed = false;
+    bool refusedChoice = false; // a choice was not allowed: nothing was sent
 };
 
 // Puts the sources a user chose on the scope channels and reads every channel's assignment

@@ -176,6 +176,8 @@ void DriveState::advanceTo(qint64 nowMs)
             next = std::min(next, nextDemoChange(t, period));
         if (t + kRecordPeriodMs > fineFrom)
             next = std::min(next, (t / kRecordPeriodMs + 1) * kRecordPeriodMs);
+        else // one step to where the records begin, not past them
+            next = std::min(next, fineFrom / kRecordPeriodMs * kRecordPeriodMs);
         m_clockMs = next;
         m_motor.run(double(next - t) / 1000, targetRpm(t), settings);
         t = next;

@@ -3,8 +3,10 @@
 #include "bus/SimulatorServer.h"
 #include "scope/ScopeRecording.h"
 #include "session/ScopeChannelsJob.h"
+#include "session/ScopeOfflineJob.h"
 #include "session/ScopeRecorder.h"
 
+#include <QFutureWatcher>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -225,6 +227,45 @@ private slots:
         QVERIFY2(end.reason.contains(QStringLiteral("stopped answering")), qPrintable(end.reason));
         QVERIFY(end.counts.lost >= 3);
         QVERIFY(recording.buffer.count() >= 50);
+    }
+
+    void readsTheOfflineRecordsOverDin66019II()
+    {
+        Session s(simulated(Protocol::Din66019II, fast()));
+        QVERIFY(s.connected());
+        const DriveDescription drive = scanned(s);
+        ScopeAssignment choices;
+        choices[0] = ChannelAssignment{kMaxSpeedForward, 0x01};
+        choices[2] = ChannelAssignment{kMotorVoltage, 0x01};
+        QVERIFY(assign(s, drive, choices).error.isEmpty());
+        QTest::qWait(800); // the drive keeps its last 64 records, one each 10 ms
+
+        QFutureWatcher<ScopeOfflineRecords> watcher;
+        QSignalSpy progress(&watcher, &QFutureWatcherBase::progressValueChanged);
+        watcher.setFuture(s.client->run(std::make_shared<ScopeOfflineJob>(10)));
+        QVERIFY(waitFinished(watcher.future()));
+        const ScopeOfflineRecords records = watcher.future().result();
+        QVERIFY2(records.error.isEmpty(), qPrintable(records.error));
+        QCOMPARE(records.expected, 64);
+        QCOMPARE(records.samples.size(), 64);
+        QCOMPARE(records.clipped, 0);
+        QVERIFY(!progress.isEmpty());
+        for (qsizetype i = 0; i < records.samples.size(); ++i) {
+            QCOMPARE(records.samples[i].time, i * 10);
+            QCOMPARE(records.samples[i].channel(0), kMaxSpeedDefault);
+            QCOMPARE(records.samples[i].channel(2), 400);
+        }
+    }
+
+    void offlineRecordsNeedAConnectionThatCarriesThem()
+    {
+        Session s(simulated(Protocol::Hsp5, fast())); // seed 000 has no service 21
+        QVERIFY(s.connected());
+        const QFuture<ScopeOfflineRecords> job = s.client->run(std::make_shared<ScopeOfflineJob>());
+        QVERIFY(waitFinished(job));
+        QVERIFY2(job.result().error.contains(QStringLiteral("service 21")),
+                 qPrintable(job.result().error));
+        QVERIFY(job.result().samples.isEmpty());
     }
 };
 
