@@ -4,6 +4,8 @@
 #include "parameters/ParameterProperties.h"
 #include "scope/ScopeSample.h"
 
+#include <limits>
+
 namespace DriveDesk {
 
 namespace {
@@ -72,6 +74,12 @@ QList<const ParameterDescription *> scopeSources(const DriveDescription &drive)
         }
     }
     return sources;
+}
+
+bool fitsNarrowChannel(const ParameterDescription &parameter)
+{
+    return parameter.minimum >= std::numeric_limits<qint16>::min()
+           && parameter.maximum <= std::numeric_limits<qint16>::max();
 }
 
 ScopeChannels scopeChannels(const DriveDescription &drive, const ScopeAssignment &assignment)

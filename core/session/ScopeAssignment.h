@@ -39,6 +39,10 @@ using ScopeAssignment = std::array<std::optional<ChannelAssignment>, 4>; // empt
 // data, in the drive's order.
 QList<const ParameterDescription *> scopeSources(const DriveDescription &drive);
 
+// Whether the parameter's values fit channels 3 and 4, which carry 16 bits: beyond its limits
+// a value arrives cut to its low 16 bits.
+bool fitsNarrowChannel(const ParameterDescription &parameter);
+
 // The channels as a recording shows them: the source's id, name and display scaling where the
 // assignment names a parameter the scan found, the bare address where it names another, raw
 // ("Channel 2") where the assignment is not known.
