@@ -158,19 +158,27 @@ QString DisplayScaling::format(qint32 raw, bool withUnit) const
     if (!reason.isEmpty())
         return tr("%1 (no scaling: %2)").arg(raw).arg(reason);
 
+    const std::optional<qint64> scaled = toFixedPoint(raw);
+    if (!scaled)
+        return tr("%1 (no scaling: value + offset is 0)").arg(raw);
+    const bool trim = representation() == Representation::VariableDecimals;
+    return fixedPoint(*scaled, decimals(), trim) + suffix;
+}
+
+std::optional<qint64> DisplayScaling::toFixedPoint(qint32 raw) const
+{
+    // The checks of invalidReason() without its texts.
+    if (representation() == Representation::Hexadecimal || calculationMode() > 1
+        || m_data.divisor == 0)
+        return std::nullopt;
     const int shown = decimals();
     const qint64 shifted = qint64(raw) + m_data.offset;
-    qint64 scaled = 0;
-    if (calculationMode() == 0) {
-        scaled = divideRounded(shifted * m_data.multiplier * kPow10[shown], m_data.divisor);
-    } else {
-        const qint64 denominator = shifted * m_data.divisor;
-        if (denominator == 0)
-            return tr("%1 (no scaling: value + offset is 0)").arg(raw);
-        scaled = divideRounded(qint64(m_data.multiplier) * kPow10[shown], denominator);
-    }
-    const bool trim = representation() == Representation::VariableDecimals;
-    return fixedPoint(scaled, shown, trim) + suffix;
+    if (calculationMode() == 0)
+        return divideRounded(shifted * m_data.multiplier * kPow10[shown], m_data.divisor);
+    const qint64 denominator = shifted * m_data.divisor;
+    if (denominator == 0)
+        return std::nullopt;
+    return divideRounded(qint64(m_data.multiplier) * kPow10[shown], denominator);
 }
 
 std::optional<qint32> DisplayScaling::parse(const QString &text, QString *error) const

@@ -52,6 +52,11 @@ public:
 
     // The unrounded display number, e.g. for plotting; nothing where the scaling is invalid.
     std::optional<double> toDisplay(qint32 raw) const;
+    // The display number in units of 10^-decimals(), rounded half away from zero: what format()
+    // shows, as an integer (1250 for "12.50"). Nothing for hexadecimal, an invalid scaling, or
+    // calculation mode 1 with raw + offset = 0. Allocates nothing: the scope's CSV export
+    // formats millions of values with it.
+    std::optional<qint64> toFixedPoint(qint32 raw) const;
     // "12.50 Hz", "-3.5 %", "00FFh"; an invalid scaling gives "1234 (no scaling: divisor 0)".
     // The decimal separator is the default QLocale's: "12,50 Hz" where the window speaks German.
     QString format(qint32 raw, bool withUnit = true) const;

@@ -124,6 +124,18 @@ private slots:
         QCOMPARE(scaling(30000, 1, 0, flags(0, 5)).format(1), QStringLiteral("0"));
     }
 
+    void fixedPointIsWhatFormatShows()
+    {
+        QCOMPARE(scaling(100, 1, 0, flags(0, 1)).toFixedPoint(-125), -13); // "-1.3"
+        QCOMPARE(scaling(8, 5, -100, flags(kVolt, 1)).toFixedPoint(260), 1000); // "100.0 V"
+        QCOMPARE(scaling(1000, 1, 0, flags(kHz, 5)).toFixedPoint(12500), 125000); // "12.5 Hz"
+        QCOMPARE(scaling(1, 1000, 0, flags(kHz, 0, 1)).toFixedPoint(-8), -125);
+        QCOMPARE(scaling(1, 1000, 0, flags(kHz, 0, 1)).toFixedPoint(0), std::nullopt);
+        QCOMPARE(scaling(0, 0, 0, flags(0, 6)).toFixedPoint(255), std::nullopt); // hexadecimal
+        QCOMPARE(scaling(0, 1, 0, flags(kHz, 2)).toFixedPoint(5), std::nullopt); // divisor 0
+        QCOMPARE(scaling(1, 1, 0, flags(0, 0, 2)).toFixedPoint(5), std::nullopt); // mode 2
+    }
+
     void hexadecimalShowsTheRawBits()
     {
         const DisplayScaling hex = scaling(0, 0, 0, flags(0, 6));
