@@ -1,21 +1,67 @@
 // Scope storage: appending four channels of a million samples, drawing them into 1600 columns,
-// and the memory a sample takes.
-#include "scope/ScopeBuffer.h"
+// the memory a sample takes, and exporting them as CSV.
 #include "scope/ScopeClock.h"
+#include "scope/ScopeCsv.h"
+#include "scope/ScopeRecording.h"
 
+#include <QBuffer>
 #include <QElapsedTimer>
+#include <QTemporaryDir>
 
 #include <cmath>
 #include <cstdio>
 
 using namespace DriveDesk;
 
+namespace {
+
+// Channels as a recording has them: scaled with one and two decimals, raw, variable decimals.
+void describeChannels(ScopeRecording &recording)
+{
+    const auto scaled = [](qint16 divisor, int representation, quint16 unit) {
+        ScopeChannel channel;
+        channel.source = 0x0203;
+        channel.id = QStringLiteral("ru.03");
+        channel.name = QStringLiteral("Actual frequency");
+        channel.scaling = DisplayScaling({0x0203, divisor, 1, 0, quint16(unit | representation << 8)});
+        return channel;
+    };
+    recording.channels[0] = scaled(10, 1, 18);
+    recording.channels[2] = scaled(100, 2, 21);
+    recording.channels[3] = scaled(1000, 5, 37);
+}
+
+void exportCsv(const ScopeRecording &recording)
+{
+    QElapsedTimer timer;
+    QBuffer memory;
+    memory.open(QIODevice::WriteOnly);
+    timer.start();
+    QString error;
+    if (!writeScopeCsv(memory, recording, {}, &error))
+        std::printf("CSV failed: %s\n", qPrintable(error));
+    const double memoryMs = timer.nsecsElapsed() / 1e6;
+    std::printf("CSV of %lld rows x 4 channels into memory: %.1f ms (%.1f MB)\n",
+                qlonglong(recording.buffer.count()), memoryMs, memory.size() / 1e6);
+
+    QTemporaryDir dir;
+    timer.restart();
+    if (!saveScopeCsv(dir.filePath(QStringLiteral("scope.csv")), recording, {}, &error))
+        std::printf("CSV failed: %s\n", qPrintable(error));
+    std::printf("CSV of %lld rows x 4 channels saved to a file: %.1f ms\n",
+                qlonglong(recording.buffer.count()), timer.nsecsElapsed() / 1e6);
+}
+
+} // namespace
+
 int main()
 {
     constexpr qsizetype kSamples = 1'000'000;
     constexpr int kColumns = 1600;
 
-    ScopeBuffer buffer;
+    ScopeRecording recording;
+    describeChannels(recording);
+    ScopeBuffer &buffer = recording.buffer;
     ScopeClock clock;
     QElapsedTimer timer;
     timer.start();
@@ -61,5 +107,7 @@ int main()
     std::printf("bytes a sample: %.2f in the store, %.2f with the min/max levels (checksum %lld)\n",
                 double(buffer.samples().bytesUsed()) / buffer.count(),
                 double(buffer.bytesUsed()) / buffer.count(), qlonglong(sink));
+
+    exportCsv(recording);
     return 0;
 }
