@@ -53,8 +53,8 @@ int main(int argc, char **argv)
     DriveDesk::CliRunner runner(*request);
     QObject::connect(&runner, &DriveDesk::CliRunner::finished, &app, &QCoreApplication::exit,
                      Qt::QueuedConnection);
-    // A download stops after the value on its way and reports what it wrote; anything else
-    // just ends (exit 130, as a shell reports an interrupted program).
+    // A download stops after the value on its way and reports what it wrote, a scope recording
+    // stops and writes what it recorded; anything else just ends (exit 130, as a shell reports an interrupted program).
     std::unique_ptr<QSocketNotifier> interrupts;
     if (::socketpair(AF_UNIX, SOCK_STREAM, 0, interruptSockets) == 0) {
         interrupts = std::make_unique<QSocketNotifier>(interruptSockets[1], QSocketNotifier::Read);

@@ -9,6 +9,8 @@
 #include "parameters/ParameterFormat.h"
 #include "parameters/ParameterId.h"
 #include "parameters/ParameterProperties.h"
+#include "session/ScopeRecorder.h"
+#include "scope/ScopeRecording.h"
 #include "session/PasswordLevelJob.h"
 #include "session/ValueChange.h"
 
@@ -39,7 +41,10 @@ CliRunner::CliRunner(CliRequest request, QObject *parent)
     , m_err(stderr)
 {}
 
-CliRunner::~CliRunner() = default;
+CliRunner::~CliRunner()
+{
+    delete m_recorder; // before the recording it writes to
+}
 
 void CliRunner::start()
 {
@@ -90,6 +95,7 @@ void CliRunner::runCommand()
     case CliRequest::Command::Diff: runDiff(); break;
     case CliRequest::Command::Upload: runUpload(); break;
     case CliRequest::Command::Download: runDownload(); break;
+    case CliRequest::Command::Scope: runScope(); break;
     }
 }
 

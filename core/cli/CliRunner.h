@@ -2,6 +2,7 @@
 
 #include "cli/CommandLine.h"
 #include "client/DriveClient.h"
+#include "scope/ScopeChannel.h"
 
 #include <QObject>
 #include <QTextStream>
@@ -11,6 +12,9 @@
 namespace DriveDesk {
 
 class DownloadRun;
+class ScopeRecorder;
+struct ScopePollEnd;
+struct ScopeRecording;
 struct WriteOutcome;
 
 // Runs one drivedesk-cli command against a drive: connects, does the work asynchronously
@@ -25,7 +29,8 @@ public:
     ~CliRunner() override;
 
     void start();
-    // Ctrl+C: a download stops after the value on its way and reports what it wrote. False
+    // Ctrl+C: a download stops after the value on its way and reports what it wrote; a scope
+    // recording stops and writes what it has. False
     // when nothing is under way that must end that way: the caller may just quit.
     bool interrupt();
 
@@ -50,6 +55,10 @@ private:
     // Drive to file and file to drive (CliTransfer.cpp).
     void runUpload();
     void runDownload();
+    // Records the drive's scope data and writes it as CSV (CliScope.cpp).
+    void runScope();
+    void record(const QList<ScopeChannel> &channels);
+    void recorded(const ScopePollEnd &end);
     void progressLine(int percent, const QString &text);
     // What a scan brought besides the description: its warnings, metadata from the cache.
     void noteScan(const DriveDescription &drive, const QString &cacheDirectory);
@@ -75,6 +84,8 @@ private:
     bool m_cacheNoted = false;
     QList<DriveDescription> m_files; // loadFiles(): the files of diff, upload, download
     DownloadRun *m_download = nullptr;
+    std::unique_ptr<ScopeRecording> m_recording;
+    ScopeRecorder *m_recorder = nullptr;
 };
 
 } // namespace DriveDesk

@@ -4,6 +4,7 @@
 #include "parameters/ParameterDocument.h"
 #include "parameters/ParameterList.h"
 #include "session/DownloadRun.h"
+#include "session/ScopeRecorder.h"
 
 #include <unistd.h>
 
@@ -11,6 +12,10 @@ namespace DriveDesk {
 
 bool CliRunner::interrupt()
 {
+    if (m_recorder && m_recorder->isRecording() && !m_finished) {
+        m_recorder->stop();
+        return true;
+    }
     if (!m_download || m_finished)
         return false;
     if (m_download->stage() == DownloadRun::Stage::Writing)

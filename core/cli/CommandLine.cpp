@@ -53,9 +53,65 @@ QString usage()
         "                               parameter file, drive (needs --connect) or defaults\n"
         "                               (the other side's defaults). Exit 0 equal,\n"
         "                               1 different, 2 a file that cannot be read\n"
+        "  scope --csv FILE [--channels ru.3,ru.9,...] [--duration 10s] [--rate HZ]\n"
+        "                               record the drive's scope data (service 18) and\n"
+        "                               write it as CSV: time in ms, then one column per\n"
+        "                               channel in display units. --channels puts up to\n"
+        "                               four parameters on channels 1..4 (an F5's Sy.16..\n"
+        "                               Sy.23; channels 3 and 4 carry 16 bits) and turns\n"
+        "                               the others off; without it the channels stay as\n"
+        "                               the drive has them. --duration: 10s, 500ms, 2min;\n"
+        "                               --rate limits the polls a second. Ctrl+C stops\n"
+        "                               early and writes what was recorded\n"
         "\n"
         "Exit status: 0 done, 1 the drive refused or the work was not completed, 2 bad\n"
         "input (nothing was sent), 3 no connection.\n");
+}
+
+} // namespace
+
+namespace {
+
+// The scope's options: they belong to scope alone, which needs --csv.
+bool parseScopeOptions(const QCommandLineParser &parser, CliRequest &request, QString *error)
+{
+    const bool scope = request.command == CliRequest::Command::Scope;
+    for (const char *name : {"channels", "duration", "rate", "csv"}) {
+        if (!scope && parser.isSet(QLatin1String(name))) {
+            *error = QStringLiteral("--%1 belongs to scope").arg(QLatin1String(name));
+            return false;
+        }
+    }
+    if (!scope)
+        return true;
+    request.csvFile = parser.value(QStringLiteral("csv"));
+    if (request.csvFile.isEmpty()) {
+        *error = QStringLiteral("scope needs --csv FILE: where to write what it records");
+        return false;
+    }
+    if (parser.isSet(QStringLiteral("channels"))) {
+        for (const QString &id : parser.value(QStringLiteral("channels")).split(QLatin1Char(',')))
+            request.channels << id.trimmed();
+        if (request.channels.size() > 4 || request.channels.contains(QString())) {
+            *error = QStringLiteral("--channels takes one to four parameters, e.g. ru.3,ru.9");
+            return false;
+        }
+    }
+    if (parser.isSet(QStringLiteral("duration"))) {
+        const auto ms = parseDuration(parser.value(QStringLiteral("duration")), error);
+        if (!ms)
+            return false;
+        request.durationMs = *ms;
+    }
+    if (parser.isSet(QStringLiteral("rate"))) {
+        bool ok = false;
+        request.rateHz = parser.value(QStringLiteral("rate")).toDouble(&ok);
+        if (!ok || request.rateHz <= 0 || request.rateHz > 100000) {
+            *error = QStringLiteral("--rate takes polls a second, more than 0 and at most 100000");
+            return false;
+        }
+    }
+    return true;
 }
 
 } // namespace
@@ -84,6 +140,28 @@ std::optional<quint8> parseSetList(const QString &text, QString *error)
     return mask;
 }
 
+std::optional<qint64> parseDuration(const QString &text, QString *error)
+{
+    static const QRegularExpression pattern(
+        QStringLiteral("^\\s*([0-9]+(?:[.,][0-9]+)?)\\s*(ms|s|min|m|h)?\\s*$"),
+        QRegularExpression::CaseInsensitiveOption);
+    const QRegularExpressionMatch match = pattern.match(text);
+    if (match.hasMatch()) {
+        const double number = match.captured(1).replace(QLatin1Char(','), QLatin1Char('.')).toDouble();
+        const QString unit = match.captured(2).toLower();
+        const double factor = unit == QLatin1String("ms")                              ? 1.0
+                              : unit == QLatin1String("min") || unit == QLatin1String("m") ? 60000.0
+                              : unit == QLatin1String("h")                               ? 3600000.0
+                                                                                         : 1000.0;
+        const double ms = number * factor;
+        if (ms >= 1 && ms <= 24 * 3600000.0)
+            return qint64(ms + 0.5);
+    }
+    *error = QStringLiteral("'%1' is not a duration: use e.g. 10s, 500ms or 2min (at most 24 h)")
+                 .arg(text);
+    return std::nullopt;
+}
+
 std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString *error,
                                            QString *helpText)
 {
@@ -104,8 +182,12 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     const QCommandLineOption password(QStringLiteral("password"), {}, QStringLiteral("n"));
     const QCommandLineOption dryRun(QStringLiteral("dry-run"));
     const QCommandLineOption force(QStringLiteral("force"));
+    const QCommandLineOption channels(QStringLiteral("channels"), {}, QStringLiteral("list"));
+    const QCommandLineOption duration(QStringLiteral("duration"), {}, QStringLiteral("time"));
+    const QCommandLineOption rate(QStringLiteral("rate"), {}, QStringLiteral("hz"));
+    const QCommandLineOption csv(QStringLiteral("csv"), {}, QStringLiteral("file"));
     parser.addOptions({help, timeout, quiet, format, values, set, sets, raw, noCache, password,
-                       dryRun, force});
+                       dryRun, force, channels, duration, rate, csv});
     *helpText = usage();
 
     // A negative value ("write uF.07 -5") is not an option: shield such words from the parser.
@@ -204,8 +286,11 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
         request.command = CliRequest::Command::Upload;
     } else if (command == QLatin1String("download")) {
         request.command = CliRequest::Command::Download;
+    } else if (command == QLatin1String("scope")) {
+        request.command = CliRequest::Command::Scope;
     } else {
-        const QString commands = QStringLiteral("info, scan, read, write, upload, download or diff");
+        const QString commands
+            = QStringLiteral("info, scan, read, write, upload, download, diff or scope");
         *error = command.isEmpty()
             ? QStringLiteral("no command: use %1").arg(commands)
             : QStringLiteral("unknown command '%1': use %2").arg(positional.value(0), commands);
@@ -268,6 +353,8 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
         *error = QStringLiteral("--format csv belongs to scan");
         return std::nullopt;
     }
+    if (!parseScopeOptions(parser, request, error))
+        return std::nullopt;
     if (request.command != CliRequest::Command::Read && request.set) {
         *error = QStringLiteral("--set belongs to read (write takes --sets)");
         return std::nullopt;

@@ -12,7 +12,7 @@ namespace DriveDesk {
 
 // What `drivedesk-cli` was asked to do, parsed and checked before anything is sent.
 struct CliRequest {
-    enum class Command : quint8 { Info, Scan, Read, Write, Diff, Upload, Download };
+    enum class Command : quint8 { Info, Scan, Read, Write, Diff, Upload, Download, Scope };
     enum class Format : quint8 { Table, Json, Csv };
 
     ConnectionSettings connection;
@@ -33,12 +33,22 @@ struct CliRequest {
     bool quiet = false;       // no progress on stderr
     bool useCache = true;     // metadata of a known kind of drive from the metadata cache
     std::optional<qint32> password; // entered (ud.01) before the command
+    // scope: the sources for channels 1..4 in order (empty: as the drive has them assigned),
+    // how long to record, an optional rate limit, and the CSV to write
+    QStringList channels;
+    qint64 durationMs = 10000;
+    double rateHz = 0;
+    QString csvFile;
 };
 
 // The usage text and the parse. Returns nothing and sets *error (naming the bad argument)
 // when the arguments do not make sense; *helpText is set for --help.
 std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString *error,
                                            QString *helpText);
+
+// "10s", "500ms", "1.5s", "2min" or a bare number of seconds -> ms; nothing and *error on
+// anything else or a duration outside 1 ms..24 h.
+std::optional<qint64> parseDuration(const QString &text, QString *error);
 
 // "0,2-4,7" or "all" -> bit mask of sets 0..7; nothing and *error on anything else.
 std::optional<quint8> parseSetList(const QString &text, QString *error);

@@ -2,3 +2,5 @@ drivedesk_add_test(NAME tst_cli LABELS unit integration SOURCES cli/tst_cli.cpp 
 add_dependencies(tst_cli drivedesk-cli drivedesk-sim)
 drivedesk_add_test(NAME tst_clitransfer LABELS integration SOURCES cli/tst_clitransfer.cpp LIBS Qt6::Core)
 add_dependencies(tst_clitransfer drivedesk-cli drivedesk-sim)
+drivedesk_add_test(NAME tst_cliscope LABELS integration SOURCES cli/tst_cliscope.cpp LIBS Qt6::Core)
+add_dependencies(tst_cliscope drivedesk-cli drivedesk-sim)

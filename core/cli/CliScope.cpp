@@ -1,0 +1,113 @@
+// drivedesk-cli scope: records the drive's scope data for a while and writes it as CSV.
+#include "CliRunner.h"
+
+#include "parameters/ParameterId.h"
+#include "scope/ScopeCsv.h"
+#include "scope/ScopeRecording.h"
+#include "session/ScopeChannelsJob.h"
+#include "session/ScopeRecorder.h"
+
+namespace DriveDesk {
+
+void CliRunner::runScope()
+{
+    // The scan finds the assignment parameters and every source's name, unit and scaling.
+    ScanOptions metadata;
+    metadata.values = false;
+    metadata.plaintexts = false;
+    scan(metadata, [this](const DriveDescription &drive) {
+        if (!drive.incompleteReason.isEmpty())
+            return fail(1, tr("the drive could not be read: %1").arg(drive.incompleteReason));
+        ScopeAssignment choices;
+        if (!m_request.channels.isEmpty()) {
+            for (std::size_t channel = 0; channel < choices.size(); ++channel) {
+                choices[channel] = ChannelAssignment{ChannelAssignment::kOff, 0x01};
+                if (qsizetype(channel) >= m_request.channels.size())
+                    continue;
+                QString error;
+                const auto address = ParameterId::parse(m_request.channels.at(qsizetype(channel)),
+                                                        drive, &error);
+                if (!address)
+                    return fail(2, error);
+                choices[channel]->source = *address;
+            }
+        }
+        const auto job = std::make_shared<ScopeChannelsJob>(m_request.connection.protocol, drive,
+                                                            choices);
+        m_client->run(job).then(this, [this, drive](const ScopeChannelsOutcome &outcome) {
+            if (outcome.refusedChoice)
+                return fail(2, outcome.error);
+            if (!outcome.error.isEmpty())
+                return fail(outcome.connectionFailed ? 3 : 1,
+                            tr("the channels could not be assigned: %1").arg(outcome.error));
+            record(scopeChannels(drive, outcome.assignment));
+        });
+    });
+}
+
+void CliRunner::record(const QList<ScopeChannel> &channels)
+{
+    if (std::none_of(channels.begin(), channels.end(),
+                     [](const ScopeChannel &channel) { return channel.enabled; })) {
+        return fail(2, tr("every scope channel of the drive is off: choose what to record with "
+                          "--channels, e.g. --channels ru.3,ru.9"));
+    }
+    m_recording = std::make_unique<ScopeRecording>();
+    m_recording->channels = channels;
+    m_recording->source = m_request.connection.displayName();
+    m_recorder = new ScopeRecorder(m_client.get(), this);
+    connect(m_recorder, &ScopeRecorder::statusChanged, this,
+            [this](const ScopeRecorderStatus &status) {
+                const qint64 spanMs = m_recording->lastTime() - m_recording->firstTime();
+                progressLine(int(std::min<qint64>(100, spanMs * 100 / m_request.durationMs)),
+                             tr("recording: %1 s, %2 Hz, %3 lost, %4 failed")
+                                 .arg(double(spanMs) / 1000.0, 0, 'f', 1)
+                                 .arg(status.rateHz, 0, 'f', 0)
+                                 .arg(status.counts.lost)
+                                 .arg(status.counts.failed));
+            });
+    connect(m_recorder, &ScopeRecorder::finished, this, &CliRunner::recorded);
+    if (!m_request.quiet) {
+        QStringList titles;
+        for (int channel = 0; channel < channels.size(); ++channel) {
+            if (channels.at(channel).enabled)
+                titles << channels.at(channel).title(channel);
+        }
+        m_err << tr("recording %1 for %2 s; Ctrl+C stops and writes what was recorded")
+                     .arg(titles.join(QStringLiteral(", ")))
+                     .arg(double(m_request.durationMs) / 1000.0)
+              << '\n' << Qt::flush;
+    }
+    ScopeRecorderOptions options;
+    options.polling.maxRateHz = m_request.rateHz;
+    options.durationMs = m_request.durationMs;
+    m_recorder->start(m_recording.get(), options);
+}
+
+void CliRunner::recorded(const ScopePollEnd &end)
+{
+    progressLine(-1, {});
+    const ScopeRecorderStatus status = m_recorder->status();
+    ScopeCsvOptions csv;
+    csv.channels.clear();
+    for (int channel = 0; channel < m_recording->channels.size(); ++channel) {
+        if (m_recording->channels.at(channel).enabled)
+            csv.channels << channel;
+    }
+    QString error;
+    if (!saveScopeCsv(m_request.csvFile, *m_recording, csv, &error))
+        return fail(1, error);
+    const double seconds = double(m_recording->lastTime() - m_recording->firstTime()) / 1000.0;
+    m_out << tr("%1: %n sample(s) over %2 s, achieved %3 Hz", nullptr,
+                int(m_recording->buffer.count()))
+                 .arg(m_request.csvFile)
+                 .arg(seconds, 0, 'f', 3)
+                 .arg(status.averageHz, 0, 'f', 1)
+          << QStringLiteral(" (") << tr("%1 lost, %2 failed").arg(end.counts.lost).arg(end.counts.failed)
+          << QStringLiteral(")\n");
+    if (!end.reason.isEmpty())
+        return fail(1, tr("the recording ended early: %1").arg(end.reason));
+    done();
+}
+
+} // namespace DriveDesk

@@ -1,0 +1,162 @@
+#include "CliTestSupport.h"
+
+#include <QFile>
+#include <QTemporaryDir>
+
+#include <csignal>
+
+using namespace DriveDesk::CliTest;
+
+namespace {
+
+QStringList csvLines(const QString &path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return {};
+    QStringList lines = QString::fromUtf8(file.readAll()).split(QStringLiteral("\r\n"));
+    if (!lines.isEmpty() && lines.constLast().isEmpty())
+        lines.removeLast();
+    return lines;
+}
+
+} // namespace
+
+// drivedesk-cli scope against the simulated drive: channels chosen by id, the CSV a user opens
+// in a spreadsheet, the achieved rate, every bad input refused before anything is recorded.
+class TestCliScope : public QObject
+{
+    Q_OBJECT
+private slots:
+    void recordsTheChosenChannelsAsCsv()
+    {
+        QTemporaryDir dir;
+        const QString csv = dir.filePath(QStringLiteral("trace.csv"));
+        const Run run = sim({QStringLiteral("scope"), QStringLiteral("--channels"),
+                             QStringLiteral("op.11,ru.9,dr.4"), QStringLiteral("--duration"),
+                             QStringLiteral("300ms"), QStringLiteral("--csv"), csv});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        static const QRegularExpression achieved(QStringLiteral("achieved ([0-9.]+) Hz"));
+        const QRegularExpressionMatch rate = achieved.match(run.out);
+        QVERIFY2(rate.hasMatch() && rate.captured(1).toDouble() > 0, qPrintable(run.out));
+
+        const QStringList lines = csvLines(csv);
+        QVERIFY2(lines.size() > 10, qPrintable(lines.join(QLatin1Char('\n'))));
+        QCOMPARE(lines.first(), QStringLiteral("Time [ms],op.11 Maximum speed forward [1/min],"
+                                               "ru.09 Output voltage [V],"
+                                               "dr.04 Rated motor voltage [V]"));
+        qint64 previous = -1;
+        for (const QString &line : lines.mid(1)) {
+            const QStringList fields = line.split(QLatin1Char(','));
+            QCOMPARE(fields.size(), 4);
+            const qint64 time = fields[0].toLongLong();
+            QVERIFY(time >= previous && time <= 300);
+            previous = time;
+            QCOMPARE(fields[1], QStringLiteral("3000"));
+            QCOMPARE(fields[3], QStringLiteral("400"));
+        }
+        QCOMPARE(lines.at(1).split(QLatin1Char(',')).first(), QStringLiteral("0"));
+    }
+
+    void theRateLimitHolds()
+    {
+        QTemporaryDir dir;
+        const QString csv = dir.filePath(QStringLiteral("slow.csv"));
+        const Run run = sim({QStringLiteral("scope"), QStringLiteral("--channels"),
+                             QStringLiteral("ru.18"), QStringLiteral("--duration"),
+                             QStringLiteral("1s"), QStringLiteral("--rate"), QStringLiteral("40"),
+                             QStringLiteral("--csv"), csv});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        const QStringList lines = csvLines(csv);
+        QCOMPARE(lines.first(), QStringLiteral("Time [ms],ru.18 DC link voltage [V]"));
+        QVERIFY2(lines.size() - 1 <= 42, qPrintable(QString::number(lines.size())));
+        QVERIFY(lines.size() - 1 >= 10);
+    }
+
+    void badInputIsRefusedBeforeAnythingIsRecorded_data()
+    {
+        QTest::addColumn<QStringList>("arguments");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("no csv") << QStringList{} << QStringLiteral("--csv");
+        QTest::newRow("five channels")
+            << QStringList{QStringLiteral("--channels"), QStringLiteral("ru.1,ru.3,ru.7,ru.9,ru.10")}
+            << QStringLiteral("one to four");
+        QTest::newRow("unknown parameter")
+            << QStringList{QStringLiteral("--channels"), QStringLiteral("zz.3")}
+            << QStringLiteral("zz");
+        QTest::newRow("no process data")
+            << QStringList{QStringLiteral("--channels"), QStringLiteral("ru.3,Sy.16")}
+            << QStringLiteral("Sy.16");
+        QTest::newRow("bad duration")
+            << QStringList{QStringLiteral("--duration"), QStringLiteral("ten seconds")}
+            << QStringLiteral("duration");
+        QTest::newRow("zero rate")
+            << QStringList{QStringLiteral("--rate"), QStringLiteral("0")}
+            << QStringLiteral("--rate");
+    }
+
+    void badInputIsRefusedBeforeAnythingIsRecorded()
+    {
+        QFETCH(QStringList, arguments);
+        QFETCH(QString, message);
+        QTemporaryDir dir;
+        const QString csv = dir.filePath(QStringLiteral("never.csv"));
+        QStringList command{QStringLiteral("scope")};
+        command << arguments;
+        if (QLatin1String(QTest::currentDataTag()) != QLatin1String("no csv"))
+            command << QStringLiteral("--csv") << csv;
+        const Run run = sim(command);
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(message), qPrintable(explain(run)));
+        QVERIFY(!QFile::exists(csv));
+    }
+
+    void channelsThatAreAllOffAreNoRecording()
+    {
+        // The simulated F5 starts with every read channel off (Sy.16 = -1).
+        QTemporaryDir dir;
+        const QString csv = dir.filePath(QStringLiteral("empty.csv"));
+        const Run run = sim({QStringLiteral("scope"), QStringLiteral("--csv"), csv});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(QStringLiteral("--channels")), qPrintable(explain(run)));
+        QVERIFY(!QFile::exists(csv));
+    }
+
+    void anUnwritableFileIsNamed()
+    {
+        const QString csv = QStringLiteral("/nonexistent-folder/trace.csv");
+        const Run run = sim({QStringLiteral("scope"), QStringLiteral("--channels"),
+                             QStringLiteral("ru.3"), QStringLiteral("--duration"),
+                             QStringLiteral("100ms"), QStringLiteral("--csv"), csv});
+        QCOMPARE(run.exitCode, 1);
+        QVERIFY2(run.err.contains(csv), qPrintable(explain(run)));
+    }
+
+    void ctrlCStopsAndWritesWhatWasRecorded()
+    {
+        QTemporaryDir dir;
+        const QString csv = dir.filePath(QStringLiteral("stopped.csv"));
+        QProcess process;
+        process.start(kCli, {QStringLiteral("--connect"), QStringLiteral("sim"),
+                             QStringLiteral("scope"), QStringLiteral("--channels"),
+                             QStringLiteral("ru.3"), QStringLiteral("--duration"),
+                             QStringLiteral("10min"), QStringLiteral("--csv"), csv});
+        QVERIFY(process.waitForStarted());
+        // The command says when it starts recording (--quiet is off for it).
+        process.setReadChannel(QProcess::StandardError);
+        QVERIFY(QTest::qWaitFor([&] {
+            process.waitForReadyRead(100);
+            return process.peek(1 << 16).contains("Ctrl+C");
+        }, 20000));
+        QTest::qWait(300);
+        ::kill(pid_t(process.processId()), SIGINT);
+        QVERIFY(process.waitForFinished(20000));
+        QCOMPARE(process.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(process.exitCode(), 0);
+        QVERIFY(csvLines(csv).size() > 2);
+        QVERIFY(QString::fromUtf8(process.readAllStandardOutput()).contains(QStringLiteral("achieved")));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCliScope)
+#include "tst_cliscope.moc"
