@@ -1,11 +1,14 @@
 // Scope storage: appending four channels of a million samples, drawing them into 1600 columns,
-// the memory a sample takes, and exporting them as CSV.
+// the memory a sample takes, exporting them as CSV, writing and loading a recording file.
 #include "scope/ScopeClock.h"
 #include "scope/ScopeCsv.h"
+#include "scope/ScopeFileReader.h"
+#include "scope/ScopeFileWriter.h"
 #include "scope/ScopeRecording.h"
 
 #include <QBuffer>
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <QTemporaryDir>
 
 #include <cmath>
@@ -50,6 +53,32 @@ void exportCsv(const ScopeRecording &recording)
         std::printf("CSV failed: %s\n", qPrintable(error));
     std::printf("CSV of %lld rows x 4 channels saved to a file: %.1f ms\n",
                 qlonglong(recording.buffer.count()), timer.nsecsElapsed() / 1e6);
+}
+
+// Written in batches of 1000 samples as a recording would, then loaded.
+void writeAndLoadFile(const ScopeRecording &recording)
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("scope.ddscope"));
+    QElapsedTimer timer;
+    timer.start();
+    ScopeFileWriter writer;
+    QString error;
+    bool written = writer.open(path, ScopeFileHeader::of(recording), &error);
+    const qsizetype count = recording.buffer.count();
+    for (qsizetype begin = 0; written && begin < count; begin += 1000)
+        written = writer.append(recording.buffer.samples(), begin, qMin(begin + 1000, count), &error);
+    if (!written || !writer.close(&error))
+        std::printf("writing the recording file failed: %s\n", qPrintable(error));
+    std::printf("recording file of %lld samples written in batches of 1000: %.1f ms (%.1f MB)\n",
+                qlonglong(count), timer.nsecsElapsed() / 1e6, QFileInfo(path).size() / 1e6);
+
+    timer.restart();
+    ScopeRecording loaded;
+    if (!readScopeFile(path, loaded, &error))
+        std::printf("loading the recording file failed: %s\n", qPrintable(error));
+    std::printf("recording file of %lld samples loaded (with the min/max levels): %.1f ms\n",
+                qlonglong(loaded.buffer.count()), timer.nsecsElapsed() / 1e6);
 }
 
 } // namespace
@@ -109,5 +138,6 @@ int main()
                 double(buffer.bytesUsed()) / buffer.count(), qlonglong(sink));
 
     exportCsv(recording);
+    writeAndLoadFile(recording);
     return 0;
 }

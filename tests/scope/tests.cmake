@@ -7,3 +7,5 @@ drivedesk_add_test(NAME tst_scopepyramid LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopepyramid.cpp LIBS drivedesk_scope)
 drivedesk_add_test(NAME tst_scopecsv LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopecsv.cpp LIBS drivedesk_scope)
+drivedesk_add_test(NAME tst_scopefile LABELS unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopefile.cpp LIBS drivedesk_scope)
