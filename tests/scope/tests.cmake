@@ -9,3 +9,5 @@ drivedesk_add_test(NAME tst_scopecsv LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopecsv.cpp LIBS drivedesk_scope)
 drivedesk_add_test(NAME tst_scopefile LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopefile.cpp LIBS drivedesk_scope)
+drivedesk_add_test(NAME tst_scopetrigger LABELS unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopetrigger.cpp LIBS drivedesk_scope)
