@@ -1,4 +1,5 @@
-# core/scope: the clock, the sample store and the min/max levels; each links drivedesk_scope only.
+# core/scope: the clock, the sample store, the min/max levels, the CSV export, the recording file
+# and the trigger; each links drivedesk_scope only.
 drivedesk_add_test(NAME tst_scopeclock LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopeclock.cpp LIBS drivedesk_scope)
 drivedesk_add_test(NAME tst_scopestore LABELS unit
