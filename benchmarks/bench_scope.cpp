@@ -26,7 +26,8 @@ void describeChannels(ScopeRecording &recording)
         channel.source = 0x0203;
         channel.id = QStringLiteral("ru.03");
         channel.name = QStringLiteral("Actual frequency");
-        channel.scaling = DisplayScaling({0x0203, divisor, 1, 0, quint16(unit | representation << 8)});
+        channel.scaling
+            = DisplayScaling({ 0x0203, divisor, 1, 0, quint16(unit | representation << 8) });
         return channel;
     };
     recording.channels[0] = scaled(10, 1, 18);
@@ -67,7 +68,8 @@ void writeAndLoadFile(const ScopeRecording &recording)
     bool written = writer.open(path, ScopeFileHeader::of(recording), &error);
     const qsizetype count = recording.buffer.count();
     for (qsizetype begin = 0; written && begin < count; begin += 1000)
-        written = writer.append(recording.buffer.samples(), begin, qMin(begin + 1000, count), &error);
+        written
+            = writer.append(recording.buffer.samples(), begin, qMin(begin + 1000, count), &error);
     if (!written || !writer.close(&error))
         std::printf("writing the recording file failed: %s\n", qPrintable(error));
     std::printf("recording file of %lld samples written in batches of 1000: %.1f ms (%.1f MB)\n",
@@ -99,8 +101,8 @@ int main()
         timestamp += quint16(1 + i % 3); // uneven, wrapping every ~33,000 samples
         ScopeSample sample;
         sample.time = clock.unwrap(timestamp).time;
-        sample.wide = {qint32(100000 * std::sin(i * 0.001)), qint32(i)};
-        sample.narrow = {qint16(i % 4000 - 2000), qint16(i % 1000 == 0 ? 32767 : 0)};
+        sample.wide = { qint32(100000 * std::sin(i * 0.001)), qint32(i) };
+        sample.narrow = { qint16(i % 4000 - 2000), qint16(i % 1000 == 0 ? 32767 : 0) };
         buffer.append(sample);
     }
     const double appendMs = timer.nsecsElapsed() / 1e6;
@@ -117,8 +119,8 @@ int main()
         }
     }
     const double decimateMs = timer.nsecsElapsed() / 1e6 / kRounds;
-    std::printf("decimate 4 channels of %lld samples to %d columns: %.3f ms\n",
-                qlonglong(kSamples), kColumns, decimateMs);
+    std::printf("decimate 4 channels of %lld samples to %d columns: %.3f ms\n", qlonglong(kSamples),
+                kColumns, decimateMs);
 
     timer.restart();
     const qint64 last = buffer.samples().time(buffer.count() - 1);

@@ -22,7 +22,7 @@ constexpr qsizetype kBlockSize = qsizetype(1) << 20;
 // Room for one field: a sign, 19 digits of a qint64, a point and four decimals, a comma.
 constexpr qsizetype kMaxFieldSize = 32;
 
-constexpr std::array<quint64, DisplayScaling::kMaxDecimals + 1> kPow10{1, 10, 100, 1000, 10000};
+constexpr std::array<quint64, DisplayScaling::kMaxDecimals + 1> kPow10 { 1, 10, 100, 1000, 10000 };
 
 // How one column turns a raw value into text, worked out once per export.
 struct ColumnFormat
@@ -80,8 +80,8 @@ QList<ColumnFormat> columnFormats(const ScopeRecording &recording, const QList<i
             && scaling.isValid()) {
             column.scaling = &scaling;
             column.decimals = scaling.decimals();
-            column.trimZeros = scaling.representation()
-                               == DisplayScaling::Representation::VariableDecimals;
+            column.trimZeros
+                = scaling.representation() == DisplayScaling::Representation::VariableDecimals;
         }
         columns << column;
     }
@@ -91,7 +91,7 @@ QList<ColumnFormat> columnFormats(const ScopeRecording &recording, const QList<i
 QByteArray headerLine(const ScopeRecording &recording, const QList<int> &channels)
 {
     // Not translated: tools read this column by name.
-    QStringList fields{QStringLiteral("Time [ms]")};
+    QStringList fields { QStringLiteral("Time [ms]") };
     for (int channel : channels) {
         const ScopeChannel &described = recording.channels.at(channel);
         const QString unit = described.unit();
@@ -173,8 +173,8 @@ QString cancelledText()
 
 } // namespace
 
-bool writeScopeCsv(QIODevice &out, const ScopeRecording &recording,
-                   const ScopeCsvOptions &options, QString *error)
+bool writeScopeCsv(QIODevice &out, const ScopeRecording &recording, const ScopeCsvOptions &options,
+                   QString *error)
 {
     if (!checkChannels(options.channels, error))
         return false;

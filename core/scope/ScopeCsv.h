@@ -27,7 +27,7 @@ struct ScopeCsvOptions
     qint64 toMs = std::numeric_limits<qint64>::max();
     // Channel indices (0..3), in the order of the columns. A channel that is off is still
     // written when asked for.
-    QList<int> channels{0, 1, 2, 3};
+    QList<int> channels { 0, 1, 2, 3 };
     ScopeCsvProgress progress; // may be empty
 };
 

@@ -15,20 +15,20 @@ namespace {
 QJsonObject channelJson(const ScopeChannel &channel)
 {
     const DisplayScalingData &scaling = channel.scaling.data();
-    return QJsonObject{
-        {QStringLiteral("source"), channel.source ? QJsonValue(*channel.source) : QJsonValue()},
-        {QStringLiteral("setMask"), channel.setMask},
-        {QStringLiteral("enabled"), channel.enabled},
-        {QStringLiteral("id"), channel.id},
-        {QStringLiteral("name"), channel.name},
-        {QStringLiteral("scaling"),
-         QJsonObject{
-             {QStringLiteral("address"), scaling.address},
-             {QStringLiteral("divisor"), scaling.divisor},
-             {QStringLiteral("multiplier"), scaling.multiplier},
-             {QStringLiteral("offset"), scaling.offset},
-             {QStringLiteral("flags"), scaling.flags},
-         }},
+    return QJsonObject {
+        { QStringLiteral("source"), channel.source ? QJsonValue(*channel.source) : QJsonValue() },
+        { QStringLiteral("setMask"), channel.setMask },
+        { QStringLiteral("enabled"), channel.enabled },
+        { QStringLiteral("id"), channel.id },
+        { QStringLiteral("name"), channel.name },
+        { QStringLiteral("scaling"),
+          QJsonObject {
+              { QStringLiteral("address"), scaling.address },
+              { QStringLiteral("divisor"), scaling.divisor },
+              { QStringLiteral("multiplier"), scaling.multiplier },
+              { QStringLiteral("offset"), scaling.offset },
+              { QStringLiteral("flags"), scaling.flags },
+          } },
     };
 }
 
@@ -64,7 +64,7 @@ ScopeChannel readChannel(JsonObjectReader &reader)
 
 ScopeFileHeader ScopeFileHeader::of(const ScopeRecording &recording)
 {
-    return {recording.started, recording.source, recording.channels};
+    return { recording.started, recording.source, recording.channels };
 }
 
 QByteArray ScopeFileFormat::start(const ScopeFileHeader &header)
@@ -76,10 +76,10 @@ QByteArray ScopeFileFormat::start(const ScopeFileHeader &header)
     const QJsonValue started = header.started.isValid()
         ? QJsonValue(header.started.toUTC().toString(Qt::ISODateWithMs))
         : QJsonValue();
-    const QByteArray json = QJsonDocument(QJsonObject{
-                                              {QStringLiteral("started"), started},
-                                              {QStringLiteral("source"), header.source},
-                                              {QStringLiteral("channels"), channels},
+    const QByteArray json = QJsonDocument(QJsonObject {
+                                              { QStringLiteral("started"), started },
+                                              { QStringLiteral("source"), header.source },
+                                              { QStringLiteral("channels"), channels },
                                           })
                                 .toJson(QJsonDocument::Compact);
 
@@ -117,9 +117,10 @@ bool ScopeFileFormat::parseHeader(const QByteArray &json, ScopeFileHeader &heade
     const QString channelsKey = QStringLiteral("channels");
     const QJsonArray channels = reader.array(channelsKey);
     if (reader.ok() && channels.size() != ScopeSample::kChannelCount)
-        reader.fail(channelsKey, tr("expected %1 channels, found %2")
-                                     .arg(ScopeSample::kChannelCount)
-                                     .arg(channels.size()));
+        reader.fail(channelsKey,
+                    tr("expected %1 channels, found %2")
+                        .arg(ScopeSample::kChannelCount)
+                        .arg(channels.size()));
     for (qsizetype i = 0; reader.ok() && i < channels.size(); ++i) {
         JsonObjectReader channel = reader.element(channelsKey, channels, i);
         header.channels[i] = readChannel(channel);
@@ -143,8 +144,8 @@ ScopeSample ScopeFileFormat::decode(const char *from)
 {
     ScopeSample sample;
     sample.time = qFromLittleEndian<qint64>(from);
-    sample.wide = {qFromLittleEndian<qint32>(from + 8), qFromLittleEndian<qint32>(from + 12)};
-    sample.narrow = {qFromLittleEndian<qint16>(from + 16), qFromLittleEndian<qint16>(from + 18)};
+    sample.wide = { qFromLittleEndian<qint32>(from + 8), qFromLittleEndian<qint32>(from + 12) };
+    sample.narrow = { qFromLittleEndian<qint16>(from + 16), qFromLittleEndian<qint16>(from + 18) };
     return sample;
 }
 

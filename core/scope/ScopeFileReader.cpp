@@ -43,13 +43,13 @@ std::pair<int, qsizetype> magicLine(const QByteArray &head)
 {
     const QByteArray magic(ScopeFileFormat::kMagic);
     if (!head.startsWith(magic))
-        return {0, 0};
+        return { 0, 0 };
     const qsizetype end = head.indexOf('\n', magic.size());
     const QByteArray digits = head.mid(magic.size(), end - magic.size());
     if (end < 0 || digits.isEmpty() || digits.size() > 6
         || !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
-        return {0, 0};
-    return {digits.toInt(), end + 1};
+        return { 0, 0 };
+    return { digits.toInt(), end + 1 };
 }
 
 // The magic line and the header; false with the message where they are not a readable start.
@@ -61,35 +61,41 @@ bool readStart(QFile &file, ScopeFileHeader &header, QString *error)
         return fail(error, unreadable(file));
     const auto [version, headerAt] = magicLine(head);
     if (version < 1)
-        return fail(error, QCoreApplication::translate("ScopeFile",
-                                                       "'%1' is not a DriveDesk scope file")
-                               .arg(path));
+        return fail(error,
+                    QCoreApplication::translate("ScopeFile", "'%1' is not a DriveDesk scope file")
+                        .arg(path));
     if (version > ScopeFileFormat::kVersion)
-        return fail(error, QCoreApplication::translate(
-                               "ScopeFile", "'%1' is in scope file format %2 of a newer DriveDesk; "
-                                            "this version reads format %3")
-                               .arg(path)
-                               .arg(version)
-                               .arg(ScopeFileFormat::kVersion));
+        return fail(
+            error,
+            QCoreApplication::translate("ScopeFile",
+                                        "'%1' is in scope file format %2 of a newer DriveDesk; "
+                                        "this version reads format %3")
+                .arg(path)
+                .arg(version)
+                .arg(ScopeFileFormat::kVersion));
     if (!file.seek(headerAt))
         return fail(error, unreadable(file));
 
     const QByteArray length = file.read(4);
     const quint32 size = length.size() == 4 ? qFromLittleEndian<quint32>(length.constData()) : 0;
     if (size > ScopeFileFormat::kMaxHeaderSize)
-        return fail(error, damaged(path, QCoreApplication::translate(
-                                             "ScopeFile", "its header cannot be %1 bytes long")
-                                             .arg(size)));
+        return fail(
+            error,
+            damaged(path,
+                    QCoreApplication::translate("ScopeFile", "its header cannot be %1 bytes long")
+                        .arg(size)));
     const QByteArray json = length.size() == 4 ? file.read(size) : QByteArray();
     if (file.error() != QFileDevice::NoError)
         return fail(error, unreadable(file));
     if (length.size() != 4 || json.size() != qsizetype(size))
-        return fail(error, damaged(path, QCoreApplication::translate(
-                                             "ScopeFile", "its header is cut short")));
+        return fail(
+            error,
+            damaged(path, QCoreApplication::translate("ScopeFile", "its header is cut short")));
     QString fault;
     if (!ScopeFileFormat::parseHeader(json, header, &fault))
-        return fail(error, QCoreApplication::translate("ScopeFile", "'%1' has a damaged header: %2")
-                               .arg(path, fault));
+        return fail(error,
+                    QCoreApplication::translate("ScopeFile", "'%1' has a damaged header: %2")
+                        .arg(path, fault));
     return true;
 }
 
@@ -110,11 +116,11 @@ bool readSamples(QFile &file, ScopeRecording &recording, qsizetype &incomplete, 
         const qsizetype complete = available - available % kRecord;
         for (qsizetype at = 0; at < complete; at += kRecord) {
             if (!recording.buffer.append(ScopeFileFormat::decode(block.constData() + at)))
-                return fail(error, damaged(file.fileName(),
-                                           QCoreApplication::translate(
-                                               "ScopeFile",
-                                               "sample %1 is earlier than the one before it")
-                                               .arg(recording.buffer.count() + 1)));
+                return fail(error,
+                            damaged(file.fileName(),
+                                    QCoreApplication::translate(
+                                        "ScopeFile", "sample %1 is earlier than the one before it")
+                                        .arg(recording.buffer.count() + 1)));
         }
         carried = available - complete;
         std::memmove(block.data(), block.constData() + complete, size_t(carried));
@@ -125,8 +131,7 @@ bool readSamples(QFile &file, ScopeRecording &recording, qsizetype &incomplete, 
 
 } // namespace
 
-bool readScopeFile(const QString &path, ScopeRecording &out, QString *error,
-                   QStringList *warnings)
+bool readScopeFile(const QString &path, ScopeRecording &out, QString *error, QStringList *warnings)
 {
     QFile file(path);
     // Unbuffered: the blocks are large, a second copy through QFile's buffer would only cost.

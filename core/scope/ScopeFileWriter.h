@@ -1,7 +1,7 @@
 #pragma once
 
-#include "ScopeFileFormat.h"
 #include "SampleStore.h"
+#include "ScopeFileFormat.h"
 
 #include <QByteArray>
 #include <QCoreApplication>

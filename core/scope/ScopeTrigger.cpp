@@ -64,8 +64,8 @@ void ScopeTrigger::search(const ScopeRecording &recording)
     // second; and none fires before the pre-trigger time has been recorded since arming, so
     // that the shot never starts before the first watched sample.
     const qint64 armedAt = samples.time(m_armedIndex);
-    qsizetype index = std::max({m_next, m_armedIndex + 1,
-                                samples.lowerBound(armedAt + m_settings.preTriggerMs())});
+    qsizetype index = std::max(
+        { m_next, m_armedIndex + 1, samples.lowerBound(armedAt + m_settings.preTriggerMs()) });
     const int channel = m_settings.channel;
     for (; index < count; ++index) {
         if (crosses(recording.displayValue(index - 1, channel),

@@ -11,11 +11,11 @@ struct ScopeTriggerSettings
 {
     enum class Edge { Rising, Falling };
 
-    int channel = 0;              // 0..3
-    double level = 0.0;           // in the channel's display units (ScopeChannel::toDisplay())
+    int channel = 0; // 0..3
+    double level = 0.0; // in the channel's display units (ScopeChannel::toDisplay())
     Edge edge = Edge::Rising;
     double preTriggerShare = 0.2; // the part of the shot before the trigger, 0..1
-    qint64 windowMs = 1000;       // the shot's length, at least 1
+    qint64 windowMs = 1000; // the shot's length, at least 1
 
     // share * window, rounded to whole ms.
     qint64 preTriggerMs() const;
@@ -35,10 +35,10 @@ class ScopeTrigger
 {
 public:
     enum class State {
-        Idle,      // not armed
-        Armed,     // waiting for the pre-trigger time, then for the edge
+        Idle, // not armed
+        Armed, // waiting for the pre-trigger time, then for the edge
         Triggered, // fired: the shot's range is known, its end not yet recorded
-        Complete,  // the shot's end has been recorded
+        Complete, // the shot's end has been recorded
     };
 
     explicit ScopeTrigger(const ScopeTriggerSettings &settings = {});
@@ -72,7 +72,7 @@ private:
     ScopeTriggerSettings m_settings;
     State m_state = State::Idle;
     qsizetype m_armedIndex = 0; // the first sample watched
-    qsizetype m_next = 0;       // the first sample not yet looked at
+    qsizetype m_next = 0; // the first sample not yet looked at
     qsizetype m_triggerIndex = -1;
     qint64 m_triggerTime = 0;
 };

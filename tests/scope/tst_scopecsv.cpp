@@ -36,8 +36,8 @@ ScopeSample sample(qint64 time, qint32 wide0, qint32 wide1, qint16 narrow0, qint
 {
     ScopeSample made;
     made.time = time;
-    made.wide = {wide0, wide1};
-    made.narrow = {narrow0, narrow1};
+    made.wide = { wide0, wide1 };
+    made.narrow = { narrow0, narrow1 };
     return made;
 }
 
@@ -46,14 +46,14 @@ ScopeSample sample(qint64 time, qint32 wide0, qint32 wide1, qint16 narrow0, qint
 // with variable decimals.
 void describe(ScopeRecording &recording)
 {
-    recording.channels[0] = channel(0x0203, QStringLiteral("ru.03"),
-                                    QStringLiteral("Actual frequency"),
-                                    {0, 10, 1, 0, flags(kHz, 1)});
-    recording.channels[2] = channel(0x0200, QStringLiteral("ru.00"),
-                                    QStringLiteral("Status \"word\", bits"),
-                                    {0, 1, 1, 0, flags(0, 6)});
+    recording.channels[0]
+        = channel(0x0203, QStringLiteral("ru.03"), QStringLiteral("Actual frequency"),
+                  { 0, 10, 1, 0, flags(kHz, 1) });
+    recording.channels[2]
+        = channel(0x0200, QStringLiteral("ru.00"), QStringLiteral("Status \"word\", bits"),
+                  { 0, 1, 1, 0, flags(0, 6) });
     recording.channels[3] = channel(0x0207, QStringLiteral("ru.07"), QStringLiteral("Load"),
-                                    {0, 1000, 1, 0, flags(kPercent, 5)});
+                                    { 0, 1000, 1, 0, flags(kPercent, 5) });
     recording.channels[3].enabled = false;
 }
 
@@ -61,11 +61,10 @@ void fill(ScopeRecording &recording)
 {
     const qint32 max = std::numeric_limits<qint32>::max();
     const qint32 min = std::numeric_limits<qint32>::min();
-    for (const ScopeSample &s : {sample(1000, 125, -5, 255, -32768),
-                                 sample(1001, -125, max, -1, 12500),
-                                 sample(1003, -4, min, 0, 12000),
-                                 sample(1003, 0, 0, 32767, -1),
-                                 sample(1010, -1, 7, -32768, 0)})
+    for (const ScopeSample &s :
+         { sample(1000, 125, -5, 255, -32768), sample(1001, -125, max, -1, 12500),
+           sample(1003, -4, min, 0, 12000), sample(1003, 0, 0, 32767, -1),
+           sample(1010, -1, 7, -32768, 0) })
         QVERIFY(recording.buffer.append(s));
 }
 
@@ -101,12 +100,13 @@ private slots:
         ScopeRecording recording;
         describe(recording);
         fill(recording);
-        QCOMPARE(csvOf(recording), kHeader
-                                       + "0,12.5,-5,255,-32.768\r\n"
-                                         "1,-12.5,2147483647,-1,12.5\r\n"
-                                         "3,-0.4,-2147483648,0,12\r\n"
-                                         "3,0.0,0,32767,-0.001\r\n"
-                                         "10,-0.1,7,-32768,0\r\n");
+        QCOMPARE(csvOf(recording),
+                 kHeader
+                     + "0,12.5,-5,255,-32.768\r\n"
+                       "1,-12.5,2147483647,-1,12.5\r\n"
+                       "3,-0.4,-2147483648,0,12\r\n"
+                       "3,0.0,0,32767,-0.001\r\n"
+                       "10,-0.1,7,-32768,0\r\n");
     }
 
     void rangeIsInclusiveAndTimesStayRelativeToTheRecording()
@@ -117,10 +117,11 @@ private slots:
         ScopeCsvOptions options;
         options.fromMs = 1001;
         options.toMs = 1003;
-        QCOMPARE(csvOf(recording, options), kHeader
-                                                + "1,-12.5,2147483647,-1,12.5\r\n"
-                                                  "3,-0.4,-2147483648,0,12\r\n"
-                                                  "3,0.0,0,32767,-0.001\r\n");
+        QCOMPARE(csvOf(recording, options),
+                 kHeader
+                     + "1,-12.5,2147483647,-1,12.5\r\n"
+                       "3,-0.4,-2147483648,0,12\r\n"
+                       "3,0.0,0,32767,-0.001\r\n");
         options.fromMs = 1010;
         options.toMs = 5000;
         QCOMPARE(csvOf(recording, options), kHeader + "10,-0.1,7,-32768,0\r\n");
@@ -147,11 +148,12 @@ private slots:
         describe(recording);
         fill(recording);
         ScopeCsvOptions options;
-        options.channels = {3, 0};
+        options.channels = { 3, 0 };
         options.toMs = 1001;
-        QCOMPARE(csvOf(recording, options), "Time [ms],ru.07 Load [%],ru.03 Actual frequency [Hz]\r\n"
-                                            "0,-32.768,12.5\r\n"
-                                            "1,12.5,-12.5\r\n");
+        QCOMPARE(csvOf(recording, options),
+                 "Time [ms],ru.07 Load [%],ru.03 Actual frequency [Hz]\r\n"
+                 "0,-32.768,12.5\r\n"
+                 "1,12.5,-12.5\r\n");
         options.channels = {};
         QCOMPARE(csvOf(recording, options), "Time [ms]\r\n0\r\n1\r\n");
     }
@@ -161,16 +163,17 @@ private slots:
         ScopeRecording recording;
         // divisor 0: the raw value, as the chart shows it; mode 1 at raw + offset = 0: empty
         recording.channels[0] = channel(0x0203, QStringLiteral("ru.03"), QStringLiteral("F"),
-                                        {0, 0, 1, 0, flags(kHz, 2)});
+                                        { 0, 0, 1, 0, flags(kHz, 2) });
         recording.channels[1] = channel(0x0204, QStringLiteral("ru.04"), QStringLiteral("T"),
-                                        {0, 1, 1000, 0, flags(0, 0, 1)});
+                                        { 0, 1, 1000, 0, flags(0, 0, 1) });
         QVERIFY(recording.buffer.append(sample(0, 1234, 0, 0, 0)));
         QVERIFY(recording.buffer.append(sample(1, -7, 8, 0, 0)));
         ScopeCsvOptions options;
-        options.channels = {0, 1};
-        QCOMPARE(csvOf(recording, options), "Time [ms],ru.03 F [Hz],ru.04 T\r\n"
-                                            "0,1234,\r\n"
-                                            "1,-7,125\r\n");
+        options.channels = { 0, 1 };
+        QCOMPARE(csvOf(recording, options),
+                 "Time [ms],ru.03 F [Hz],ru.04 T\r\n"
+                 "0,1234,\r\n"
+                 "1,-7,125\r\n");
     }
 
     void badChannelAndWriteErrors()
@@ -178,7 +181,7 @@ private slots:
         ScopeRecording recording;
         fill(recording);
         ScopeCsvOptions options;
-        options.channels = {0, 4};
+        options.channels = { 0, 4 };
         QBuffer buffer;
         buffer.open(QIODevice::WriteOnly);
         QString error;
@@ -202,15 +205,15 @@ private slots:
         QList<std::pair<qsizetype, qsizetype>> calls;
         ScopeCsvOptions options;
         options.progress = [&calls](qsizetype done, qsizetype total) {
-            calls.append({done, total});
+            calls.append({ done, total });
             return true;
         };
         const QByteArray csv = csvOf(recording, options);
-        QCOMPARE(calls, (QList<std::pair<qsizetype, qsizetype>>{
-                            {kScopeCsvProgressRows, count},
-                            {2 * kScopeCsvProgressRows, count},
-                            {3 * kScopeCsvProgressRows, count},
-                            {count, count}}));
+        QCOMPARE(calls,
+                 (QList<std::pair<qsizetype, qsizetype>> { { kScopeCsvProgressRows, count },
+                                                           { 2 * kScopeCsvProgressRows, count },
+                                                           { 3 * kScopeCsvProgressRows, count },
+                                                           { count, count } }));
         QCOMPARE(csv.count('\n'), count + 1);
         const QByteArray last = QByteArray::number(count - 1);
         QVERIFY(csv.endsWith("\r\n" + last + "," + last + ",0,0,0\r\n"));
@@ -235,15 +238,18 @@ private slots:
         // an existing file stays as it was, a new one is not made
         QVERIFY(!saveScopeCsv(path, recording, options, &error));
         QCOMPARE(error, QStringLiteral("the export was cancelled"));
-        QCOMPARE(readFile(path), kHeader + "0,12.5,-5,255,-32.768\r\n"
-                                           "1,-12.5,2147483647,-1,12.5\r\n"
-                                           "3,-0.4,-2147483648,0,12\r\n"
-                                           "3,0.0,0,32767,-0.001\r\n"
-                                           "10,-0.1,7,-32768,0\r\n");
+        QCOMPARE(readFile(path),
+                 kHeader
+                     + "0,12.5,-5,255,-32.768\r\n"
+                       "1,-12.5,2147483647,-1,12.5\r\n"
+                       "3,-0.4,-2147483648,0,12\r\n"
+                       "3,0.0,0,32767,-0.001\r\n"
+                       "10,-0.1,7,-32768,0\r\n");
         const QString fresh = dir.filePath(QStringLiteral("fresh.csv"));
         QVERIFY(!saveScopeCsv(fresh, recording, options, &error));
         QVERIFY(!QFile::exists(fresh));
-        QCOMPARE(QDir(dir.path()).entryList(QDir::Files), QStringList{QStringLiteral("shot.csv")});
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files),
+                 QStringList { QStringLiteral("shot.csv") });
     }
 
     void unwritableFolderIsNamed()

@@ -16,8 +16,9 @@ ScopeSample sampleAt(qsizetype index)
 {
     ScopeSample sample;
     sample.time = 5000 + index * 2 - (index % 3 == 0 ? 1 : 0); // uneven, some repeated
-    sample.wide = {qint32(index * 7919 - 100000), qint32(index % 2 ? -2147483647 - 1 : 2147483647)};
-    sample.narrow = {qint16(index % 30000 - 15000), qint16(index % 2 ? -32768 : 32767)};
+    sample.wide
+        = { qint32(index * 7919 - 100000), qint32(index % 2 ? -2147483647 - 1 : 2147483647) };
+    sample.narrow = { qint16(index % 30000 - 15000), qint16(index % 2 ? -32768 : 32767) };
     return sample;
 }
 
@@ -32,11 +33,11 @@ ScopeFileHeader header()
     header.channels[0].setMask = 0x05;
     header.channels[0].id = QStringLiteral("ru.03");
     header.channels[0].name = QStringLiteral("Actual \"frequency\"\n");
-    header.channels[0].scaling = DisplayScaling({0x0203, 10, -3, -100, quint16(18 | 1 << 8)});
+    header.channels[0].scaling = DisplayScaling({ 0x0203, 10, -3, -100, quint16(18 | 1 << 8) });
     header.channels[2].source = 0x0200;
     header.channels[2].id = QStringLiteral("ru.00");
     header.channels[2].name = QStringLiteral("Status");
-    header.channels[2].scaling = DisplayScaling({0x0200, 0, 0, 0, quint16(6 << 8)});
+    header.channels[2].scaling = DisplayScaling({ 0x0200, 0, 0, 0, quint16(6 << 8) });
     header.channels[3].enabled = false;
     return header;
 }
@@ -64,7 +65,8 @@ struct FileParts
     {
         const qsizetype lineEnd = file.indexOf('\n') + 1;
         const quint32 length = qFromLittleEndian<quint32>(file.constData() + lineEnd);
-        return {file.left(lineEnd), file.mid(lineEnd + 4, length), file.mid(lineEnd + 4 + length)};
+        return { file.left(lineEnd), file.mid(lineEnd + 4, length),
+                 file.mid(lineEnd + 4 + length) };
     }
     QByteArray bytes() const
     {
@@ -111,7 +113,7 @@ private slots:
         QString error;
         QVERIFY2(writer.open(m_path, ScopeFileHeader::of(recorded), &error), qPrintable(error));
         // as a recording goes: a few samples, then the store's new ones in batches
-        const std::array<ScopeSample, 3> first{sampleAt(0), sampleAt(1), sampleAt(2)};
+        const std::array<ScopeSample, 3> first { sampleAt(0), sampleAt(1), sampleAt(2) };
         QVERIFY(writer.append(first.data(), qsizetype(first.size()), &error));
         QVERIFY(writer.append(recorded.buffer.samples(), 3, 1000, &error));
         QVERIFY(writer.flush(&error));
@@ -145,8 +147,8 @@ private slots:
         QVERIFY(writer.open(m_path, start));
         ScopeSample sample;
         sample.time = 0x0102030405060708;
-        sample.wide = {-2, 0x11223344};
-        sample.narrow = {-3, 0x5566};
+        sample.wide = { -2, 0x11223344 };
+        sample.narrow = { -3, 0x5566 };
         QVERIFY(writer.append(&sample, 1));
         QVERIFY(writer.close());
         const FileParts parts = FileParts::of(readAll(m_path));
@@ -154,11 +156,12 @@ private slots:
         QVERIFY2(parts.json.startsWith("{\"channels\":[{\"enabled\":true,\"id\":\"\","),
                  parts.json.constData());
         QVERIFY(parts.json.contains("\"started\":null"));
-        QCOMPARE(parts.records.toHex(), QByteArray("0807060504030201"
-                                                   "feffffff"
-                                                   "44332211"
-                                                   "fdff"
-                                                   "6655"));
+        QCOMPARE(parts.records.toHex(),
+                 QByteArray("0807060504030201"
+                            "feffffff"
+                            "44332211"
+                            "fdff"
+                            "6655"));
     }
 
     void headerOnlyIsAnEmptyRecording()
@@ -177,7 +180,7 @@ private slots:
     {
         ScopeFileWriter writer;
         QVERIFY(writer.open(m_path, header()));
-        const std::array<ScopeSample, 3> samples{sampleAt(0), sampleAt(1), sampleAt(2)};
+        const std::array<ScopeSample, 3> samples { sampleAt(0), sampleAt(1), sampleAt(2) };
         QVERIFY(writer.append(samples.data(), 3));
         QVERIFY(writer.flush());
         QVERIFY(writer.append(samples.data() + 2, 1)); // pending only, as at a crash
@@ -204,10 +207,11 @@ private slots:
         QString error;
         QStringList warnings;
         QVERIFY2(readScopeFile(m_path, loaded, &error, &warnings), qPrintable(error));
-        QCOMPARE(warnings, QStringList{QStringLiteral("'%1' ends in an incomplete sample (7 "
-                                                      "byte(s)), which was left out: the "
-                                                      "recording was cut off")
-                                           .arg(m_path)});
+        QCOMPARE(warnings,
+                 QStringList { QStringLiteral("'%1' ends in an incomplete sample (7 "
+                                              "byte(s)), which was left out: the "
+                                              "recording was cut off")
+                                   .arg(m_path) });
         QCOMPARE(loaded.buffer.count(), 99);
         QCOMPARE(loaded.buffer.samples().at(98), sampleAt(98));
     }
@@ -220,7 +224,7 @@ private slots:
         const QString path = m_dir.filePath(QStringLiteral("good.ddscope"));
         ScopeFileWriter writer;
         QVERIFY(writer.open(path, header()));
-        const std::array<ScopeSample, 3> samples{sampleAt(0), sampleAt(1), sampleAt(2)};
+        const std::array<ScopeSample, 3> samples { sampleAt(0), sampleAt(1), sampleAt(2) };
         QVERIFY(writer.append(samples.data(), 3));
         QVERIFY(writer.close());
         const FileParts good = FileParts::of(readAll(path));
@@ -241,9 +245,8 @@ private slots:
         QTest::newRow("header cut short")
             << good.bytes().left(good.magic.size() + 4 + good.json.size() - 1)
             << QStringLiteral("'%1' is damaged: its header is cut short");
-        QTest::newRow("no header length")
-            << good.magic + "\x10\x00"
-            << QStringLiteral("'%1' is damaged: its header is cut short");
+        QTest::newRow("no header length") << good.magic
+                + "\x10\x00" << QStringLiteral("'%1' is damaged: its header is cut short");
         QTest::newRow("header length")
             << good.magic + QByteArray("\xff\xff\xff\x7f", 4) + good.json
             << QStringLiteral("'%1' is damaged: its header cannot be 2147483647 bytes long");
@@ -257,18 +260,18 @@ private slots:
             << withJson("{", "[")
             << QStringLiteral("'%1' has a damaged header: not JSON (missing value separator "
                               "at byte 12)");
-        QTest::newRow("divisor")
-            << withJson("\"divisor\":0", "\"divisor\":\"ten\"")
-            << QStringLiteral("'%1' has a damaged header: channels[2].scaling.divisor: "
-                              "expected an integer");
+        QTest::newRow("divisor") << withJson("\"divisor\":0", "\"divisor\":\"ten\"")
+                                 << QStringLiteral(
+                                        "'%1' has a damaged header: channels[2].scaling.divisor: "
+                                        "expected an integer");
         QTest::newRow("set mask")
             << withJson("\"setMask\":5", "\"setMask\":256")
             << QStringLiteral("'%1' has a damaged header: channels[0].setMask: 256 is outside "
                               "0..255");
-        QTest::newRow("source")
-            << withJson("\"source\":515", "\"source\":\"ru.03\"")
-            << QStringLiteral("'%1' has a damaged header: channels[0].source: expected an "
-                              "integer");
+        QTest::newRow("source") << withJson("\"source\":515", "\"source\":\"ru.03\"")
+                                << QStringLiteral(
+                                       "'%1' has a damaged header: channels[0].source: expected an "
+                                       "integer");
         QTest::newRow("started")
             << withJson("2026-11-25T16:57:06.123Z", "yesterday")
             << QStringLiteral("'%1' has a damaged header: started: expected a date and time "
@@ -333,13 +336,14 @@ private slots:
 
         // a batch out of order is refused whole; the file stays readable
         QVERIFY(writer.open(m_path, header(), &error));
-        const std::array<ScopeSample, 2> later{sampleAt(5), sampleAt(6)};
+        const std::array<ScopeSample, 2> later { sampleAt(5), sampleAt(6) };
         QVERIFY(writer.append(later.data(), 2, &error));
-        const std::array<ScopeSample, 2> mixed{sampleAt(7), sampleAt(1)};
+        const std::array<ScopeSample, 2> mixed { sampleAt(7), sampleAt(1) };
         QVERIFY(!writer.append(mixed.data(), 2, &error));
-        QCOMPARE(error, QStringLiteral("cannot write '%1': a sample is earlier than the one "
-                                       "before it")
-                            .arg(m_path));
+        QCOMPARE(error,
+                 QStringLiteral("cannot write '%1': a sample is earlier than the one "
+                                "before it")
+                     .arg(m_path));
         QVERIFY(!writer.append(mixed.data() + 1, 1, &error));
         QVERIFY(writer.append(mixed.data(), 1, &error));
         QCOMPARE(writer.count(), 3);

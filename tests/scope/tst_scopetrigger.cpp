@@ -17,7 +17,7 @@ using State = ScopeTrigger::State;
 ScopeRecording recordingOf(const QList<qint32> &raw)
 {
     ScopeRecording recording;
-    recording.channels[0].scaling = DisplayScaling({0, 10, 1, 0, quint16(1 << 8)});
+    recording.channels[0].scaling = DisplayScaling({ 0, 10, 1, 0, quint16(1 << 8) });
     for (qsizetype i = 0; i < raw.size(); ++i) {
         ScopeSample sample;
         sample.time = 1000 + i;
@@ -74,7 +74,7 @@ class TestScopeTrigger : public QObject
 private slots:
     void risingFiresAtTheFirstSampleAtOrAboveTheLevel()
     {
-        const ScopeRecording recording = recordingOf({0, 10, 20, 30, 40, 0, 50});
+        const ScopeRecording recording = recordingOf({ 0, 10, 20, 30, 40, 0, 50 });
         ScopeTrigger trigger(settings(2.5, Edge::Rising));
         QCOMPARE(trigger.state(), State::Idle);
         trigger.arm(0);
@@ -90,7 +90,7 @@ private slots:
 
     void fallingFiresAtTheFirstSampleAtOrBelowTheLevel()
     {
-        const ScopeRecording recording = recordingOf({50, 40, 30, 20, 10, 60, 0});
+        const ScopeRecording recording = recordingOf({ 50, 40, 30, 20, 10, 60, 0 });
         ScopeTrigger trigger(settings(2.5, Edge::Falling));
         trigger.arm(0);
         QCOMPARE(trigger.update(recording), State::Triggered);
@@ -106,24 +106,24 @@ private slots:
         // rising: down to the level and back up is no rising edge
         ScopeTrigger rising(settings(2.0, Edge::Rising));
         rising.arm(0);
-        QCOMPARE(rising.update(recordingOf({30, 20, 30, 20, 20, 30})), State::Armed);
-        QCOMPARE(rising.update(recordingOf({30, 20, 30, 20, 20, 30, 10, 20})), State::Triggered);
+        QCOMPARE(rising.update(recordingOf({ 30, 20, 30, 20, 20, 30 })), State::Armed);
+        QCOMPARE(rising.update(recordingOf({ 30, 20, 30, 20, 20, 30, 10, 20 })), State::Triggered);
         QCOMPARE(rising.triggerIndex(), 7);
         // falling: up to the level and back down is no falling edge
         ScopeTrigger falling(settings(2.0, Edge::Falling));
         falling.arm(0);
-        QCOMPARE(falling.update(recordingOf({10, 20, 10, 20, 20, 10})), State::Armed);
+        QCOMPARE(falling.update(recordingOf({ 10, 20, 10, 20, 20, 10 })), State::Armed);
         // a level between samples in display units: 1.5 lies between raw 10 and 20
         falling.setSettings(settings(1.5, Edge::Falling));
         falling.arm(0);
-        falling.update(recordingOf({10, 20, 10}));
+        falling.update(recordingOf({ 10, 20, 10 }));
         QCOMPARE(falling.triggerIndex(), 2);
     }
 
     void theSampleBeforeMustBeWatched()
     {
         // armed at 3: the step from index 2 to 3 happened before arming
-        const ScopeRecording recording = recordingOf({0, 0, 0, 50, 50, 0, 50});
+        const ScopeRecording recording = recordingOf({ 0, 0, 0, 50, 50, 0, 50 });
         ScopeTrigger trigger(settings(2.5, Edge::Rising));
         trigger.arm(3);
         QCOMPARE(trigger.update(recording), State::Triggered);
@@ -205,7 +205,7 @@ private slots:
         QCOMPARE(trigger.triggerIndex(), 1);
         // a sample beyond the end completes it as well
         trigger.arm(0);
-        ScopeRecording sparse = recordingOf({0, 50});
+        ScopeRecording sparse = recordingOf({ 0, 50 });
         QCOMPARE(trigger.update(sparse), State::Armed); // 1001 is before the 10 ms
         append(sparse, 1010, 0);
         append(sparse, 1011, 50);
@@ -217,7 +217,7 @@ private slots:
     void batchesGiveTheSameResultAsOne_data()
     {
         QTest::addColumn<int>("batch");
-        for (int batch : {1, 2, 7, 64, 999})
+        for (int batch : { 1, 2, 7, 64, 999 })
             QTest::newRow(qPrintable(QString::number(batch))) << batch;
     }
 
@@ -225,8 +225,8 @@ private slots:
     {
         QFETCH(int, batch);
         const QList<qint32> raw = wavy(3000);
-        for (Edge edge : {Edge::Rising, Edge::Falling}) {
-            for (qsizetype armedAt : {0, 1, 333}) {
+        for (Edge edge : { Edge::Rising, Edge::Falling }) {
+            for (qsizetype armedAt : { 0, 1, 333 }) {
                 const ScopeTriggerSettings chosen = settings(12.5, edge, 0.4, 400);
                 ScopeTrigger whole(chosen);
                 whole.arm(armedAt);
@@ -242,10 +242,10 @@ private slots:
                         states << fed.update(growing);
                 }
                 QCOMPARE(whole.state(), State::Complete);
-                const Outcome expected{whole.state(), whole.triggerIndex(), whole.shotStart(),
-                                       whole.shotEnd()};
-                const Outcome got{fed.state(), fed.triggerIndex(), fed.shotStart(),
-                                  fed.shotEnd()};
+                const Outcome expected { whole.state(), whole.triggerIndex(), whole.shotStart(),
+                                         whole.shotEnd() };
+                const Outcome got { fed.state(), fed.triggerIndex(), fed.shotStart(),
+                                    fed.shotEnd() };
                 QVERIFY(got == expected);
                 QVERIFY(whole.triggerIndex() > armedAt);
                 QVERIFY(std::is_sorted(states.begin(), states.end()));
@@ -264,9 +264,9 @@ private slots:
         trigger.arm(0);
         trigger.setSettings(settings(1.0, Edge::Rising));
         QCOMPARE(trigger.state(), State::Idle);
-        QCOMPARE(trigger.update(recordingOf({0, 50})), State::Idle);
+        QCOMPARE(trigger.update(recordingOf({ 0, 50 })), State::Idle);
         trigger.arm(0);
-        QCOMPARE(trigger.update(recordingOf({0, 50})), State::Triggered); // until 1011
+        QCOMPARE(trigger.update(recordingOf({ 0, 50 })), State::Triggered); // until 1011
         trigger.disarm();
         QCOMPARE(trigger.state(), State::Idle);
     }
