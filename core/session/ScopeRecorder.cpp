@@ -1,6 +1,7 @@
 #include "ScopeRecorder.h"
 
 #include "client/DriveClient.h"
+#include "scope/ScopeFileWriter.h"
 #include "scope/ScopeRecording.h"
 
 namespace DriveDesk {
@@ -8,6 +9,8 @@ namespace DriveDesk {
 namespace {
 
 constexpr qint64 kRateWindowMs = 1000;
+// A crash of the program loses at most this much of the file.
+constexpr qint64 kFlushIntervalMs = 1000;
 
 } // namespace
 
@@ -24,6 +27,7 @@ ScopeRecorder::~ScopeRecorder()
 {
     if (m_job)
         m_watcher.cancel();
+    closeFile();
 }
 
 void ScopeRecorder::start(ScopeRecording *recording, ScopeRecorderOptions options)
@@ -74,8 +78,10 @@ void ScopeRecorder::takeSamples()
     m_status.samples = buffer.count();
     if (!polls.isEmpty())
         updateRate(polls.last().hostMs);
-    if (added > 0)
+    if (added > 0) {
+        writeToFile(first, added);
         emit samplesAppended(first, added);
+    }
     emit statusChanged(m_status);
     if (durationReached)
         stop();
@@ -97,12 +103,50 @@ void ScopeRecorder::updateRate(qint64 hostMs)
     }
 }
 
+void ScopeRecorder::writeToFile(qsizetype first, qsizetype count)
+{
+    if (m_options.filePath.isEmpty() || !m_status.fileError.isEmpty())
+        return;
+    QString error;
+    if (!m_file) {
+        m_file = std::make_unique<ScopeFileWriter>();
+        if (!m_file->open(m_options.filePath, ScopeFileHeader::of(*m_recording), &error)) {
+            m_status.fileError = error;
+            m_file.reset();
+            return;
+        }
+        m_sinceFlush.start();
+    }
+    bool ok = m_file->append(m_recording->buffer.samples(), first, first + count, &error);
+    if (ok && m_sinceFlush.elapsed() >= kFlushIntervalMs) {
+        ok = m_file->flush(&error);
+        m_sinceFlush.start();
+    }
+    if (!ok) {
+        m_status.fileError = error;
+        m_file->close();
+        m_file.reset();
+    }
+}
+
+void ScopeRecorder::closeFile()
+{
+    if (!m_file)
+        return;
+    QString error;
+    if (!m_file->close(&error) && m_status.fileError.isEmpty())
+        m_status.fileError = error;
+    m_file.reset();
+}
+
 void ScopeRecorder::pollingEnded()
 {
     if (!m_recording)
         return;
     takeSamples(); // the last ones the job let out
     m_take.stop();
+    closeFile();
+    emit statusChanged(m_status);
     ScopePollEnd end;
     const QFuture<ScopePollEnd> future = m_watcher.future();
     if (future.resultCount() > 0)

@@ -14,12 +14,15 @@
 namespace DriveDesk {
 
 class DriveClient;
+class ScopeFileWriter;
 struct ScopeRecording;
 
 struct ScopeRecorderOptions
 {
     ScopePollOptions polling;
     qint64 durationMs = 0; // 0: until stop(); otherwise the recording's span in drive time
+    // Where to record to while recording (.ddscope), as well; empty: memory only.
+    QString filePath;
 };
 
 // How a recording goes, for a status line.
@@ -30,6 +33,9 @@ struct ScopeRecorderStatus
     double averageHz = 0; // over the whole recording, by the drive's clock
     ScopePollCounts counts;
     qint64 discarded = 0; // answers whose timestamp went back: not stored
+    // Why recording to the file stopped (the recording in memory goes on); empty while it
+    // works or when there is no file.
+    QString fileError;
 };
 
 // Records the drive's scope data into a ScopeRecording: runs a ScopePollJob in the client's
@@ -65,6 +71,8 @@ private:
     void takeSamples();
     void pollingEnded();
     void updateRate(qint64 hostMs);
+    void writeToFile(qsizetype first, qsizetype count);
+    void closeFile();
 
     DriveClient *m_client = nullptr;
     ScopeRecording *m_recording = nullptr;
@@ -77,6 +85,8 @@ private:
     ScopeRecorderStatus m_status;
     qint64 m_firstTime = 0;
     std::deque<std::pair<qint64, qint64>> m_rateWindow; // (host ms, samples so far)
+    std::unique_ptr<ScopeFileWriter> m_file; // opened with the first sample
+    QElapsedTimer m_sinceFlush;
 };
 
 } // namespace DriveDesk

@@ -1,6 +1,7 @@
 #include "../client/ClientTestSupport.h"
 #include "bus/SimulatedBus.h"
 #include "bus/SimulatorServer.h"
+#include "scope/ScopeFileReader.h"
 #include "scope/ScopeRecording.h"
 #include "session/ScopeChannelsJob.h"
 #include "session/ScopeOfflineJob.h"
@@ -8,6 +9,7 @@
 
 #include <QFutureWatcher>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTest>
 
 using namespace DriveDesk;
@@ -156,6 +158,44 @@ private slots:
         choices[0] = ChannelAssignment{kMaxSpeedForward, 1};
         const ScopeChannelsOutcome outcome = assign(s, drive, choices);
         QVERIFY(outcome.error.contains(QStringLiteral("Sy.16")));
+    }
+
+    void recordsToAFileWhileRecording()
+    {
+        Session s(simulated(Protocol::Hsp5, fast()));
+        QVERIFY(s.connected());
+        const DriveDescription drive = scanned(s);
+        ScopeAssignment choices;
+        choices[0] = ChannelAssignment{kMaxSpeedForward, 0x01};
+        const ScopeChannelsOutcome outcome = assign(s, drive, choices);
+        QVERIFY(outcome.error.isEmpty());
+        ScopeRecording recording;
+        recording.channels = scopeChannels(drive, outcome.assignment);
+        recording.source = QStringLiteral("sim");
+        QTemporaryDir dir;
+        ScopeRecorderOptions options;
+        options.filePath = dir.filePath(QStringLiteral("run.ddscope"));
+        ScopeRecorder recorder(s.client.get());
+        const ScopePollEnd end = record(recorder, recording, options,
+                                        [&] { return recording.buffer.count() >= 500; });
+        QVERIFY(end.reason.isEmpty());
+        QVERIFY2(recorder.status().fileError.isEmpty(), qPrintable(recorder.status().fileError));
+
+        ScopeRecording loaded;
+        QString error;
+        QVERIFY2(readScopeFile(options.filePath, loaded, &error), qPrintable(error));
+        QCOMPARE(loaded.channels, recording.channels);
+        QCOMPARE(loaded.buffer.count(), recording.buffer.count());
+        for (qsizetype i = 0; i < recording.buffer.count(); ++i)
+            QCOMPARE(loaded.buffer.samples().at(i), recording.buffer.samples().at(i));
+
+        // A file that cannot be written is said so; the recording in memory goes on.
+        ScopeRecording second;
+        options.filePath = dir.filePath(QStringLiteral("missing/run.ddscope"));
+        record(recorder, second, options, [&] { return second.buffer.count() >= 100; });
+        QVERIFY(second.buffer.count() >= 100);
+        QVERIFY2(recorder.status().fileError.contains(QStringLiteral("missing")),
+                 qPrintable(recorder.status().fileError));
     }
 
     void theRateLimitHolds()
