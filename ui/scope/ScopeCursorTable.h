@@ -1,0 +1,31 @@
+#pragma once
+
+#include "ScopeCursorReadout.h"
+
+#include <QTableWidget>
+
+namespace DriveDesk {
+
+// The cursors' read-out under the chart: a row for the time (seconds from the first sample)
+// and one per drawn channel, each with its value at cursor 1, at cursor 2 and the difference.
+// Hidden while no cursor is placed.
+class ScopeCursorTable : public QTableWidget
+{
+    Q_OBJECT
+public:
+    enum Column { NameColumn, FirstColumn, SecondColumn, DifferenceColumn, ColumnCount };
+
+    explicit ScopeCursorTable(QWidget *parent = nullptr);
+
+    // Values shown as the channels' scalings format them; the difference with as many
+    // decimals.
+    void showReadout(const ScopeCursorReadout &readout, const ScopeChannels &channels);
+    // The text of a cell ("" for an empty one).
+    QString cellText(int row, int column) const;
+
+private:
+    void setCell(int row, int column, const QString &text);
+    void fitHeight();
+};
+
+} // namespace DriveDesk
