@@ -82,6 +82,8 @@ public:
     void showMessage(const QString &text) override;
     void chooseParameterFile(const QString &title,
                              std::function<void(const QString &path)> chosen) override;
+    void chooseFileToRead(const QString &title, const QString &filter,
+                          std::function<void(const QString &path)> chosen) override;
     void chooseFileToWrite(const QString &title, const QString &name, const QString &filter,
                            std::function<void(const QString &path)> chosen) override;
     void updateActions() override;

@@ -242,7 +242,13 @@ QFileDialog *MainWindow::fileDialog(const QString &title, const QString &name,
 void MainWindow::chooseParameterFile(const QString &title,
                                      std::function<void(const QString &path)> chosen)
 {
-    QFileDialog *dialog = fileDialog(title);
+    chooseFileToRead(title, {}, std::move(chosen));
+}
+
+void MainWindow::chooseFileToRead(const QString &title, const QString &filter,
+                                  std::function<void(const QString &path)> chosen)
+{
+    QFileDialog *dialog = fileDialog(title, {}, filter);
     connect(dialog, &QFileDialog::fileSelected, this,
             [chosen = std::move(chosen)](const QString &path) {
                 rememberDirectory(path);

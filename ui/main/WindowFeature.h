@@ -52,6 +52,9 @@ public:
     // its path once the user picked one.
     virtual void chooseParameterFile(const QString &title,
                                      std::function<void(const QString &path)> chosen) = 0;
+    // The same for any kind of file (`filter` like "Scope recordings (*.ddscope)").
+    virtual void chooseFileToRead(const QString &title, const QString &filter,
+                                  std::function<void(const QString &path)> chosen) = 0;
     // Asks where to write a file (`filter` like "CSV files (*.csv)"), and whether to replace one
     // that is there; `chosen` runs with the path once the user agreed.
     virtual void chooseFileToWrite(const QString &title, const QString &name,

@@ -5,6 +5,7 @@
 #include "edit/EditingFeature.h"
 #include "edit/PollingFeature.h"
 #include "monitor/MonitorFeature.h"
+#include "scope/ScopeFeature.h"
 #include "transfer/DownloadFeature.h"
 #include "transfer/ExportFeature.h"
 
@@ -25,6 +26,7 @@ QList<WindowFeature *> makeWindowFeatures(WindowFrame &frame)
         new EditingFeature(frame),
         new AccessFeature(frame),
         new MonitorFeature(frame),
+        new ScopeFeature(frame),
         download,
         compare,
         new ExportFeature(frame),

@@ -1,5 +1,6 @@
-# The scope's chart: QCustomPlot fed the recording's decimated min/max points on a redraw
-# timer, the channels' traces and value axes, two cursors and their read-out (docs/scope.md).
+# The scope: the chart (QCustomPlot fed the recording's decimated min/max points on a redraw
+# timer, the channels' traces and value axes, two cursors and their read-out), the channels'
+# panel, and the dock and feature that record from the drive (docs/scope.md).
 target_sources(drivedesk_ui PRIVATE
     scope/ScopeChart.cpp scope/ScopeChartExport.cpp scope/ScopeChartInput.cpp scope/ScopeChart.h
     scope/ScopeCursorReadout.cpp scope/ScopeCursorReadout.h
@@ -7,4 +8,7 @@ target_sources(drivedesk_ui PRIVATE
     scope/ScopeCursorTable.cpp scope/ScopeCursorTable.h
     scope/ScopeTraces.cpp scope/ScopeTraces.h
     scope/QCustomPlotInclude.h
+    scope/ScopeChannelPanel.cpp scope/ScopeChannelPanel.h
+    scope/ScopeDock.cpp scope/ScopeDockRecording.cpp scope/ScopeDockFiles.cpp scope/ScopeDock.h
+    scope/ScopeFeature.cpp scope/ScopeFeature.h
 )

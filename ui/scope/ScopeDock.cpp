@@ -1,0 +1,374 @@
+#include "ScopeDock.h"
+
+#include "ScopeChannelPanel.h"
+#include "ScopeChart.h"
+
+#include "client/DriveClient.h"
+#include "main/FrameSupport.h"
+#include "main/WindowFeature.h"
+#include "scope/ScopeCsv.h"
+#include "scope/ScopeFileReader.h"
+#include "scope/ScopeRecording.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMenu>
+#include <QProgressBar>
+#include <QSettings>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QToolBar>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+namespace DriveDesk {
+
+namespace {
+
+const QString kGroup = QStringLiteral("scope");
+
+} // namespace
+
+ScopeDock::ScopeDock(WindowFrame &frame, QWidget *parent)
+    : QDockWidget(tr("Scope"), parent)
+    , m_frame(frame)
+    , m_recording(std::make_unique<ScopeRecording>())
+{
+    setObjectName(QStringLiteral("scopeDock"));
+    auto *content = new QWidget(this);
+    auto *layout = new QVBoxLayout(content);
+    layout->setContentsMargins(4, 2, 4, 2);
+    layout->setSpacing(2);
+
+    m_chart = new ScopeChart(content);
+    m_chart->setObjectName(QStringLiteral("scopeChart"));
+    m_chart->setRecording(m_recording.get());
+    m_chart->setMinimumHeight(240); // a chart to read, not a strip
+    m_panel = new ScopeChannelPanel(content);
+    m_panel->setObjectName(QStringLiteral("scopeChannels"));
+    buildToolBars();
+    for (QToolBar *bar : content->findChildren<QToolBar *>(Qt::FindDirectChildrenOnly))
+        layout->addWidget(bar);
+
+    auto *splitter = new QSplitter(Qt::Horizontal, content);
+    auto *side = new QWidget(splitter);
+    auto *sideLayout = new QVBoxLayout(side);
+    sideLayout->setContentsMargins(0, 0, 0, 0);
+    sideLayout->addWidget(m_panel);
+    sideLayout->addStretch(1);
+    splitter->addWidget(side);
+    splitter->addWidget(m_chart);
+    splitter->setStretchFactor(1, 1);
+    layout->addWidget(splitter, 1);
+
+    auto *statusRow = new QHBoxLayout;
+    m_status = new QLabel(content);
+    m_status->setObjectName(QStringLiteral("scopeStatus"));
+    m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_progress = new QProgressBar(content);
+    m_progress->setMaximumWidth(200);
+    m_progress->hide();
+    statusRow->addWidget(m_status, 1);
+    statusRow->addWidget(m_progress);
+    layout->addLayout(statusRow);
+    setWidget(content);
+
+    connect(m_panel, &ScopeChannelPanel::visibilityChanged, m_chart, &ScopeChart::setChannelVisible);
+    connect(m_panel, &ScopeChannelPanel::colorChanged, m_chart, &ScopeChart::setChannelColor);
+    connect(m_panel, &ScopeChannelPanel::ownAxisChanged, m_chart, &ScopeChart::setChannelOwnAxis);
+    connect(m_chart, &ScopeChart::followChanged, m_rollAction, &QAction::setChecked);
+    connect(m_chart, &ScopeChart::autoScaleChanged, m_autoScaleAction, &QAction::setChecked);
+    connect(m_chart, &ScopeChart::frozenChanged, m_freezeAction, &QAction::setChecked);
+
+    restoreSettings();
+    for (int channel = 0; channel < ScopeChart::kChannels; ++channel) {
+        m_chart->setChannelVisible(channel, m_panel->isChannelVisible(channel));
+        m_chart->setChannelColor(channel, m_panel->channelColor(channel));
+        m_chart->setChannelOwnAxis(channel, m_panel->hasOwnAxis(channel));
+    }
+    updateActions();
+}
+
+ScopeDock::~ScopeDock()
+{
+    delete m_recorder; // before the recording it writes to
+    m_recorder = nullptr;
+}
+
+void ScopeDock::buildToolBars()
+{
+    auto *bar = new QToolBar(tr("Scope"), m_chart->parentWidget());
+    bar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    bar->setIconSize(QSize(16, 16));
+
+    m_recordAction = bar->addAction(themedIcon("media-record", QStyle::SP_MediaPlay), tr("Record"));
+    m_recordAction->setObjectName(QStringLiteral("scopeRecordAction"));
+    m_recordAction->setCheckable(true);
+    m_recordAction->setShortcut(QKeySequence(Qt::Key_F9));
+    m_recordAction->setToolTip(tr("Record the drive's scope data; again to stop (F9)"));
+    connect(m_recordAction, &QAction::triggered, this, &ScopeDock::toggleRecording);
+
+    m_freezeAction = bar->addAction(themedIcon("media-playback-pause", QStyle::SP_MediaPause),
+                                    tr("Pause View"));
+    m_freezeAction->setObjectName(QStringLiteral("scopeFreezeAction"));
+    m_freezeAction->setCheckable(true);
+    m_freezeAction->setToolTip(tr("Hold the chart still; the recording goes on (Space in the "
+                                  "chart)"));
+    connect(m_freezeAction, &QAction::toggled, m_chart, &ScopeChart::setFrozen);
+    bar->addSeparator();
+
+    m_rollAction = bar->addAction(tr("Roll"));
+    m_rollAction->setObjectName(QStringLiteral("scopeRollAction"));
+    m_rollAction->setCheckable(true);
+    m_rollAction->setChecked(true);
+    m_rollAction->setToolTip(tr("Follow the newest samples (End in the chart)"));
+    connect(m_rollAction, &QAction::triggered, m_chart, &ScopeChart::setFollow);
+    m_rollSeconds = new QDoubleSpinBox(bar);
+    m_rollSeconds->setObjectName(QStringLiteral("scopeRollSeconds"));
+    m_rollSeconds->setRange(0.1, 3600);
+    m_rollSeconds->setDecimals(1);
+    m_rollSeconds->setValue(ScopeChart::kDefaultRollSeconds);
+    m_rollSeconds->setSuffix(tr(" s"));
+    m_rollSeconds->setToolTip(tr("How many seconds the rolling view shows"));
+    connect(m_rollSeconds, &QDoubleSpinBox::valueChanged, m_chart, &ScopeChart::setRollSeconds);
+    bar->addWidget(m_rollSeconds);
+    m_wholeAction = bar->addAction(tr("Whole"));
+    m_wholeAction->setObjectName(QStringLiteral("scopeWholeAction"));
+    m_wholeAction->setToolTip(tr("Show the whole recording (Home in the chart)"));
+    connect(m_wholeAction, &QAction::triggered, m_chart, &ScopeChart::showAll);
+    m_autoScaleAction = bar->addAction(tr("Auto-scale"));
+    m_autoScaleAction->setObjectName(QStringLiteral("scopeAutoScaleAction"));
+    m_autoScaleAction->setCheckable(true);
+    m_autoScaleAction->setChecked(true);
+    m_autoScaleAction->setToolTip(tr("Fit the value axes to what is shown (A in the chart)"));
+    connect(m_autoScaleAction, &QAction::triggered, m_chart, &ScopeChart::setAutoScale);
+    bar->addSeparator();
+
+    auto *rateLabel = new QLabel(tr("Max. rate"), bar);
+    bar->addWidget(rateLabel);
+    m_rateLimit = new QSpinBox(bar);
+    m_rateLimit->setObjectName(QStringLiteral("scopeRateLimit"));
+    m_rateLimit->setRange(0, 100000);
+    m_rateLimit->setSuffix(tr(" Hz"));
+    m_rateLimit->setSpecialValueText(tr("as fast as the link"));
+    m_rateLimit->setToolTip(tr("Polls a second at most; 0: as fast as the link allows"));
+    rateLabel->setBuddy(m_rateLimit);
+    bar->addWidget(m_rateLimit);
+    bar->addSeparator();
+
+    auto *fileMenu = new QMenu(tr("Recording"), bar);
+    fileMenu->addAction(tr("Open Recording..."), this, &ScopeDock::chooseRecordingToOpen);
+    m_toFileAction = fileMenu->addAction(tr("Record to File..."));
+    m_toFileAction->setObjectName(QStringLiteral("scopeToFileAction"));
+    m_toFileAction->setCheckable(true);
+    connect(m_toFileAction, &QAction::triggered, this, &ScopeDock::chooseRecordingFile);
+    m_offlineAction = fileMenu->addAction(tr("Read Offline Records"), this,
+                                          &ScopeDock::readOfflineRecords);
+    m_offlineAction->setObjectName(QStringLiteral("scopeOfflineAction"));
+    fileMenu->addSeparator();
+    fileMenu->addAction(tr("Export All as CSV..."), this, [this] { chooseCsv(false); })
+        ->setObjectName(QStringLiteral("scopeCsvAllAction"));
+    fileMenu->addAction(tr("Export Visible Range as CSV..."), this, [this] { chooseCsv(true); })
+        ->setObjectName(QStringLiteral("scopeCsvVisibleAction"));
+    fileMenu->addAction(tr("Export Chart as PNG..."), this, [this] { chooseImage(false); });
+    fileMenu->addAction(tr("Export Chart as PDF..."), this, [this] { chooseImage(true); });
+    m_fileButton = new QToolButton(bar);
+    m_fileButton->setText(tr("Recording"));
+    m_fileButton->setMenu(fileMenu);
+    m_fileButton->setPopupMode(QToolButton::InstantPopup);
+    bar->addWidget(m_fileButton);
+
+    auto *triggerBar = new QToolBar(tr("Trigger"), m_chart->parentWidget());
+    triggerBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    buildTriggerBar(triggerBar);
+}
+
+void ScopeDock::buildTriggerBar(QToolBar *bar)
+{
+    m_triggerAction = bar->addAction(tr("Single Shot"));
+    m_triggerAction->setObjectName(QStringLiteral("scopeTriggerAction"));
+    m_triggerAction->setCheckable(true);
+    m_triggerAction->setToolTip(tr("Wait for the trigger, record one shot around it and stop"));
+    connect(m_triggerAction, &QAction::triggered, this, &ScopeDock::armTrigger);
+    bar->addWidget(new QLabel(tr("Channel"), bar));
+    m_triggerChannel = new QComboBox(bar);
+    m_triggerChannel->setObjectName(QStringLiteral("scopeTriggerChannel"));
+    m_triggerChannel->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    for (int channel = 0; channel < ScopeChart::kChannels; ++channel)
+        m_triggerChannel->addItem(QString::number(channel + 1));
+    connect(m_triggerChannel, &QComboBox::currentIndexChanged, this,
+            &ScopeDock::triggerChannelChanged);
+    bar->addWidget(m_triggerChannel);
+    m_triggerEdge = new QComboBox(bar);
+    m_triggerEdge->setObjectName(QStringLiteral("scopeTriggerEdge"));
+    m_triggerEdge->addItem(tr("rising"), int(ScopeTriggerSettings::Edge::Rising));
+    m_triggerEdge->addItem(tr("falling"), int(ScopeTriggerSettings::Edge::Falling));
+    bar->addWidget(m_triggerEdge);
+    bar->addWidget(new QLabel(tr("Level"), bar));
+    m_triggerLevel = new QDoubleSpinBox(bar);
+    m_triggerLevel->setObjectName(QStringLiteral("scopeTriggerLevel"));
+    m_triggerLevel->setRange(-1e9, 1e9);
+    m_triggerLevel->setDecimals(2);
+    bar->addWidget(m_triggerLevel);
+    bar->addWidget(new QLabel(tr("Pre-trigger"), bar));
+    m_triggerPre = new QSpinBox(bar);
+    m_triggerPre->setObjectName(QStringLiteral("scopeTriggerPre"));
+    m_triggerPre->setRange(0, 100);
+    m_triggerPre->setValue(20);
+    m_triggerPre->setSuffix(QStringLiteral(" %"));
+    m_triggerPre->setToolTip(tr("The share of the shot before the trigger"));
+    bar->addWidget(m_triggerPre);
+    bar->addWidget(new QLabel(tr("Shot"), bar));
+    m_triggerWindow = new QDoubleSpinBox(bar);
+    m_triggerWindow->setObjectName(QStringLiteral("scopeTriggerWindow"));
+    m_triggerWindow->setRange(0.01, 3600);
+    m_triggerWindow->setValue(1.0);
+    m_triggerWindow->setSuffix(tr(" s"));
+    m_triggerWindow->setToolTip(tr("How long the shot is"));
+    bar->addWidget(m_triggerWindow);
+}
+
+void ScopeDock::setClient(DriveClient *client)
+{
+    if (m_recorder && m_client != client) {
+        m_recorder->stop();
+        delete m_recorder; // its job ends with the client it ran on
+        m_recorder = nullptr;
+        m_recordAction->setChecked(false);
+        emit recordingChanged(false);
+    }
+    m_client = client;
+    m_hasDrive = false;
+    m_panel->setDrive(nullptr);
+    if (client && !m_recorder) {
+        m_recorder = new ScopeRecorder(client, this);
+        connect(m_recorder, &ScopeRecorder::samplesAppended, this, &ScopeDock::samplesAppended);
+        connect(m_recorder, &ScopeRecorder::statusChanged, this, &ScopeDock::recorderStatus);
+        connect(m_recorder, &ScopeRecorder::finished, this, &ScopeDock::recordingFinished);
+    }
+    updateActions();
+}
+
+void ScopeDock::setDrive(const DriveDescription &drive)
+{
+    m_drive = drive;
+    m_hasDrive = true;
+    m_panel->setDrive(&m_drive);
+    updateActions();
+}
+
+bool ScopeDock::isRecording() const
+{
+    return m_recorder && m_recorder->isRecording();
+}
+
+void ScopeDock::updateActions()
+{
+    const bool connected = m_client && m_client->state() == DriveClient::State::Connected;
+    const bool busy = isRecording() || m_assigning || m_readingOffline;
+    m_recordAction->setEnabled(connected && m_hasDrive && !m_readingOffline);
+    m_recordAction->setChecked(isRecording() || m_assigning);
+    m_offlineAction->setEnabled(connected && m_hasDrive && !busy);
+    m_triggerAction->setEnabled(connected && m_hasDrive && !m_readingOffline);
+    m_toFileAction->setEnabled(!busy);
+    m_fileButton->setEnabled(true);
+    m_panel->setSourcesEditable(!busy);
+    if (!busy && m_recording->buffer.count() == 0) {
+        showStatus(connected && m_hasDrive
+                       ? tr("Choose the sources and press Record (F9), or open a recording.")
+                       : tr("Connect to a drive to record, or open a recording."));
+    }
+}
+
+void ScopeDock::showStatus(const QString &text, bool problem)
+{
+    m_status->setText(text);
+    m_status->setStyleSheet(problem ? QStringLiteral("color: #b00020;") : QString());
+}
+
+bool ScopeDock::openRecording(const QString &path, QString *error)
+{
+    auto recording = std::make_unique<ScopeRecording>();
+    QStringList warnings;
+    if (!readScopeFile(path, *recording, error, &warnings))
+        return false;
+    replaceRecording(std::move(recording));
+    m_chart->showAll();
+    showStatus(warnings.isEmpty()
+                   ? tr("%1: %n sample(s)", nullptr, int(m_recording->buffer.count())).arg(path)
+                   : warnings.join(QLatin1Char(' ')),
+               !warnings.isEmpty());
+    return true;
+}
+
+bool ScopeDock::exportCsv(const QString &path, bool visibleOnly, QString *error)
+{
+    ScopeCsvOptions options;
+    if (visibleOnly) {
+        const ScopeTimeRange range = m_chart->visibleTimeRange();
+        options.fromMs = range.fromMs;
+        options.toMs = range.toMs;
+    }
+    options.channels.clear();
+    for (int channel = 0; channel < m_recording->channels.size(); ++channel) {
+        if (m_recording->channels.at(channel).enabled)
+            options.channels << channel;
+    }
+    return saveScopeCsv(path, *m_recording, options, error);
+}
+
+void ScopeDock::restoreSettings()
+{
+    QSettings settings;
+    settings.beginGroup(kGroup);
+    ScopeAssignment choices;
+    for (int channel = 0; channel < ScopeChart::kChannels; ++channel) {
+        const QString key = QStringLiteral("channel%1/").arg(channel + 1);
+        m_panel->setChannelVisible(channel, settings.value(key + QLatin1String("visible"), true).toBool());
+        const QColor color(settings.value(key + QLatin1String("color")).toString());
+        if (color.isValid())
+            m_panel->setChannelColor(channel, color);
+        m_panel->setOwnAxis(channel, settings.value(key + QLatin1String("ownAxis"), false).toBool());
+        const QVariant source = settings.value(key + QLatin1String("source"));
+        if (source.isValid())
+            choices[std::size_t(channel)] = ChannelAssignment{source.toInt(), 0x01};
+    }
+    m_panel->setChoices(choices);
+    m_rollSeconds->setValue(settings.value(QStringLiteral("rollSeconds"),
+                                           ScopeChart::kDefaultRollSeconds).toDouble());
+    m_rateLimit->setValue(settings.value(QStringLiteral("rateLimit"), 0).toInt());
+    m_triggerChannel->setCurrentIndex(settings.value(QStringLiteral("trigger/channel"), 0).toInt());
+    m_triggerEdge->setCurrentIndex(settings.value(QStringLiteral("trigger/falling"), false).toBool() ? 1 : 0);
+    m_triggerLevel->setValue(settings.value(QStringLiteral("trigger/level"), 0.0).toDouble());
+    m_triggerPre->setValue(settings.value(QStringLiteral("trigger/preTrigger"), 20).toInt());
+    m_triggerWindow->setValue(settings.value(QStringLiteral("trigger/shotSeconds"), 1.0).toDouble());
+}
+
+void ScopeDock::saveSettings() const
+{
+    QSettings settings;
+    settings.beginGroup(kGroup);
+    const ScopeAssignment choices = m_panel->wantedChoices();
+    for (int channel = 0; channel < ScopeChart::kChannels; ++channel) {
+        const QString key = QStringLiteral("channel%1/").arg(channel + 1);
+        settings.setValue(key + QLatin1String("visible"), m_panel->isChannelVisible(channel));
+        settings.setValue(key + QLatin1String("color"), m_panel->channelColor(channel).name());
+        settings.setValue(key + QLatin1String("ownAxis"), m_panel->hasOwnAxis(channel));
+        if (const auto &choice = choices[std::size_t(channel)])
+            settings.setValue(key + QLatin1String("source"), choice->source);
+        else
+            settings.remove(key + QLatin1String("source"));
+    }
+    settings.setValue(QStringLiteral("rollSeconds"), m_rollSeconds->value());
+    settings.setValue(QStringLiteral("rateLimit"), m_rateLimit->value());
+    settings.setValue(QStringLiteral("trigger/channel"), m_triggerChannel->currentIndex());
+    settings.setValue(QStringLiteral("trigger/falling"), m_triggerEdge->currentIndex() == 1);
+    settings.setValue(QStringLiteral("trigger/level"), m_triggerLevel->value());
+    settings.setValue(QStringLiteral("trigger/preTrigger"), m_triggerPre->value());
+    settings.setValue(QStringLiteral("trigger/shotSeconds"), m_triggerWindow->value());
+}
+
+} // namespace DriveDesk

@@ -1,0 +1,129 @@
+#pragma once
+
+#include "parameters/DriveDescription.h"
+#include "scope/ScopeTrigger.h"
+#include "session/ScopeRecorder.h"
+
+#include <QDockWidget>
+#include <QPointer>
+
+#include <memory>
+
+class QAction;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QProgressBar;
+class QSpinBox;
+class QToolBar;
+class QToolButton;
+
+namespace DriveDesk {
+
+class DriveClient;
+class ScopeChannelPanel;
+class ScopeChart;
+class WindowFrame;
+struct ScopeChannelsOutcome;
+struct ScopeOfflineRecords;
+struct ScopeRecording;
+
+// The scope in the main window: the chart of a recording, the channels' sources and looks,
+// recording from the drive (optionally into a file as it goes), a single-shot trigger, the
+// drive's offline records, recordings loaded from files, and export as CSV, PNG and PDF.
+// What it records and how is core's (ScopeRecorder, ScopeChannelsJob, ScopeTrigger, ScopeCsv,
+// the recording file); the dock arranges it and remembers its settings.
+class ScopeDock : public QDockWidget
+{
+    Q_OBJECT
+public:
+    ScopeDock(WindowFrame &frame, QWidget *parent = nullptr);
+    ~ScopeDock() override;
+
+    // The drive to record from; nullptr: none (a recording already there stays to be viewed).
+    void setClient(DriveClient *client);
+    // What the scan found: the channel-assignment parameters and the sources offered.
+    void setDrive(const DriveDescription &drive);
+
+    ScopeChart *chart() const { return m_chart; }
+    ScopeChannelPanel *channelPanel() const { return m_panel; }
+    const ScopeRecording *recording() const { return m_recording.get(); }
+    bool isRecording() const;
+
+    // Opens a recording file to view it (the same view, no drive); false with the reason.
+    bool openRecording(const QString &path, QString *error = nullptr);
+    // Where the next recordings also go as they are recorded (.ddscope); empty: memory only.
+    void setRecordFile(const QString &path);
+    QString recordFile() const { return m_recordFile; }
+    // The recording as CSV: everything, or only the visible time range.
+    bool exportCsv(const QString &path, bool visibleOnly, QString *error = nullptr);
+
+    void saveSettings() const;
+    // The connection changed state: what can be done now.
+    void refreshActions() { updateActions(); }
+
+signals:
+    void recordingChanged(bool recording);
+
+private:
+    void buildToolBars();
+    void buildTriggerBar(QToolBar *bar);
+    void restoreSettings();
+    void updateActions();
+    void showStatus(const QString &text, bool problem = false);
+
+    // ScopeDockRecording.cpp
+    void toggleRecording(bool on);
+    void startRecording();
+    void channelsAssigned(const ScopeChannelsOutcome &outcome);
+    void stopRecording();
+    void samplesAppended();
+    void recorderStatus(const ScopeRecorderStatus &status);
+    void recordingFinished(const ScopePollEnd &end);
+    void armTrigger(bool on);
+    ScopeTriggerSettings triggerSettings() const;
+    void triggerChannelChanged();
+    void readOfflineRecords();
+    void offlineRecordsRead(const ScopeOfflineRecords &records);
+    void replaceRecording(std::unique_ptr<ScopeRecording> recording);
+
+    // ScopeDockFiles.cpp
+    void chooseRecordingToOpen();
+    void chooseRecordingFile(bool on);
+    void chooseCsv(bool visibleOnly);
+    void chooseImage(bool pdf);
+
+    WindowFrame &m_frame;
+    QPointer<DriveClient> m_client;
+    DriveDescription m_drive;
+    bool m_hasDrive = false;
+    std::unique_ptr<ScopeRecording> m_recording;
+    ScopeRecorder *m_recorder = nullptr;
+    ScopeTrigger m_trigger;
+    bool m_assigning = false;
+    bool m_readingOffline = false;
+    QString m_recordFile; // where the next recording also goes; empty: memory only
+
+    ScopeChart *m_chart = nullptr;
+    ScopeChannelPanel *m_panel = nullptr;
+    QLabel *m_status = nullptr;
+    QProgressBar *m_progress = nullptr;
+    QAction *m_recordAction = nullptr;
+    QAction *m_freezeAction = nullptr;
+    QAction *m_rollAction = nullptr;
+    QAction *m_wholeAction = nullptr;
+    QAction *m_autoScaleAction = nullptr;
+    QAction *m_triggerAction = nullptr;
+    QAction *m_toFileAction = nullptr;
+    QAction *m_offlineAction = nullptr;
+    QToolButton *m_fileButton = nullptr;
+    QDoubleSpinBox *m_rollSeconds = nullptr;
+    QSpinBox *m_rateLimit = nullptr;
+    QComboBox *m_triggerChannel = nullptr;
+    QComboBox *m_triggerEdge = nullptr;
+    QDoubleSpinBox *m_triggerLevel = nullptr;
+    QSpinBox *m_triggerPre = nullptr;
+    QDoubleSpinBox *m_triggerWindow = nullptr;
+};
+
+} // namespace DriveDesk

@@ -1,0 +1,245 @@
+// The scope dock's recording: channels assigned, the recorder, the trigger, offline records.
+#include "ScopeDock.h"
+
+#include "ScopeChannelPanel.h"
+#include "ScopeChart.h"
+
+#include "client/DriveClient.h"
+#include "scope/ScopeRecording.h"
+#include "session/ScopeChannelsJob.h"
+#include "session/ScopeOfflineJob.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFutureWatcher>
+#include <QLabel>
+#include <QLocale>
+#include <QProgressBar>
+#include <QSpinBox>
+
+namespace DriveDesk {
+
+void ScopeDock::toggleRecording(bool on)
+{
+    if (on)
+        startRecording();
+    else
+        stopRecording();
+}
+
+void ScopeDock::startRecording()
+{
+    if (!m_client || !m_recorder || isRecording() || m_assigning)
+        return updateActions();
+    // The sources first, written and read back: the recording shows what the drive delivers.
+    m_assigning = true;
+    updateActions();
+    showStatus(tr("Assigning the channels..."));
+    const auto job = std::make_shared<ScopeChannelsJob>(m_client->settings().protocol, m_drive,
+                                                        m_panel->choices());
+    m_client->run(job).then(this, [this](const ScopeChannelsOutcome &outcome) {
+        channelsAssigned(outcome);
+    });
+}
+
+void ScopeDock::channelsAssigned(const ScopeChannelsOutcome &outcome)
+{
+    m_assigning = false;
+    if (!outcome.error.isEmpty() || !m_recorder) {
+        m_triggerAction->setChecked(false);
+        updateActions();
+        return showStatus(tr("The channels could not be assigned: %1").arg(outcome.error), true);
+    }
+    auto recording = std::make_unique<ScopeRecording>();
+    recording->channels = scopeChannels(m_drive, outcome.assignment);
+    recording->source = m_client ? m_client->settings().displayName() : QString();
+    replaceRecording(std::move(recording));
+    if (m_triggerAction->isChecked()) {
+        m_trigger.setSettings(triggerSettings());
+        m_trigger.arm(0);
+    } else {
+        m_chart->setFollow(true);
+    }
+    ScopeRecorderOptions options;
+    options.polling.maxRateHz = m_rateLimit->value();
+    options.filePath = m_recordFile;
+    m_recorder->start(m_recording.get(), options);
+    showStatus(tr("Recording..."));
+    updateActions();
+    emit recordingChanged(true);
+}
+
+void ScopeDock::stopRecording()
+{
+    if (m_recorder)
+        m_recorder->stop();
+    updateActions();
+}
+
+void ScopeDock::replaceRecording(std::unique_ptr<ScopeRecording> recording)
+{
+    // The chart lets go of the old recording before it goes.
+    m_chart->setRecording(recording.get());
+    m_recording = std::move(recording);
+    m_panel->setChannels(m_recording->channels);
+    triggerChannelChanged();
+}
+
+void ScopeDock::samplesAppended()
+{
+    m_chart->samplesAppended();
+    if (!m_triggerAction->isChecked() || m_trigger.state() == ScopeTrigger::State::Idle)
+        return;
+    const ScopeTrigger::State before = m_trigger.state();
+    const ScopeTrigger::State now = m_trigger.update(*m_recording);
+    if (now == ScopeTrigger::State::Triggered && before != now)
+        showStatus(tr("Triggered; recording the rest of the shot..."));
+    if (now == ScopeTrigger::State::Complete) {
+        m_triggerAction->setChecked(false);
+        m_chart->showTimeRange(m_trigger.shotStart(), m_trigger.shotEnd());
+        stopRecording();
+    }
+}
+
+void ScopeDock::recorderStatus(const ScopeRecorderStatus &status)
+{
+    const QLocale locale;
+    QString text = tr("%1 samples, %2 Hz (average %3 Hz), %4 lost, %5 failed")
+                       .arg(locale.toString(status.samples))
+                       .arg(locale.toString(status.rateHz, 'f', 0))
+                       .arg(locale.toString(status.averageHz, 'f', 1))
+                       .arg(status.counts.lost)
+                       .arg(status.counts.failed);
+    if (m_triggerAction->isChecked() && m_trigger.state() == ScopeTrigger::State::Armed)
+        text = tr("Waiting for the trigger; %1").arg(text);
+    if (!status.fileError.isEmpty())
+        return showStatus(tr("%1. Not recording to the file any more: %2").arg(text, status.fileError),
+                          true);
+    if (!m_recordFile.isEmpty())
+        text = tr("%1; into %2").arg(text, m_recordFile);
+    showStatus(text);
+}
+
+void ScopeDock::recordingFinished(const ScopePollEnd &end)
+{
+    const ScopeRecorderStatus status = m_recorder->status();
+    recorderStatus(status);
+    if (m_triggerAction->isChecked()) {
+        m_triggerAction->setChecked(false);
+        m_trigger.disarm();
+    }
+    if (!end.reason.isEmpty()) {
+        showStatus(tr("Recording stopped: %1. The %n sample(s) recorded are kept.", nullptr,
+                      int(status.samples))
+                       .arg(end.reason),
+                   true);
+    } else if (status.fileError.isEmpty()) {
+        showStatus(tr("Recorded %n sample(s) at %1 Hz on average; %2 lost, %3 failed.", nullptr,
+                      int(status.samples))
+                       .arg(QLocale().toString(status.averageHz, 'f', 1))
+                       .arg(end.counts.lost)
+                       .arg(end.counts.failed));
+    }
+    updateActions();
+    emit recordingChanged(false);
+}
+
+void ScopeDock::armTrigger(bool on)
+{
+    if (!on) {
+        m_trigger.disarm();
+        return stopRecording();
+    }
+    m_trigger.setSettings(triggerSettings());
+    if (isRecording()) {
+        // Armed from now on; the pre-trigger time is recorded first.
+        m_trigger.arm(m_recording->buffer.count());
+        showStatus(tr("Waiting for the trigger..."));
+        return;
+    }
+    startRecording();
+}
+
+ScopeTriggerSettings ScopeDock::triggerSettings() const
+{
+    ScopeTriggerSettings settings;
+    settings.channel = m_triggerChannel->currentIndex();
+    settings.edge = ScopeTriggerSettings::Edge(m_triggerEdge->currentData().toInt());
+    settings.level = m_triggerLevel->value();
+    settings.preTriggerShare = m_triggerPre->value() / 100.0;
+    settings.windowMs = qint64(m_triggerWindow->value() * 1000.0 + 0.5);
+    return settings;
+}
+
+void ScopeDock::triggerChannelChanged()
+{
+    // The level is in the channel's display units, with its decimals.
+    const ScopeChannel &channel = m_recording->channels.at(m_triggerChannel->currentIndex());
+    m_triggerLevel->setDecimals(std::clamp(channel.scaling.decimals(), 0, 4));
+    const QString unit = channel.unit();
+    m_triggerLevel->setSuffix(unit.isEmpty() ? QString() : QLatin1Char(' ') + unit);
+    for (int index = 0; index < m_triggerChannel->count(); ++index) {
+        const ScopeChannel &shown = m_recording->channels.at(index);
+        m_triggerChannel->setItemText(index, shown.title(index));
+    }
+}
+
+void ScopeDock::readOfflineRecords()
+{
+    if (!m_client || isRecording() || m_readingOffline)
+        return;
+    m_readingOffline = true;
+    updateActions();
+    showStatus(tr("Reading the offline records..."));
+    m_progress->setRange(0, 0);
+    m_progress->show();
+    // The channels as assigned now tell what the records hold.
+    const auto channels = std::make_shared<ScopeChannelsJob>(m_client->settings().protocol,
+                                                             m_drive, ScopeAssignment{});
+    m_client->run(channels).then(this, [this](const ScopeChannelsOutcome &assigned) {
+        if (!m_client)
+            return offlineRecordsRead({{}, 0, 0, tr("The connection went away.")});
+        auto *watcher = new QFutureWatcher<ScopeOfflineRecords>(this);
+        connect(watcher, &QFutureWatcherBase::progressRangeChanged, m_progress,
+                &QProgressBar::setRange);
+        connect(watcher, &QFutureWatcherBase::progressValueChanged, m_progress,
+                &QProgressBar::setValue);
+        connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, assigned] {
+            watcher->deleteLater();
+            ScopeOfflineRecords records;
+            if (watcher->future().resultCount() > 0)
+                records = watcher->future().result();
+            auto recording = std::make_unique<ScopeRecording>();
+            recording->channels = scopeChannels(m_drive, assigned.assignment);
+            recording->source = tr("offline records of %1, one a millisecond assumed")
+                                    .arg(m_client ? m_client->settings().displayName() : QString());
+            recording->started = QDateTime::currentDateTimeUtc();
+            for (const ScopeSample &sample : std::as_const(records.samples))
+                recording->buffer.append(sample);
+            if (!records.samples.isEmpty()) {
+                replaceRecording(std::move(recording));
+                m_chart->showAll();
+            }
+            offlineRecordsRead(records);
+        });
+        watcher->setFuture(m_client->run(std::make_shared<ScopeOfflineJob>()));
+    });
+}
+
+void ScopeDock::offlineRecordsRead(const ScopeOfflineRecords &records)
+{
+    m_readingOffline = false;
+    m_progress->hide();
+    updateActions();
+    QString text = tr("%n offline record(s) read", nullptr, int(records.samples.size()));
+    if (records.clipped > 0)
+        text += QLatin1String("; ")
+                + tr("%n with channel 3 or 4 beyond 16 bits, shown at the nearest 16-bit value",
+                     nullptr, int(records.clipped));
+    if (!records.error.isEmpty())
+        text += QLatin1String(": ") + records.error;
+    showStatus(text, !records.error.isEmpty() || records.clipped > 0);
+}
+
+} // namespace DriveDesk
