@@ -680,6 +680,41 @@
         <source>dry run: %1; nothing was written</source>
         <translation>Probelauf: %1; es wurde nichts geschrieben</translation>
     </message>
+    <message>
+        <source>the drive could not be read: %1</source>
+        <translation>der Umrichter konnte nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>the channels could not be assigned: %1</source>
+        <translation>die Kanäle konnten nicht zugewiesen werden: %1</translation>
+    </message>
+    <message>
+        <source>every scope channel of the drive is off: choose what to record with --channels, e.g. --channels ru.3,ru.9</source>
+        <translation>alle Scope-Kanäle des Umrichters sind aus: wählen Sie mit --channels, was aufgezeichnet wird, z. B. --channels ru.3,ru.9</translation>
+    </message>
+    <message>
+        <source>recording: %1 s, %2 Hz, %3 lost, %4 failed</source>
+        <translation>Aufzeichnung: %1 s, %2 Hz, %3 verloren, %4 fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>recording %1 for %2 s; Ctrl+C stops and writes what was recorded</source>
+        <translation>zeichne %1 für %2 s auf; Strg+C beendet und schreibt das Aufgezeichnete</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n sample(s) over %2 s, achieved %3 Hz</source>
+        <translation>
+            <numerusform>%1: %n Abtastwert über %2 s, erreicht %3 Hz</numerusform>
+            <numerusform>%1: %n Abtastwerte über %2 s, erreicht %3 Hz</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 lost, %2 failed</source>
+        <translation>%1 verloren, %2 fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>the recording ended early: %1</source>
+        <translation>die Aufzeichnung endete vorzeitig: %1</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ClientWorker</name>
@@ -2916,6 +2951,472 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::ScopeChannelPanel</name>
+    <message>
+        <source>Channel</source>
+        <translation>Kanal</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Quelle</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>Colour of channel %1</source>
+        <translation>Farbe von Kanal %1</translation>
+    </message>
+    <message>
+        <source>Show channel %1</source>
+        <translation>Kanal %1 anzeigen</translation>
+    </message>
+    <message>
+        <source>Own axis</source>
+        <translation>Eigene Achse</translation>
+    </message>
+    <message>
+        <source>Give channel %1 a value axis of its own on the right</source>
+        <translation>Kanal %1 eine eigene Werteachse rechts geben</translation>
+    </message>
+    <message>
+        <source>As the drive has it</source>
+        <translation>Wie im Umrichter eingestellt</translation>
+    </message>
+    <message>
+        <source>The parameter the drive delivers on channel %1</source>
+        <translation>Der Parameter, den der Umrichter auf Kanal %1 liefert</translation>
+    </message>
+    <message>
+        <source>This drive&apos;s channels cannot be assigned from here: they are recorded as the drive has them.</source>
+        <translation>Die Kanäle dieses Umrichters lassen sich von hier nicht zuweisen: sie werden aufgezeichnet, wie der Umrichter sie eingestellt hat.</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <source>Channel %1 carries 16 bits: this parameter&apos;s values beyond -32768..32767 arrive cut to their low 16 bits.</source>
+        <translation>Kanal %1 überträgt 16 Bit: Werte dieses Parameters außerhalb von -32768..32767 kommen auf ihre unteren 16 Bit gekürzt an.</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ScopeChannelsJob</name>
+    <message>
+        <source>This drive has no channel-assignment parameters (Sy.16 to Sy.23): its channels are recorded as it has them assigned.</source>
+        <translation>Dieser Umrichter hat keine Parameter zur Kanalzuweisung (Sy.16 bis Sy.23): seine Kanäle werden aufgezeichnet, wie er sie zugewiesen hat.</translation>
+    </message>
+    <message>
+        <source>Channel %1: %2 may not be recorded (the drive does not permit it as process data).</source>
+        <translation>Kanal %1: %2 kann nicht aufgezeichnet werden (der Umrichter erlaubt ihn nicht als Prozessdatum).</translation>
+    </message>
+    <message>
+        <source>Channel %1: choose at least one set.</source>
+        <translation>Kanal %1: wählen Sie mindestens einen Satz.</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ScopeChart</name>
+    <message>
+        <source>Time [s]</source>
+        <translation>Zeit [s]</translation>
+    </message>
+    <message>
+        <source>Could not write the image %1.</source>
+        <translation>Das Bild %1 konnte nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>Could not write the PDF file %1.</source>
+        <translation>Die PDF-Datei %1 konnte nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>No file name was given.</source>
+        <translation>Es wurde kein Dateiname angegeben.</translation>
+    </message>
+    <message>
+        <source>Cannot save %1: the folder %2 does not exist.</source>
+        <translation>%1 kann nicht gespeichert werden: der Ordner %2 existiert nicht.</translation>
+    </message>
+    <message>
+        <source>Cannot save %1: the folder %2 is not writable.</source>
+        <translation>%1 kann nicht gespeichert werden: in den Ordner %2 kann nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>Cannot save %1: it is a folder.</source>
+        <translation>%1 kann nicht gespeichert werden: es ist ein Ordner.</translation>
+    </message>
+    <message>
+        <source>Cannot save %1: the file is read-only.</source>
+        <translation>%1 kann nicht gespeichert werden: die Datei ist schreibgeschützt.</translation>
+    </message>
+    <message>
+        <source>Wheel: zoom the time; Ctrl+wheel: zoom the values
+Drag: move the time; Ctrl+drag: move the values
+Shift+click: place cursor 1; Shift+right click: place cursor 2; drag a cursor to move it
++ and -: zoom the time (with Ctrl: the values); Left and Right: move the time; Up and Down: move the values
+Home: the whole recording; End: follow the newest samples; A: fit the values; Space: freeze or go on; Esc: remove the cursors</source>
+        <translation>Mausrad: Zeit zoomen; Strg+Mausrad: Werte zoomen
+Ziehen: Zeit verschieben; Strg+Ziehen: Werte verschieben
+Umschalt+Klick: Cursor 1 setzen; Umschalt+Rechtsklick: Cursor 2 setzen; einen Cursor ziehen, um ihn zu verschieben
++ und -: Zeit zoomen (mit Strg: die Werte); Links und Rechts: Zeit verschieben; Auf und Ab: Werte verschieben
+Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte einpassen; Leertaste: anhalten oder weiter; Esc: Cursor entfernen</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ScopeCursorTable</name>
+    <message>
+        <source>Cursors</source>
+        <translation>Cursor</translation>
+    </message>
+    <message>
+        <source>Cursor 1</source>
+        <translation>Cursor 1</translation>
+    </message>
+    <message>
+        <source>Cursor 2</source>
+        <translation>Cursor 2</translation>
+    </message>
+    <message>
+        <source>2 − 1</source>
+        <comment>cursor 2 minus cursor 1</comment>
+        <translation>2 − 1</translation>
+    </message>
+    <message>
+        <source>Time [s]</source>
+        <translation>Zeit [s]</translation>
+    </message>
+    <message>
+        <source>%1 [%2]</source>
+        <comment>channel title and unit</comment>
+        <translation>%1 [%2]</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ScopeDock</name>
+    <message>
+        <source>Scope</source>
+        <translation>Scope</translation>
+    </message>
+    <message>
+        <source>Record</source>
+        <translation>Aufzeichnen</translation>
+    </message>
+    <message>
+        <source>Record the drive&apos;s scope data; again to stop (F9)</source>
+        <translation>Die Scope-Daten des Umrichters aufzeichnen; noch einmal zum Beenden (F9)</translation>
+    </message>
+    <message>
+        <source>Pause View</source>
+        <translation>Ansicht anhalten</translation>
+    </message>
+    <message>
+        <source>Hold the chart still; the recording goes on (Space in the chart)</source>
+        <translation>Das Diagramm anhalten; die Aufzeichnung läuft weiter (Leertaste im Diagramm)</translation>
+    </message>
+    <message>
+        <source>Roll</source>
+        <translation>Rollen</translation>
+    </message>
+    <message>
+        <source>Follow the newest samples (End in the chart)</source>
+        <translation>Den neuesten Abtastwerten folgen (Ende im Diagramm)</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>How many seconds the rolling view shows</source>
+        <translation>Wie viele Sekunden die rollende Ansicht zeigt</translation>
+    </message>
+    <message>
+        <source>Whole</source>
+        <translation>Ganz</translation>
+    </message>
+    <message>
+        <source>Show the whole recording (Home in the chart)</source>
+        <translation>Die ganze Aufzeichnung zeigen (Pos1 im Diagramm)</translation>
+    </message>
+    <message>
+        <source>Auto-scale</source>
+        <translation>Autoskalierung</translation>
+    </message>
+    <message>
+        <source>Fit the value axes to what is shown (A in the chart)</source>
+        <translation>Die Werteachsen an das Gezeigte anpassen (A im Diagramm)</translation>
+    </message>
+    <message>
+        <source>Max. rate</source>
+        <translation>Max. Rate</translation>
+    </message>
+    <message>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <source>as fast as the link</source>
+        <translation>so schnell wie die Verbindung</translation>
+    </message>
+    <message>
+        <source>Polls a second at most; 0: as fast as the link allows</source>
+        <translation>Höchstens so viele Abfragen je Sekunde; 0: so schnell, wie die Verbindung erlaubt</translation>
+    </message>
+    <message>
+        <source>Recording</source>
+        <translation>Aufzeichnung</translation>
+    </message>
+    <message>
+        <source>Open Recording...</source>
+        <translation>Aufzeichnung öffnen...</translation>
+    </message>
+    <message>
+        <source>Record to File...</source>
+        <translation>In Datei aufzeichnen...</translation>
+    </message>
+    <message>
+        <source>Read Offline Records</source>
+        <translation>Offline-Aufzeichnung lesen</translation>
+    </message>
+    <message>
+        <source>Export All as CSV...</source>
+        <translation>Alles als CSV exportieren...</translation>
+    </message>
+    <message>
+        <source>Export Visible Range as CSV...</source>
+        <translation>Sichtbaren Bereich als CSV exportieren...</translation>
+    </message>
+    <message>
+        <source>Export Chart as PNG...</source>
+        <translation>Diagramm als PNG exportieren...</translation>
+    </message>
+    <message>
+        <source>Export Chart as PDF...</source>
+        <translation>Diagramm als PDF exportieren...</translation>
+    </message>
+    <message>
+        <source>Trigger</source>
+        <translation>Trigger</translation>
+    </message>
+    <message>
+        <source>Single Shot</source>
+        <translation>Einzelschuss</translation>
+    </message>
+    <message>
+        <source>Wait for the trigger, record one shot around it and stop</source>
+        <translation>Auf den Trigger warten, einen Schuss um ihn herum aufzeichnen und anhalten</translation>
+    </message>
+    <message>
+        <source>Channel</source>
+        <translation>Kanal</translation>
+    </message>
+    <message>
+        <source>rising</source>
+        <translation>steigend</translation>
+    </message>
+    <message>
+        <source>falling</source>
+        <translation>fallend</translation>
+    </message>
+    <message>
+        <source>Level</source>
+        <translation>Schwelle</translation>
+    </message>
+    <message>
+        <source>Pre-trigger</source>
+        <translation>Vortrigger</translation>
+    </message>
+    <message>
+        <source>The share of the shot before the trigger</source>
+        <translation>Der Anteil des Schusses vor dem Trigger</translation>
+    </message>
+    <message>
+        <source>Shot</source>
+        <translation>Schuss</translation>
+    </message>
+    <message>
+        <source>How long the shot is</source>
+        <translation>Wie lang der Schuss ist</translation>
+    </message>
+    <message>
+        <source>Choose the sources and press Record (F9), or open a recording.</source>
+        <translation>Wählen Sie die Quellen und drücken Sie Aufzeichnen (F9), oder öffnen Sie eine Aufzeichnung.</translation>
+    </message>
+    <message>
+        <source>Connect to a drive to record, or open a recording.</source>
+        <translation>Verbinden Sie sich mit einem Umrichter, um aufzuzeichnen, oder öffnen Sie eine Aufzeichnung.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n sample(s)</source>
+        <translation>
+            <numerusform>%1: %n Abtastwert</numerusform>
+            <numerusform>%1: %n Abtastwerte</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>DriveDesk scope recordings (*.%1)</source>
+        <translation>DriveDesk-Scope-Aufzeichnungen (*.%1)</translation>
+    </message>
+    <message>
+        <source>Stop the recording before opening another.</source>
+        <translation>Beenden Sie die Aufzeichnung, bevor Sie eine andere öffnen.</translation>
+    </message>
+    <message>
+        <source>Open Scope Recording</source>
+        <translation>Scope-Aufzeichnung öffnen</translation>
+    </message>
+    <message>
+        <source>Record to File</source>
+        <translation>In Datei aufzeichnen</translation>
+    </message>
+    <message>
+        <source>Recordings stay in memory.</source>
+        <translation>Aufzeichnungen bleiben im Speicher.</translation>
+    </message>
+    <message>
+        <source>The next recording also goes into %1.</source>
+        <translation>Die nächste Aufzeichnung geht auch in %1.</translation>
+    </message>
+    <message>
+        <source>There is nothing recorded to export.</source>
+        <translation>Es ist nichts aufgezeichnet, das exportiert werden könnte.</translation>
+    </message>
+    <message>
+        <source>Export Visible Range as CSV</source>
+        <translation>Sichtbaren Bereich als CSV exportieren</translation>
+    </message>
+    <message>
+        <source>Export All as CSV</source>
+        <translation>Alles als CSV exportieren</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <source>Exported to %1.</source>
+        <translation>Nach %1 exportiert.</translation>
+    </message>
+    <message>
+        <source>Export Chart as PDF</source>
+        <translation>Diagramm als PDF exportieren</translation>
+    </message>
+    <message>
+        <source>Export Chart as PNG</source>
+        <translation>Diagramm als PNG exportieren</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>PDF-Dateien (*.pdf)</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG-Bilder (*.png)</translation>
+    </message>
+    <message>
+        <source>Assigning the channels...</source>
+        <translation>Kanäle werden zugewiesen...</translation>
+    </message>
+    <message>
+        <source>The channels could not be assigned: %1</source>
+        <translation>Die Kanäle konnten nicht zugewiesen werden: %1</translation>
+    </message>
+    <message>
+        <source>Recording...</source>
+        <translation>Aufzeichnung läuft...</translation>
+    </message>
+    <message>
+        <source>Triggered; recording the rest of the shot...</source>
+        <translation>Getriggert; der Rest des Schusses wird aufgezeichnet...</translation>
+    </message>
+    <message>
+        <source>%1 samples, %2 Hz (average %3 Hz), %4 lost, %5 failed</source>
+        <translation>%1 Abtastwerte, %2 Hz (im Mittel %3 Hz), %4 verloren, %5 fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Waiting for the trigger; %1</source>
+        <translation>Warte auf den Trigger; %1</translation>
+    </message>
+    <message>
+        <source>%1. Not recording to the file any more: %2</source>
+        <translation>%1. Keine Aufzeichnung mehr in die Datei: %2</translation>
+    </message>
+    <message>
+        <source>%1; into %2</source>
+        <translation>%1; in %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Recording stopped: %1. The %n sample(s) recorded are kept.</source>
+        <translation>
+            <numerusform>Aufzeichnung beendet: %1. Der %n aufgezeichnete Abtastwert bleibt erhalten.</numerusform>
+            <numerusform>Aufzeichnung beendet: %1. Die %n aufgezeichneten Abtastwerte bleiben erhalten.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Recorded %n sample(s) at %1 Hz on average; %2 lost, %3 failed.</source>
+        <translation>
+            <numerusform>%n Abtastwert mit im Mittel %1 Hz aufgezeichnet; %2 verloren, %3 fehlgeschlagen.</numerusform>
+            <numerusform>%n Abtastwerte mit im Mittel %1 Hz aufgezeichnet; %2 verloren, %3 fehlgeschlagen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Waiting for the trigger...</source>
+        <translation>Warte auf den Trigger...</translation>
+    </message>
+    <message>
+        <source>Reading the offline records...</source>
+        <translation>Offline-Aufzeichnung wird gelesen...</translation>
+    </message>
+    <message>
+        <source>The connection went away.</source>
+        <translation>Die Verbindung ist weg.</translation>
+    </message>
+    <message>
+        <source>offline records of %1, one a millisecond assumed</source>
+        <translation>Offline-Aufzeichnung von %1, eine je Millisekunde angenommen</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n offline record(s) read</source>
+        <translation>
+            <numerusform>%n Offline-Datensatz gelesen</numerusform>
+            <numerusform>%n Offline-Datensätze gelesen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n with channel 3 or 4 beyond 16 bits, shown at the nearest 16-bit value</source>
+        <translation>
+            <numerusform>%n mit Kanal 3 oder 4 jenseits von 16 Bit, mit dem nächsten 16-Bit-Wert gezeigt</numerusform>
+            <numerusform>%n mit Kanal 3 oder 4 jenseits von 16 Bit, mit dem nächsten 16-Bit-Wert gezeigt</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ScopeFeature</name>
+    <message>
+        <source>&amp;Scope</source>
+        <translation>&amp;Scope</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ScopeOfflineJob</name>
+    <message>
+        <source>This connection cannot read offline records (service 21 needs DIN66019II).</source>
+        <translation>Diese Verbindung kann keine Offline-Aufzeichnung lesen (Dienst 21 braucht DIN66019II).</translation>
+    </message>
+    <message>
+        <source>The drive holds no offline records.</source>
+        <translation>Der Umrichter hat keine Offline-Aufzeichnung.</translation>
+    </message>
+    <message>
+        <source>Record %1: %2</source>
+        <translation>Datensatz %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::SerialLink</name>
     <message>
         <source>no such serial device</source>
@@ -4016,6 +4517,131 @@ Verbindungsdialog.
     <message>
         <source>cannot save &apos;%1&apos;: %2</source>
         <translation>„%1“ kann nicht gespeichert werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>ScopeChannel</name>
+    <message>
+        <source>Channel %1</source>
+        <translation>Kanal %1</translation>
+    </message>
+</context>
+<context>
+    <name>ScopeCsv</name>
+    <message>
+        <source>there is no channel %1</source>
+        <translation>es gibt keinen Kanal %1</translation>
+    </message>
+    <message>
+        <source>the export was cancelled</source>
+        <translation>der Export wurde abgebrochen</translation>
+    </message>
+    <message>
+        <source>cannot write the CSV: %1</source>
+        <translation>die CSV kann nicht geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <source>cannot write &apos;%1&apos;: %2</source>
+        <translation>„%1“ kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>cannot save &apos;%1&apos;: %2</source>
+        <translation>„%1“ kann nicht gespeichert werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>ScopeFile</name>
+    <message>
+        <source>cannot read &apos;%1&apos;: %2</source>
+        <translation>„%1“ kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is damaged: %2</source>
+        <translation>„%1“ ist beschädigt: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a DriveDesk scope file</source>
+        <translation>„%1“ ist keine DriveDesk-Scope-Datei</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is in scope file format %2 of a newer DriveDesk; this version reads format %3</source>
+        <translation>„%1“ hat das Scope-Dateiformat %2 eines neueren DriveDesk; diese Version liest Format %3</translation>
+    </message>
+    <message>
+        <source>its header cannot be %1 bytes long</source>
+        <translation>ihr Kopf kann nicht %1 Byte lang sein</translation>
+    </message>
+    <message>
+        <source>its header is cut short</source>
+        <translation>ihr Kopf ist abgeschnitten</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has a damaged header: %2</source>
+        <translation>„%1“ hat einen beschädigten Kopf: %2</translation>
+    </message>
+    <message>
+        <source>sample %1 is earlier than the one before it</source>
+        <translation>Abtastwert %1 liegt vor dem davor</translation>
+    </message>
+    <message numerus="yes">
+        <source>&apos;%1&apos; ends in an incomplete sample (%n byte(s)), which was left out: the recording was cut off</source>
+        <translation>
+            <numerusform>„%1“ endet mit einem unvollständigen Abtastwert (%n Byte), der weggelassen wurde: die Aufzeichnung wurde abgeschnitten</numerusform>
+            <numerusform>„%1“ endet mit einem unvollständigen Abtastwert (%n Byte), der weggelassen wurde: die Aufzeichnung wurde abgeschnitten</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>ScopeFileFormat</name>
+    <message>
+        <source>not JSON (%1 at byte %2)</source>
+        <translation>kein JSON (%1 bei Byte %2)</translation>
+    </message>
+    <message>
+        <source>not a JSON object</source>
+        <translation>kein JSON-Objekt</translation>
+    </message>
+    <message>
+        <source>expected a date and time (ISO 8601) or null</source>
+        <translation>erwartet wurde ein Datum mit Uhrzeit (ISO 8601) oder null</translation>
+    </message>
+    <message>
+        <source>expected %1 channels, found %2</source>
+        <translation>erwartet wurden %1 Kanäle, gefunden %2</translation>
+    </message>
+</context>
+<context>
+    <name>ScopeFileWriter</name>
+    <message>
+        <source>cannot write &apos;%1&apos;: %2</source>
+        <translation>„%1“ kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>no recording file is open</source>
+        <translation>keine Aufzeichnungsdatei ist geöffnet</translation>
+    </message>
+    <message>
+        <source>cannot write &apos;%1&apos;: a sample is earlier than the one before it</source>
+        <translation>„%1“ kann nicht geschrieben werden: ein Abtastwert liegt vor dem davor</translation>
+    </message>
+</context>
+<context>
+    <name>ScopePollJob</name>
+    <message>
+        <source>This connection cannot carry scope data (service 18).</source>
+        <translation>Diese Verbindung kann keine Scope-Daten übertragen (Dienst 18).</translation>
+    </message>
+    <message>
+        <source>The drive stopped answering: %1</source>
+        <translation>Der Umrichter antwortet nicht mehr: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ScopeTraces</name>
+    <message>
+        <source>%1 [%2]</source>
+        <comment>channel title and unit</comment>
+        <translation>%1 [%2]</translation>
     </message>
 </context>
 <context>

@@ -680,6 +680,41 @@
         <source>dry run: %1; nothing was written</source>
         <translation>dry run: %1; nothing was written</translation>
     </message>
+    <message>
+        <source>the drive could not be read: %1</source>
+        <translation>the drive could not be read: %1</translation>
+    </message>
+    <message>
+        <source>the channels could not be assigned: %1</source>
+        <translation>the channels could not be assigned: %1</translation>
+    </message>
+    <message>
+        <source>every scope channel of the drive is off: choose what to record with --channels, e.g. --channels ru.3,ru.9</source>
+        <translation>every scope channel of the drive is off: choose what to record with --channels, e.g. --channels ru.3,ru.9</translation>
+    </message>
+    <message>
+        <source>recording: %1 s, %2 Hz, %3 lost, %4 failed</source>
+        <translation>recording: %1 s, %2 Hz, %3 lost, %4 failed</translation>
+    </message>
+    <message>
+        <source>recording %1 for %2 s; Ctrl+C stops and writes what was recorded</source>
+        <translation>recording %1 for %2 s; Ctrl+C stops and writes what was recorded</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n sample(s) over %2 s, achieved %3 Hz</source>
+        <translation>
+            <numerusform>%1: %n sample over %2 s, achieved %3 Hz</numerusform>
+            <numerusform>%1: %n samples over %2 s, achieved %3 Hz</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 lost, %2 failed</source>
+        <translation>%1 lost, %2 failed</translation>
+    </message>
+    <message>
+        <source>the recording ended early: %1</source>
+        <translation>the recording ended early: %1</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ClientWorker</name>
@@ -2916,6 +2951,472 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::ScopeChannelPanel</name>
+    <message>
+        <source>Channel</source>
+        <translation>Channel</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Source</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unit</translation>
+    </message>
+    <message>
+        <source>Colour of channel %1</source>
+        <translation>Colour of channel %1</translation>
+    </message>
+    <message>
+        <source>Show channel %1</source>
+        <translation>Show channel %1</translation>
+    </message>
+    <message>
+        <source>Own axis</source>
+        <translation>Own axis</translation>
+    </message>
+    <message>
+        <source>Give channel %1 a value axis of its own on the right</source>
+        <translation>Give channel %1 a value axis of its own on the right</translation>
+    </message>
+    <message>
+        <source>As the drive has it</source>
+        <translation>As the drive has it</translation>
+    </message>
+    <message>
+        <source>The parameter the drive delivers on channel %1</source>
+        <translation>The parameter the drive delivers on channel %1</translation>
+    </message>
+    <message>
+        <source>This drive&apos;s channels cannot be assigned from here: they are recorded as the drive has them.</source>
+        <translation>This drive&apos;s channels cannot be assigned from here: they are recorded as the drive has them.</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Off</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>off</translation>
+    </message>
+    <message>
+        <source>Channel %1 carries 16 bits: this parameter&apos;s values beyond -32768..32767 arrive cut to their low 16 bits.</source>
+        <translation>Channel %1 carries 16 bits: this parameter&apos;s values beyond -32768..32767 arrive cut to their low 16 bits.</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ScopeChannelsJob</name>
+    <message>
+        <source>This drive has no channel-assignment parameters (Sy.16 to Sy.23): its channels are recorded as it has them assigned.</source>
+        <translation>This drive has no channel-assignment parameters (Sy.16 to Sy.23): its channels are recorded as it has them assigned.</translation>
+    </message>
+    <message>
+        <source>Channel %1: %2 may not be recorded (the drive does not permit it as process data).</source>
+        <translation>Channel %1: %2 may not be recorded (the drive does not permit it as process data).</translation>
+    </message>
+    <message>
+        <source>Channel %1: choose at least one set.</source>
+        <translation>Channel %1: choose at least one set.</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ScopeChart</name>
+    <message>
+        <source>Time [s]</source>
+        <translation>Time [s]</translation>
+    </message>
+    <message>
+        <source>Could not write the image %1.</source>
+        <translation>Could not write the image %1.</translation>
+    </message>
+    <message>
+        <source>Could not write the PDF file %1.</source>
+        <translation>Could not write the PDF file %1.</translation>
+    </message>
+    <message>
+        <source>No file name was given.</source>
+        <translation>No file name was given.</translation>
+    </message>
+    <message>
+        <source>Cannot save %1: the folder %2 does not exist.</source>
+        <translation>Cannot save %1: the folder %2 does not exist.</translation>
+    </message>
+    <message>
+        <source>Cannot save %1: the folder %2 is not writable.</source>
+        <translation>Cannot save %1: the folder %2 is not writable.</translation>
+    </message>
+    <message>
+        <source>Cannot save %1: it is a folder.</source>
+        <translation>Cannot save %1: it is a folder.</translation>
+    </message>
+    <message>
+        <source>Cannot save %1: the file is read-only.</source>
+        <translation>Cannot save %1: the file is read-only.</translation>
+    </message>
+    <message>
+        <source>Wheel: zoom the time; Ctrl+wheel: zoom the values
+Drag: move the time; Ctrl+drag: move the values
+Shift+click: place cursor 1; Shift+right click: place cursor 2; drag a cursor to move it
++ and -: zoom the time (with Ctrl: the values); Left and Right: move the time; Up and Down: move the values
+Home: the whole recording; End: follow the newest samples; A: fit the values; Space: freeze or go on; Esc: remove the cursors</source>
+        <translation>Wheel: zoom the time; Ctrl+wheel: zoom the values
+Drag: move the time; Ctrl+drag: move the values
+Shift+click: place cursor 1; Shift+right click: place cursor 2; drag a cursor to move it
++ and -: zoom the time (with Ctrl: the values); Left and Right: move the time; Up and Down: move the values
+Home: the whole recording; End: follow the newest samples; A: fit the values; Space: freeze or go on; Esc: remove the cursors</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ScopeCursorTable</name>
+    <message>
+        <source>Cursors</source>
+        <translation>Cursors</translation>
+    </message>
+    <message>
+        <source>Cursor 1</source>
+        <translation>Cursor 1</translation>
+    </message>
+    <message>
+        <source>Cursor 2</source>
+        <translation>Cursor 2</translation>
+    </message>
+    <message>
+        <source>2 − 1</source>
+        <comment>cursor 2 minus cursor 1</comment>
+        <translation>2 − 1</translation>
+    </message>
+    <message>
+        <source>Time [s]</source>
+        <translation>Time [s]</translation>
+    </message>
+    <message>
+        <source>%1 [%2]</source>
+        <comment>channel title and unit</comment>
+        <translation>%1 [%2]</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ScopeDock</name>
+    <message>
+        <source>Scope</source>
+        <translation>Scope</translation>
+    </message>
+    <message>
+        <source>Record</source>
+        <translation>Record</translation>
+    </message>
+    <message>
+        <source>Record the drive&apos;s scope data; again to stop (F9)</source>
+        <translation>Record the drive&apos;s scope data; again to stop (F9)</translation>
+    </message>
+    <message>
+        <source>Pause View</source>
+        <translation>Pause View</translation>
+    </message>
+    <message>
+        <source>Hold the chart still; the recording goes on (Space in the chart)</source>
+        <translation>Hold the chart still; the recording goes on (Space in the chart)</translation>
+    </message>
+    <message>
+        <source>Roll</source>
+        <translation>Roll</translation>
+    </message>
+    <message>
+        <source>Follow the newest samples (End in the chart)</source>
+        <translation>Follow the newest samples (End in the chart)</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>How many seconds the rolling view shows</source>
+        <translation>How many seconds the rolling view shows</translation>
+    </message>
+    <message>
+        <source>Whole</source>
+        <translation>Whole</translation>
+    </message>
+    <message>
+        <source>Show the whole recording (Home in the chart)</source>
+        <translation>Show the whole recording (Home in the chart)</translation>
+    </message>
+    <message>
+        <source>Auto-scale</source>
+        <translation>Auto-scale</translation>
+    </message>
+    <message>
+        <source>Fit the value axes to what is shown (A in the chart)</source>
+        <translation>Fit the value axes to what is shown (A in the chart)</translation>
+    </message>
+    <message>
+        <source>Max. rate</source>
+        <translation>Max. rate</translation>
+    </message>
+    <message>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <source>as fast as the link</source>
+        <translation>as fast as the link</translation>
+    </message>
+    <message>
+        <source>Polls a second at most; 0: as fast as the link allows</source>
+        <translation>Polls a second at most; 0: as fast as the link allows</translation>
+    </message>
+    <message>
+        <source>Recording</source>
+        <translation>Recording</translation>
+    </message>
+    <message>
+        <source>Open Recording...</source>
+        <translation>Open Recording...</translation>
+    </message>
+    <message>
+        <source>Record to File...</source>
+        <translation>Record to File...</translation>
+    </message>
+    <message>
+        <source>Read Offline Records</source>
+        <translation>Read Offline Records</translation>
+    </message>
+    <message>
+        <source>Export All as CSV...</source>
+        <translation>Export All as CSV...</translation>
+    </message>
+    <message>
+        <source>Export Visible Range as CSV...</source>
+        <translation>Export Visible Range as CSV...</translation>
+    </message>
+    <message>
+        <source>Export Chart as PNG...</source>
+        <translation>Export Chart as PNG...</translation>
+    </message>
+    <message>
+        <source>Export Chart as PDF...</source>
+        <translation>Export Chart as PDF...</translation>
+    </message>
+    <message>
+        <source>Trigger</source>
+        <translation>Trigger</translation>
+    </message>
+    <message>
+        <source>Single Shot</source>
+        <translation>Single Shot</translation>
+    </message>
+    <message>
+        <source>Wait for the trigger, record one shot around it and stop</source>
+        <translation>Wait for the trigger, record one shot around it and stop</translation>
+    </message>
+    <message>
+        <source>Channel</source>
+        <translation>Channel</translation>
+    </message>
+    <message>
+        <source>rising</source>
+        <translation>rising</translation>
+    </message>
+    <message>
+        <source>falling</source>
+        <translation>falling</translation>
+    </message>
+    <message>
+        <source>Level</source>
+        <translation>Level</translation>
+    </message>
+    <message>
+        <source>Pre-trigger</source>
+        <translation>Pre-trigger</translation>
+    </message>
+    <message>
+        <source>The share of the shot before the trigger</source>
+        <translation>The share of the shot before the trigger</translation>
+    </message>
+    <message>
+        <source>Shot</source>
+        <translation>Shot</translation>
+    </message>
+    <message>
+        <source>How long the shot is</source>
+        <translation>How long the shot is</translation>
+    </message>
+    <message>
+        <source>Choose the sources and press Record (F9), or open a recording.</source>
+        <translation>Choose the sources and press Record (F9), or open a recording.</translation>
+    </message>
+    <message>
+        <source>Connect to a drive to record, or open a recording.</source>
+        <translation>Connect to a drive to record, or open a recording.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n sample(s)</source>
+        <translation>
+            <numerusform>%1: %n sample</numerusform>
+            <numerusform>%1: %n samples</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>DriveDesk scope recordings (*.%1)</source>
+        <translation>DriveDesk scope recordings (*.%1)</translation>
+    </message>
+    <message>
+        <source>Stop the recording before opening another.</source>
+        <translation>Stop the recording before opening another.</translation>
+    </message>
+    <message>
+        <source>Open Scope Recording</source>
+        <translation>Open Scope Recording</translation>
+    </message>
+    <message>
+        <source>Record to File</source>
+        <translation>Record to File</translation>
+    </message>
+    <message>
+        <source>Recordings stay in memory.</source>
+        <translation>Recordings stay in memory.</translation>
+    </message>
+    <message>
+        <source>The next recording also goes into %1.</source>
+        <translation>The next recording also goes into %1.</translation>
+    </message>
+    <message>
+        <source>There is nothing recorded to export.</source>
+        <translation>There is nothing recorded to export.</translation>
+    </message>
+    <message>
+        <source>Export Visible Range as CSV</source>
+        <translation>Export Visible Range as CSV</translation>
+    </message>
+    <message>
+        <source>Export All as CSV</source>
+        <translation>Export All as CSV</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV files (*.csv)</translation>
+    </message>
+    <message>
+        <source>Exported to %1.</source>
+        <translation>Exported to %1.</translation>
+    </message>
+    <message>
+        <source>Export Chart as PDF</source>
+        <translation>Export Chart as PDF</translation>
+    </message>
+    <message>
+        <source>Export Chart as PNG</source>
+        <translation>Export Chart as PNG</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>PDF files (*.pdf)</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG images (*.png)</translation>
+    </message>
+    <message>
+        <source>Assigning the channels...</source>
+        <translation>Assigning the channels...</translation>
+    </message>
+    <message>
+        <source>The channels could not be assigned: %1</source>
+        <translation>The channels could not be assigned: %1</translation>
+    </message>
+    <message>
+        <source>Recording...</source>
+        <translation>Recording...</translation>
+    </message>
+    <message>
+        <source>Triggered; recording the rest of the shot...</source>
+        <translation>Triggered; recording the rest of the shot...</translation>
+    </message>
+    <message>
+        <source>%1 samples, %2 Hz (average %3 Hz), %4 lost, %5 failed</source>
+        <translation>%1 samples, %2 Hz (average %3 Hz), %4 lost, %5 failed</translation>
+    </message>
+    <message>
+        <source>Waiting for the trigger; %1</source>
+        <translation>Waiting for the trigger; %1</translation>
+    </message>
+    <message>
+        <source>%1. Not recording to the file any more: %2</source>
+        <translation>%1. Not recording to the file any more: %2</translation>
+    </message>
+    <message>
+        <source>%1; into %2</source>
+        <translation>%1; into %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Recording stopped: %1. The %n sample(s) recorded are kept.</source>
+        <translation>
+            <numerusform>Recording stopped: %1. The %n sample recorded is kept.</numerusform>
+            <numerusform>Recording stopped: %1. The %n samples recorded are kept.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Recorded %n sample(s) at %1 Hz on average; %2 lost, %3 failed.</source>
+        <translation>
+            <numerusform>Recorded %n sample at %1 Hz on average; %2 lost, %3 failed.</numerusform>
+            <numerusform>Recorded %n samples at %1 Hz on average; %2 lost, %3 failed.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Waiting for the trigger...</source>
+        <translation>Waiting for the trigger...</translation>
+    </message>
+    <message>
+        <source>Reading the offline records...</source>
+        <translation>Reading the offline records...</translation>
+    </message>
+    <message>
+        <source>The connection went away.</source>
+        <translation>The connection went away.</translation>
+    </message>
+    <message>
+        <source>offline records of %1, one a millisecond assumed</source>
+        <translation>offline records of %1, one a millisecond assumed</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n offline record(s) read</source>
+        <translation>
+            <numerusform>%n offline record read</numerusform>
+            <numerusform>%n offline records read</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n with channel 3 or 4 beyond 16 bits, shown at the nearest 16-bit value</source>
+        <translation>
+            <numerusform>%n with channel 3 or 4 beyond 16 bits, shown at the nearest 16-bit value</numerusform>
+            <numerusform>%n with channel 3 or 4 beyond 16 bits, shown at the nearest 16-bit value</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ScopeFeature</name>
+    <message>
+        <source>&amp;Scope</source>
+        <translation>&amp;Scope</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ScopeOfflineJob</name>
+    <message>
+        <source>This connection cannot read offline records (service 21 needs DIN66019II).</source>
+        <translation>This connection cannot read offline records (service 21 needs DIN66019II).</translation>
+    </message>
+    <message>
+        <source>The drive holds no offline records.</source>
+        <translation>The drive holds no offline records.</translation>
+    </message>
+    <message>
+        <source>Record %1: %2</source>
+        <translation>Record %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::SerialLink</name>
     <message>
         <source>no such serial device</source>
@@ -4016,6 +4517,131 @@ dialog.
     <message>
         <source>cannot save &apos;%1&apos;: %2</source>
         <translation>cannot save &apos;%1&apos;: %2</translation>
+    </message>
+</context>
+<context>
+    <name>ScopeChannel</name>
+    <message>
+        <source>Channel %1</source>
+        <translation>Channel %1</translation>
+    </message>
+</context>
+<context>
+    <name>ScopeCsv</name>
+    <message>
+        <source>there is no channel %1</source>
+        <translation>there is no channel %1</translation>
+    </message>
+    <message>
+        <source>the export was cancelled</source>
+        <translation>the export was cancelled</translation>
+    </message>
+    <message>
+        <source>cannot write the CSV: %1</source>
+        <translation>cannot write the CSV: %1</translation>
+    </message>
+    <message>
+        <source>cannot write &apos;%1&apos;: %2</source>
+        <translation>cannot write &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <source>cannot save &apos;%1&apos;: %2</source>
+        <translation>cannot save &apos;%1&apos;: %2</translation>
+    </message>
+</context>
+<context>
+    <name>ScopeFile</name>
+    <message>
+        <source>cannot read &apos;%1&apos;: %2</source>
+        <translation>cannot read &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is damaged: %2</source>
+        <translation>&apos;%1&apos; is damaged: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a DriveDesk scope file</source>
+        <translation>&apos;%1&apos; is not a DriveDesk scope file</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is in scope file format %2 of a newer DriveDesk; this version reads format %3</source>
+        <translation>&apos;%1&apos; is in scope file format %2 of a newer DriveDesk; this version reads format %3</translation>
+    </message>
+    <message>
+        <source>its header cannot be %1 bytes long</source>
+        <translation>its header cannot be %1 bytes long</translation>
+    </message>
+    <message>
+        <source>its header is cut short</source>
+        <translation>its header is cut short</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has a damaged header: %2</source>
+        <translation>&apos;%1&apos; has a damaged header: %2</translation>
+    </message>
+    <message>
+        <source>sample %1 is earlier than the one before it</source>
+        <translation>sample %1 is earlier than the one before it</translation>
+    </message>
+    <message numerus="yes">
+        <source>&apos;%1&apos; ends in an incomplete sample (%n byte(s)), which was left out: the recording was cut off</source>
+        <translation>
+            <numerusform>&apos;%1&apos; ends in an incomplete sample (%n byte), which was left out: the recording was cut off</numerusform>
+            <numerusform>&apos;%1&apos; ends in an incomplete sample (%n bytes), which was left out: the recording was cut off</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>ScopeFileFormat</name>
+    <message>
+        <source>not JSON (%1 at byte %2)</source>
+        <translation>not JSON (%1 at byte %2)</translation>
+    </message>
+    <message>
+        <source>not a JSON object</source>
+        <translation>not a JSON object</translation>
+    </message>
+    <message>
+        <source>expected a date and time (ISO 8601) or null</source>
+        <translation>expected a date and time (ISO 8601) or null</translation>
+    </message>
+    <message>
+        <source>expected %1 channels, found %2</source>
+        <translation>expected %1 channels, found %2</translation>
+    </message>
+</context>
+<context>
+    <name>ScopeFileWriter</name>
+    <message>
+        <source>cannot write &apos;%1&apos;: %2</source>
+        <translation>cannot write &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <source>no recording file is open</source>
+        <translation>no recording file is open</translation>
+    </message>
+    <message>
+        <source>cannot write &apos;%1&apos;: a sample is earlier than the one before it</source>
+        <translation>cannot write &apos;%1&apos;: a sample is earlier than the one before it</translation>
+    </message>
+</context>
+<context>
+    <name>ScopePollJob</name>
+    <message>
+        <source>This connection cannot carry scope data (service 18).</source>
+        <translation>This connection cannot carry scope data (service 18).</translation>
+    </message>
+    <message>
+        <source>The drive stopped answering: %1</source>
+        <translation>The drive stopped answering: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ScopeTraces</name>
+    <message>
+        <source>%1 [%2]</source>
+        <comment>channel title and unit</comment>
+        <translation>%1 [%2]</translation>
     </message>
 </context>
 <context>
