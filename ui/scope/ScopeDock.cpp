@@ -2,6 +2,7 @@
 
 #include "ScopeChannelPanel.h"
 #include "ScopeChart.h"
+#include "ScopeCursorTable.h"
 
 #include "client/DriveClient.h"
 #include "main/FrameSupport.h"
@@ -58,6 +59,8 @@ ScopeDock::ScopeDock(WindowFrame &frame, QWidget *parent)
     auto *sideLayout = new QVBoxLayout(side);
     sideLayout->setContentsMargins(0, 0, 0, 0);
     sideLayout->addWidget(m_panel);
+    // The cursors' read-out beside the chart, not under it: the chart keeps its height.
+    sideLayout->addWidget(m_chart->cursorTable());
     sideLayout->addStretch(1);
     splitter->addWidget(side);
     splitter->addWidget(m_chart);
