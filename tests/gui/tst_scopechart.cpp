@@ -1,9 +1,11 @@
 #include "scope/QCustomPlotInclude.h"
 #include "scope/ScopeChart.h"
+#include "scope/ScopeColumnGrid.h"
 #include "scope/ScopeCursorTable.h"
 
 #include <QApplication>
 #include <QFileInfo>
+#include <QRandomGenerator>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -458,6 +460,64 @@ private slots:
         QVERIFY2(error.contains(folder.path()) && error.contains(QStringLiteral("folder")),
                  qPrintable(error));
         QVERIFY(!QFileInfo::exists(nowhere));
+    }
+
+    void theColumnGridMatchesDecimateTime()
+    {
+        // Uneven times (0..3 ms apart, several samples in one ms), spikes anywhere.
+        ScopeBuffer buffer;
+        QRandomGenerator random(7);
+        ScopeSample sample;
+        for (int i = 0; i < 200'000; ++i) {
+            sample.time += random.bounded(0, 4);
+            sample.wide = { qint32(random.generate()), sample.wide[1] + random.bounded(-9, 10) };
+            sample.narrow = { qint16(random.bounded(-30000, 30001)), qint16(i % 4000) };
+            QVERIFY(buffer.append(sample));
+        }
+        const qint64 last = buffer.samples().time(buffer.count() - 1);
+        struct Case
+        {
+            qint64 fromMs;
+            qint64 toMs;
+            int columns;
+        };
+        for (const Case &view : { Case { 0, last, 1500 }, Case { 1234, 5678, 700 },
+                                  Case { 100'000, 100'300, 1000 }, Case { -500, 2000, 300 } }) {
+            const ScopeColumnGrid grid(buffer.samples(), view.fromMs, view.toMs, view.columns,
+                                       buffer.count());
+            QVERIFY(grid.count() <= view.columns + 1);
+            QVERIFY(grid.fromMs() <= std::max<qint64>(view.fromMs, 0));
+            QVERIFY(grid.fromMs() > view.fromMs - grid.widthMs());
+            QCOMPARE(grid.fromMs() % grid.widthMs(), 0);
+            // Every sample of the view is in a column.
+            QVERIFY(grid.first() <= buffer.samples().lowerBound(view.fromMs));
+            QCOMPARE(grid.end(), buffer.samples().upperBound(view.toMs));
+            const int n = grid.count();
+            for (int channel = 0; channel < ScopeChart::kChannels; ++channel) {
+                QList<MinMaxPyramid::Column> columns;
+                for (int column = 0; column < n - 1; ++column) {
+                    if (!grid.isEmpty(column))
+                        columns.append(grid.column(buffer.pyramid(), channel, column));
+                }
+                // decimateTime() over the grid's span makes the same columns; the last one
+                // ends at the view's end instead.
+                QCOMPARE(columns,
+                         buffer.decimateTime(channel, grid.fromMs(),
+                                             grid.fromMs() + (n - 1) * grid.widthMs() - 1, n - 1));
+                const auto lastColumn = grid.column(buffer.pyramid(), channel, n - 1);
+                QCOMPARE(lastColumn, buffer.decimate(channel, lastColumn.begin, grid.end(), 1)[0]);
+                QCOMPARE(lastColumn.begin,
+                         buffer.samples().lowerBound(grid.fromMs() + (n - 1) * grid.widthMs()));
+            }
+        }
+
+        // Samples from sampleCount on stay out, even in the same ms as the last one in.
+        qsizetype sameMs = 1000;
+        while (buffer.samples().time(sameMs) != buffer.samples().time(sameMs - 1))
+            ++sameMs;
+        const ScopeColumnGrid frozen(buffer.samples(), 0, last, 100, sameMs);
+        QCOMPARE(frozen.first(), 0);
+        QCOMPARE(frozen.end(), sameMs);
     }
 
     void theHelpNamesTheKeys()

@@ -46,6 +46,9 @@ ScopeChart::ScopeChart(QWidget *parent)
     m_plot->axisRect()->setRangeZoom(Qt::Horizontal);
     // Thin lines over a few thousand points: antialiasing would only cost time.
     m_plot->setNotAntialiasedElements(QCP::aeAll);
+    // One paint buffer instead of two: the overlay layer (QCustomPlot's selection rectangle,
+    // unused here) would be cleared and composed over the plot on every replot.
+    m_plot->layer(QStringLiteral("overlay"))->setMode(QCPLayer::lmLogical);
     m_plot->xAxis->setLabel(tr("Time [s]"));
     m_plot->xAxis->setRange(0, m_rollSeconds);
     m_plot->yAxis->setRange(0, 1);

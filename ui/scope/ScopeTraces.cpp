@@ -1,5 +1,7 @@
 #include "ScopeTraces.h"
 
+#include "ScopeColumnGrid.h"
+
 #include "QCustomPlotInclude.h"
 
 #include <algorithm>
@@ -176,44 +178,24 @@ void ScopeTraces::fill(const ScopeRecording &recording, const ScopeTraceWindow &
 {
     const SampleStore &samples = recording.buffer.samples();
     const qsizetype count = std::min(window.sampleCount, samples.count());
-    if (count == 0 || window.toMs < window.fromMs) {
-        clear();
-        return;
-    }
-    // Columns of a whole number of ms on a grid fixed in time, so that a scrolling view
-    // regroups no samples: a column keeps its min and max as the window moves on.
-    const qint64 width = std::max<qint64>(
-        1, (window.toMs - window.fromMs + window.columns) / std::max(window.columns, 1));
-    const qint64 gridFrom = window.fromMs >= 0 ? window.fromMs / width * width
-                                               : -((-window.fromMs + width - 1) / width) * width;
-    // The last column ends at the last sample shown, and by index, so that samples appended
-    // while the view is frozen stay out even where they share its ms.
-    const qint64 toMs = std::min(window.toMs, samples.time(count - 1));
-    const qsizetype first = samples.lowerBound(gridFrom);
-    const qsizetype end = std::min(samples.upperBound(toMs), count);
-    const int columns = toMs < gridFrom ? 0 : int((toMs - gridFrom) / width) + 1;
-    const qint64 lastFrom = gridFrom + (columns - 1) * width;
+    const ScopeColumnGrid grid(samples, window.fromMs, window.toMs, window.columns, count);
     for (int channel = 0; channel < kChannels; ++channel) {
         Trace &trace = m_traces[channel];
         trace.extent.reset();
-        if (!isDrawn(channel) || first >= end) {
+        if (!isDrawn(channel) || grid.first() >= grid.end()) {
             trace.graph->data()->clear();
             continue;
         }
         TraceBuilder builder(recording, channel, window.originMs);
-        builder.reserve(2 * qsizetype(columns) + 2);
-        if (first > 0)
-            builder.addSample(first - 1, false);
-        if (columns > 1) {
-            for (const auto &column :
-                 recording.buffer.decimateTime(channel, gridFrom, lastFrom - 1, columns - 1))
-                builder.addColumn(column);
+        builder.reserve(2 * qsizetype(grid.count()) + 2);
+        if (grid.first() > 0)
+            builder.addSample(grid.first() - 1, false);
+        for (int column = 0; column < grid.count(); ++column) {
+            if (!grid.isEmpty(column))
+                builder.addColumn(grid.column(recording.buffer.pyramid(), channel, column));
         }
-        const qsizetype lastBegin = std::max(first, samples.lowerBound(lastFrom));
-        for (const auto &column : recording.buffer.decimate(channel, lastBegin, end, 1))
-            builder.addColumn(column);
-        if (end < count)
-            builder.addSample(end, false);
+        if (grid.end() < count)
+            builder.addSample(grid.end(), false);
         trace.extent = builder.extent();
         // The container takes the vector as it is (implicitly shared, no copy, no sort).
         trace.graph->data()->set(builder.takePoints(), true);

@@ -71,7 +71,8 @@ public:
     bool isDrawn(int channel) const;
     QList<int> drawnChannels() const;
 
-    // Decimates each drawn channel over the window (ScopeBuffer::decimateTime) and hands its
+    // Decimates each drawn channel over the window in columns of equal time
+    // (ScopeColumnGrid: decimateTime()'s columns, searched once for all channels) and hands its
     // graph two points a column (min and max, in the order that keeps the line short) plus the
     // samples just outside the window, so the line reaches the edges. Columns of one or two
     // samples give the samples themselves. Hidden channels get no points.

@@ -3,6 +3,7 @@
 # panel, and the dock and feature that record from the drive (docs/scope.md).
 target_sources(drivedesk_ui PRIVATE
     scope/ScopeChart.cpp scope/ScopeChartExport.cpp scope/ScopeChartInput.cpp scope/ScopeChart.h
+    scope/ScopeColumnGrid.cpp scope/ScopeColumnGrid.h
     scope/ScopeCursorReadout.cpp scope/ScopeCursorReadout.h
     scope/ScopeCursors.cpp scope/ScopeCursors.h
     scope/ScopeCursorTable.cpp scope/ScopeCursorTable.h
