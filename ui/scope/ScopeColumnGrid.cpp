@@ -21,8 +21,12 @@ ScopeColumnGrid::ScopeColumnGrid(const SampleStore &samples, qint64 fromMs, qint
     const auto gridColumns = std::size_t((toMs - m_fromMs) / m_widthMs + 1);
     m_bounds.resize(gridColumns + 1);
     m_bounds[0] = std::min(samples.lowerBound(m_fromMs), end);
-    for (std::size_t c = 1; c < gridColumns; ++c)
-        m_bounds[c] = gallop(m_bounds[c - 1], end, m_fromMs + qint64(c) * m_widthMs);
+    for (std::size_t c = 1; c < gridColumns; ++c) {
+        // Columns of equal time hold about as many samples as the one before.
+        const qsizetype previous = m_bounds[c - 1];
+        const qsizetype guess = previous + (c > 1 ? previous - m_bounds[c - 2] : 0);
+        m_bounds[c] = search(previous, guess, end, m_fromMs + qint64(c) * m_widthMs);
+    }
     m_bounds[gridColumns] = end;
 }
 
@@ -37,24 +41,38 @@ MinMaxPyramid::Column ScopeColumnGrid::column(const MinMaxPyramid &pyramid, int 
     };
 }
 
-qsizetype ScopeColumnGrid::gallop(qsizetype from, qsizetype end, qint64 ms) const
+qsizetype ScopeColumnGrid::search(qsizetype low, qsizetype guess, qsizetype end, qint64 ms) const
 {
-    // Steps of 1, 2, 4, ... until a sample at or after ms, then a binary search in the last
-    // step: O(log of the distance), on memory near the previous boundary.
-    qsizetype low = from;
-    qsizetype high = from;
-    for (qsizetype step = 1; high < end && m_samples.time(high) < ms; step *= 2) {
-        low = high + 1;
-        high = std::min(high + step, end);
+    // From the guess, steps of 1, 2, 4, ... towards the boundary until past it, then a binary
+    // search in the last step: O(log of the guess's error), on memory near the guess.
+    guess = std::clamp(guess, low, end);
+    qsizetype from = low;
+    qsizetype to = end;
+    if (guess < end && m_samples.time(guess) < ms) {
+        from = guess + 1;
+        qsizetype probe = from;
+        for (qsizetype step = 1; probe < end && m_samples.time(probe) < ms; step *= 2) {
+            from = probe + 1;
+            probe += step;
+        }
+        to = std::min(probe, end);
+    } else {
+        to = guess;
+        qsizetype probe = guess - 1;
+        for (qsizetype step = 1; probe >= low && m_samples.time(probe) >= ms; step *= 2) {
+            to = probe;
+            probe -= step;
+        }
+        from = std::max(probe + 1, low);
     }
-    while (low < high) {
-        const qsizetype middle = low + (high - low) / 2;
+    while (from < to) {
+        const qsizetype middle = from + (to - from) / 2;
         if (m_samples.time(middle) < ms)
-            low = middle + 1;
+            from = middle + 1;
         else
-            high = middle;
+            to = middle;
     }
-    return low;
+    return from;
 }
 
 } // namespace DriveDesk
