@@ -12,7 +12,6 @@
 
 class QCPAxis;
 class QCPGraph;
-class QCPRange;
 class QCustomPlot;
 class QMouseEvent;
 class QWheelEvent;
@@ -165,7 +164,6 @@ private:
     void fitValueAxes();
     void updateReadout();
     qsizetype shownSampleCount() const;
-    qint64 originMs() const;
     bool checkWritable(const QString &path, QString *error) const;
 
     const ScopeRecording *m_recording = nullptr;
@@ -184,7 +182,9 @@ private:
     int m_filledColumns = 0; // the columns of the last fill
     qsizetype m_filledCount = 0; // the samples there were at the last fill
     qint64 m_originMs = 0;
-    int m_settingRanges = 0; // > 0 while the chart itself sets axis ranges
+    // > 0 while the chart itself sets axis ranges: their rangeChanged is then not a user's
+    // zoom or pan.
+    int m_settingRanges = 0;
     ScopeCursorReadout m_readout;
 };
 

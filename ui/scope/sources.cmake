@@ -2,7 +2,8 @@
 # timer, the channels' traces and value axes, two cursors and their read-out), the channels'
 # panel, and the dock and feature that record from the drive (docs/scope.md).
 target_sources(drivedesk_ui PRIVATE
-    scope/ScopeChart.cpp scope/ScopeChartExport.cpp scope/ScopeChartInput.cpp scope/ScopeChart.h
+    scope/ScopeChart.cpp scope/ScopeChartExport.cpp scope/ScopeChartInput.cpp
+    scope/ScopeChartView.cpp scope/ScopeChart.h
     scope/ScopeColumnGrid.cpp scope/ScopeColumnGrid.h
     scope/ScopeCursorReadout.cpp scope/ScopeCursorReadout.h
     scope/ScopeCursors.cpp scope/ScopeCursors.h
