@@ -1,6 +1,6 @@
 #include "ScopeTraces.h"
 
-#include "ScopeColumnGrid.h"
+#include "scope/ScopeColumnGrid.h"
 
 #include "QCustomPlotInclude.h"
 

@@ -4,7 +4,6 @@
 target_sources(drivedesk_ui PRIVATE
     scope/ScopeChart.cpp scope/ScopeChartExport.cpp scope/ScopeChartInput.cpp
     scope/ScopeChartView.cpp scope/ScopeChart.h
-    scope/ScopeColumnGrid.cpp scope/ScopeColumnGrid.h
     scope/ScopeCursorReadout.cpp scope/ScopeCursorReadout.h
     scope/ScopeCursors.cpp scope/ScopeCursors.h
     scope/ScopeCursorTable.cpp scope/ScopeCursorTable.h
