@@ -79,6 +79,7 @@ ScopeDock::ScopeDock(WindowFrame &frame, QWidget *parent)
     layout->addLayout(statusRow);
     setWidget(content);
 
+    connect(m_panel, &ScopeChannelPanel::choicesChanged, this, &ScopeDock::previewChannels);
     connect(m_panel, &ScopeChannelPanel::visibilityChanged, m_chart, &ScopeChart::setChannelVisible);
     connect(m_panel, &ScopeChannelPanel::colorChanged, m_chart, &ScopeChart::setChannelColor);
     connect(m_panel, &ScopeChannelPanel::ownAxisChanged, m_chart, &ScopeChart::setChannelOwnAxis);
@@ -260,7 +261,18 @@ void ScopeDock::setDrive(const DriveDescription &drive)
     m_drive = drive;
     m_hasDrive = true;
     m_panel->setDrive(&m_drive);
+    previewChannels();
     updateActions();
+}
+
+void ScopeDock::previewChannels()
+{
+    if (!m_hasDrive || m_recording->buffer.count() > 0 || isRecording() || m_assigning)
+        return;
+    m_recording->channels = scopeChannels(m_drive, m_panel->choices());
+    m_panel->setChannels(m_recording->channels);
+    m_chart->recordingChanged();
+    triggerChannelChanged();
 }
 
 bool ScopeDock::isRecording() const

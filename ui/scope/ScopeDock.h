@@ -71,6 +71,8 @@ private:
     void restoreSettings();
     void updateActions();
     void showStatus(const QString &text, bool problem = false);
+    // Before anything is recorded, the chart's legend and axes name the sources chosen.
+    void previewChannels();
 
     // ScopeDockRecording.cpp
     void toggleRecording(bool on);
