@@ -61,7 +61,9 @@ public:
                                   + options);
         if (!m_process.waitForStarted())
             return;
-        static const QRegularExpression where(QStringLiteral("tcp:127\\.0\\.0\\.1:(\\d+)"));
+        // Not static: the sanitizer build (GCC 12) emits this lambda in a test that never makes
+        // a SimulatorProcess, without the static it refers to, and the test does not link.
+        const QRegularExpression where(QStringLiteral("tcp:127\\.0\\.0\\.1:(\\d+)"));
         QRegularExpressionMatch match;
         [[maybe_unused]] const bool found = QTest::qWaitFor([&] {
             m_process.waitForReadyRead(100);
