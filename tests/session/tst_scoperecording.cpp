@@ -198,6 +198,33 @@ private slots:
                  qPrintable(recorder.status().fileError));
     }
 
+    void lostAndFailedPollsAreCountedAndTheRecordingGoesOn()
+    {
+        // Replies garbled on the line (a wrong BCC) and a drive that is sometimes busy; no
+        // retries, so each shows as a lost or failed poll.
+        SimulationOptions faults = fast();
+        faults.corruptByteRate = 0.002;
+        faults.busyRate = 0.03;
+        ClientOptions clientOptions;
+        clientOptions.retries = 0;
+        clientOptions.timeoutMs = 50;
+        Session s(simulated(Protocol::Hsp5, faults), clientOptions);
+        QVERIFY(s.connected());
+        ScopeRecording recording;
+        ScopeRecorder recorder(s.client.get());
+        ScopeRecorderOptions options;
+        options.polling.lostInARowLimit = 1000; // this test is about counting, not giving up
+        const ScopePollEnd end = record(recorder, recording, options,
+                                        [&] { return recording.buffer.count() >= 1000; });
+        QVERIFY2(end.reason.isEmpty(), qPrintable(end.reason));
+        QCOMPARE(end.counts.answered, recording.buffer.count());
+        QVERIFY2(end.counts.lost > 0, "no poll was lost");
+        QVERIFY2(end.counts.failed > 0, "no poll was refused");
+        QVERIFY(!end.counts.lastProblem.isEmpty());
+        QCOMPARE(recorder.status().counts.lost, end.counts.lost);
+        QVERIFY(timesAscend(recording));
+    }
+
     void theRateLimitHolds()
     {
         Session s(simulated(Protocol::Hsp5, fast()));
