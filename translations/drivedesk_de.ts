@@ -715,6 +715,28 @@
         <source>the recording ended early: %1</source>
         <translation>die Aufzeichnung endete vorzeitig: %1</translation>
     </message>
+    <message>
+        <source>reading offline record %1 of %2</source>
+        <translation>lese Offline-Datensatz %1 von %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n offline record(s), one a millisecond assumed</source>
+        <translation>
+            <numerusform>%1: %n Offline-Datensatz, einer je Millisekunde angenommen</numerusform>
+            <numerusform>%1: %n Offline-Datensätze, einer je Millisekunde angenommen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>warning: %n record(s) had channel 3 or 4 beyond 16 bits and hold the nearest 16-bit value</source>
+        <translation>
+            <numerusform>Warnung: %n Datensatz hatte Kanal 3 oder 4 jenseits von 16 Bit und enthält den nächsten 16-Bit-Wert</numerusform>
+            <numerusform>Warnung: %n Datensätze hatten Kanal 3 oder 4 jenseits von 16 Bit und enthalten den nächsten 16-Bit-Wert</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the records could not all be read: %1</source>
+        <translation>die Datensätze konnten nicht alle gelesen werden: %1</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ClientWorker</name>

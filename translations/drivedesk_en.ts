@@ -715,6 +715,28 @@
         <source>the recording ended early: %1</source>
         <translation>the recording ended early: %1</translation>
     </message>
+    <message>
+        <source>reading offline record %1 of %2</source>
+        <translation>reading offline record %1 of %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n offline record(s), one a millisecond assumed</source>
+        <translation>
+            <numerusform>%1: %n offline record, one a millisecond assumed</numerusform>
+            <numerusform>%1: %n offline records, one a millisecond assumed</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>warning: %n record(s) had channel 3 or 4 beyond 16 bits and hold the nearest 16-bit value</source>
+        <translation>
+            <numerusform>warning: %n record had channel 3 or 4 beyond 16 bits and holds the nearest 16-bit value</numerusform>
+            <numerusform>warning: %n records had channel 3 or 4 beyond 16 bits and hold the nearest 16-bit value</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the records could not all be read: %1</source>
+        <translation>the records could not all be read: %1</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ClientWorker</name>

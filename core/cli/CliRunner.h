@@ -59,6 +59,8 @@ private:
     void runScope();
     void record(const QList<ScopeChannel> &channels);
     void recorded(const ScopePollEnd &end);
+    void readOfflineRecords(const QList<ScopeChannel> &channels);
+    bool writeScopeCsv(); // the recording to --csv; false (and finished) when it failed
     void progressLine(int percent, const QString &text);
     // What a scan brought besides the description: its warnings, metadata from the cache.
     void noteScan(const DriveDescription &drive, const QString &cacheDirectory);

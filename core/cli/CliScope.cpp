@@ -5,7 +5,10 @@
 #include "scope/ScopeCsv.h"
 #include "scope/ScopeRecording.h"
 #include "session/ScopeChannelsJob.h"
+#include "session/ScopeOfflineJob.h"
 #include "session/ScopeRecorder.h"
+
+#include <QFutureWatcher>
 
 namespace DriveDesk {
 
@@ -40,7 +43,10 @@ void CliRunner::runScope()
             if (!outcome.error.isEmpty())
                 return fail(outcome.connectionFailed ? 3 : 1,
                             tr("the channels could not be assigned: %1").arg(outcome.error));
-            record(scopeChannels(drive, outcome.assignment));
+            const ScopeChannels channels = scopeChannels(drive, outcome.assignment);
+            if (m_request.offline)
+                return readOfflineRecords(channels);
+            record(channels);
         });
     });
 }
@@ -88,15 +94,8 @@ void CliRunner::recorded(const ScopePollEnd &end)
 {
     progressLine(-1, {});
     const ScopeRecorderStatus status = m_recorder->status();
-    ScopeCsvOptions csv;
-    csv.channels.clear();
-    for (int channel = 0; channel < m_recording->channels.size(); ++channel) {
-        if (m_recording->channels.at(channel).enabled)
-            csv.channels << channel;
-    }
-    QString error;
-    if (!saveScopeCsv(m_request.csvFile, *m_recording, csv, &error))
-        return fail(1, error);
+    if (!writeScopeCsv())
+        return;
     const double seconds = double(m_recording->lastTime() - m_recording->firstTime()) / 1000.0;
     m_out << tr("%1: %n sample(s) over %2 s, achieved %3 Hz", nullptr,
                 int(m_recording->buffer.count()))
@@ -108,6 +107,60 @@ void CliRunner::recorded(const ScopePollEnd &end)
     if (!end.reason.isEmpty())
         return fail(1, tr("the recording ended early: %1").arg(end.reason));
     done();
+}
+
+bool CliRunner::writeScopeCsv()
+{
+    ScopeCsvOptions csv;
+    csv.channels.clear();
+    for (int channel = 0; channel < m_recording->channels.size(); ++channel) {
+        if (m_recording->channels.at(channel).enabled)
+            csv.channels << channel;
+    }
+    if (csv.channels.isEmpty()) // offline records taken under another assignment: all of them
+        csv.channels = {0, 1, 2, 3};
+    QString error;
+    if (!saveScopeCsv(m_request.csvFile, *m_recording, csv, &error)) {
+        fail(1, error);
+        return false;
+    }
+    return true;
+}
+
+void CliRunner::readOfflineRecords(const QList<ScopeChannel> &channels)
+{
+    m_recording = std::make_unique<ScopeRecording>();
+    m_recording->channels = channels;
+    m_recording->source = m_request.connection.displayName();
+    m_recording->started = QDateTime::currentDateTimeUtc();
+    auto *watcher = new QFutureWatcher<ScopeOfflineRecords>(this);
+    connect(watcher, &QFutureWatcherBase::progressValueChanged, this, [this, watcher](int value) {
+        progressLine(value * 100 / std::max(1, watcher->progressMaximum()),
+                     tr("reading offline record %1 of %2").arg(value).arg(watcher->progressMaximum()));
+    });
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] {
+        progressLine(-1, {});
+        watcher->deleteLater();
+        const ScopeOfflineRecords records = watcher->future().result();
+        for (const ScopeSample &sample : records.samples)
+            m_recording->buffer.append(sample);
+        if (records.samples.isEmpty())
+            return fail(1, records.error);
+        if (!writeScopeCsv())
+            return;
+        m_out << tr("%1: %n offline record(s), one a millisecond assumed", nullptr,
+                    int(records.samples.size()))
+                     .arg(m_request.csvFile)
+              << '\n';
+        if (records.clipped > 0)
+            m_err << tr("warning: %n record(s) had channel 3 or 4 beyond 16 bits and hold the "
+                        "nearest 16-bit value", nullptr, int(records.clipped))
+                  << '\n';
+        if (!records.error.isEmpty())
+            return fail(1, tr("the records could not all be read: %1").arg(records.error));
+        done();
+    });
+    watcher->setFuture(m_client->run(std::make_shared<ScopeOfflineJob>()));
 }
 
 } // namespace DriveDesk

@@ -63,6 +63,8 @@ QString usage()
         "                               the drive has them. --duration: 10s, 500ms, 2min;\n"
         "                               --rate limits the polls a second. Ctrl+C stops\n"
         "                               early and writes what was recorded\n"
+        "  scope --offline --csv FILE   the drive's offline records (service 21,\n"
+        "                               DIN66019II) as CSV, one a millisecond assumed\n"
         "\n"
         "Exit status: 0 done, 1 the drive refused or the work was not completed, 2 bad\n"
         "input (nothing was sent), 3 no connection.\n");
@@ -76,7 +78,7 @@ namespace {
 bool parseScopeOptions(const QCommandLineParser &parser, CliRequest &request, QString *error)
 {
     const bool scope = request.command == CliRequest::Command::Scope;
-    for (const char *name : {"channels", "duration", "rate", "csv"}) {
+    for (const char *name : {"channels", "duration", "rate", "csv", "offline"}) {
         if (!scope && parser.isSet(QLatin1String(name))) {
             *error = QStringLiteral("--%1 belongs to scope").arg(QLatin1String(name));
             return false;
@@ -88,6 +90,16 @@ bool parseScopeOptions(const QCommandLineParser &parser, CliRequest &request, QS
     if (request.csvFile.isEmpty()) {
         *error = QStringLiteral("scope needs --csv FILE: where to write what it records");
         return false;
+    }
+    request.offline = parser.isSet(QStringLiteral("offline"));
+    if (request.offline) {
+        for (const char *name : {"channels", "duration", "rate"}) {
+            if (parser.isSet(QLatin1String(name))) {
+                *error = QStringLiteral("--offline reads what the drive recorded: --%1 does not "
+                                        "apply").arg(QLatin1String(name));
+                return false;
+            }
+        }
     }
     if (parser.isSet(QStringLiteral("channels"))) {
         for (const QString &id : parser.value(QStringLiteral("channels")).split(QLatin1Char(',')))
@@ -186,8 +198,9 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     const QCommandLineOption duration(QStringLiteral("duration"), {}, QStringLiteral("time"));
     const QCommandLineOption rate(QStringLiteral("rate"), {}, QStringLiteral("hz"));
     const QCommandLineOption csv(QStringLiteral("csv"), {}, QStringLiteral("file"));
+    const QCommandLineOption offline(QStringLiteral("offline"));
     parser.addOptions({help, timeout, quiet, format, values, set, sets, raw, noCache, password,
-                       dryRun, force, channels, duration, rate, csv});
+                       dryRun, force, channels, duration, rate, csv, offline});
     *helpText = usage();
 
     // A negative value ("write uF.07 -5") is not an option: shield such words from the parser.

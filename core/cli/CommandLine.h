@@ -38,6 +38,7 @@ struct CliRequest {
     QStringList channels;
     qint64 durationMs = 10000;
     double rateHz = 0;
+    bool offline = false; // the drive's offline records (service 21) instead of a recording
     QString csvFile;
 };
 

@@ -90,6 +90,10 @@ private slots:
         QTest::newRow("bad duration")
             << QStringList{QStringLiteral("--duration"), QStringLiteral("ten seconds")}
             << QStringLiteral("duration");
+        QTest::newRow("offline with channels")
+            << QStringList{QStringLiteral("--offline"), QStringLiteral("--channels"),
+                           QStringLiteral("ru.3")}
+            << QStringLiteral("--offline");
         QTest::newRow("zero rate")
             << QStringList{QStringLiteral("--rate"), QStringLiteral("0")}
             << QStringLiteral("--rate");
@@ -120,6 +124,47 @@ private slots:
         QCOMPARE(run.exitCode, 2);
         QVERIFY2(run.err.contains(QStringLiteral("--channels")), qPrintable(explain(run)));
         QVERIFY(!QFile::exists(csv));
+    }
+
+    void readsTheOfflineRecordsOverDin66019II()
+    {
+        // One drive for both commands: the first puts DC link voltage on channel 1, the drive
+        // keeps recording it offline, the second reads those records.
+        SimulatorProcess server({QStringLiteral("--protocol"), QStringLiteral("din66019ii"),
+                                 QStringLiteral("--latency-us"), QStringLiteral("0")});
+        QVERIFY2(server.started(), qPrintable(server.error()));
+        const QStringList connection{QStringLiteral("--connect"), server.target(),
+                                     QStringLiteral("--protocol"), QStringLiteral("din66019ii"),
+                                     QStringLiteral("--quiet")};
+        QTemporaryDir dir;
+        const Run assign = cli(connection + QStringList{
+            QStringLiteral("scope"), QStringLiteral("--channels"), QStringLiteral("ru.18"),
+            QStringLiteral("--duration"), QStringLiteral("50ms"), QStringLiteral("--csv"),
+            dir.filePath(QStringLiteral("live.csv"))}, dir.path());
+        QVERIFY2(assign.exitCode == 0, qPrintable(explain(assign)));
+        QTest::qWait(800); // 64 records, one each 10 ms
+
+        const QString csv = dir.filePath(QStringLiteral("offline.csv"));
+        const Run run = cli(connection + QStringList{QStringLiteral("scope"),
+                                                     QStringLiteral("--offline"),
+                                                     QStringLiteral("--csv"), csv}, dir.path());
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        QVERIFY2(run.out.contains(QStringLiteral("64 offline records")), qPrintable(run.out));
+        const QStringList lines = csvLines(csv);
+        QCOMPARE(lines.size(), 65);
+        QCOMPARE(lines.first(), QStringLiteral("Time [ms],ru.18 DC link voltage [V]"));
+        for (qsizetype i = 1; i < lines.size(); ++i) {
+            const QStringList fields = lines.at(i).split(QLatin1Char(','));
+            QCOMPARE(fields.at(0), QString::number(i - 1));
+            QVERIFY2(fields.at(1).toInt() > 400, qPrintable(lines.at(i))); // a DC link's volts
+        }
+
+        // Over HSP5 as the specification has it there is no service 21: said so, no file.
+        const Run hsp5 = sim({QStringLiteral("scope"), QStringLiteral("--offline"),
+                              QStringLiteral("--csv"), dir.filePath(QStringLiteral("no.csv"))});
+        QCOMPARE(hsp5.exitCode, 1);
+        QVERIFY2(hsp5.err.contains(QStringLiteral("service 21")), qPrintable(explain(hsp5)));
+        QVERIFY(!QFile::exists(dir.filePath(QStringLiteral("no.csv"))));
     }
 
     void anUnwritableFileIsNamed()
