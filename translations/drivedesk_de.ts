@@ -3415,6 +3415,30 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
             <numerusform>%n mit Kanal 3 oder 4 jenseits von 16 Bit, mit dem nächsten 16-Bit-Wert gezeigt</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Save Recording As...</source>
+        <translation>Aufzeichnung speichern unter...</translation>
+    </message>
+    <message>
+        <source>There is nothing recorded to save.</source>
+        <translation>Es ist nichts aufgezeichnet, das gespeichert werden könnte.</translation>
+    </message>
+    <message>
+        <source>Stop the recording before saving it, or use Record to File.</source>
+        <translation>Beenden Sie die Aufzeichnung, bevor Sie sie speichern, oder zeichnen Sie in eine Datei auf.</translation>
+    </message>
+    <message>
+        <source>Save Scope Recording</source>
+        <translation>Scope-Aufzeichnung speichern</translation>
+    </message>
+    <message>
+        <source>Saved to %1.</source>
+        <translation>In %1 gespeichert.</translation>
+    </message>
+    <message>
+        <source>Cannot save %1: %2</source>
+        <translation>%1 kann nicht gespeichert werden: %2</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ScopeFeature</name>

@@ -3415,6 +3415,30 @@ Home: the whole recording; End: follow the newest samples; A: fit the values; Sp
             <numerusform>%n with channel 3 or 4 beyond 16 bits, shown at the nearest 16-bit value</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Save Recording As...</source>
+        <translation>Save Recording As...</translation>
+    </message>
+    <message>
+        <source>There is nothing recorded to save.</source>
+        <translation>There is nothing recorded to save.</translation>
+    </message>
+    <message>
+        <source>Stop the recording before saving it, or use Record to File.</source>
+        <translation>Stop the recording before saving it, or use Record to File.</translation>
+    </message>
+    <message>
+        <source>Save Scope Recording</source>
+        <translation>Save Scope Recording</translation>
+    </message>
+    <message>
+        <source>Saved to %1.</source>
+        <translation>Saved to %1.</translation>
+    </message>
+    <message>
+        <source>Cannot save %1: %2</source>
+        <translation>Cannot save %1: %2</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ScopeFeature</name>

@@ -151,6 +151,19 @@ private slots:
             QVERIFY(time >= visible.fromMs && time <= visible.toMs);
         }
 
+        // Saved afterwards as a recording file, read back the same; a folder that is not there
+        // is named and leaves nothing behind.
+        const QString saved = dir.filePath(QStringLiteral("saved.ddscope"));
+        QVERIFY2(dock->saveRecording(saved, &error), qPrintable(error));
+        ScopeRecording reread;
+        QVERIFY2(readScopeFile(saved, reread, &error), qPrintable(error));
+        QCOMPARE(reread.buffer.count(), count);
+        QCOMPARE(reread.channels, recording.channels);
+        QVERIFY(!QFile::exists(saved + QStringLiteral(".part")));
+        const QString nowhere = dir.filePath(QStringLiteral("missing/saved.ddscope"));
+        QVERIFY(!dock->saveRecording(nowhere, &error));
+        QVERIFY2(error.contains(QStringLiteral("missing")), qPrintable(error));
+
         QVERIFY2(chart->savePng(dir.filePath(QStringLiteral("chart.png")), &error), qPrintable(error));
         QVERIFY(QFileInfo(dir.filePath(QStringLiteral("chart.png"))).size() > 0);
     }

@@ -165,6 +165,8 @@ void ScopeDock::buildToolBars()
 
     auto *fileMenu = new QMenu(tr("Recording"), bar);
     fileMenu->addAction(tr("Open Recording..."), this, &ScopeDock::chooseRecordingToOpen);
+    fileMenu->addAction(tr("Save Recording As..."), this, &ScopeDock::chooseRecordingToSave)
+        ->setObjectName(QStringLiteral("scopeSaveAction"));
     m_toFileAction = fileMenu->addAction(tr("Record to File..."));
     m_toFileAction->setObjectName(QStringLiteral("scopeToFileAction"));
     m_toFileAction->setCheckable(true);

@@ -55,6 +55,9 @@ public:
     // Where the next recordings also go as they are recorded (.ddscope); empty: memory only.
     void setRecordFile(const QString &path);
     QString recordFile() const { return m_recordFile; }
+    // The recording shown, whole, as a recording file (.ddscope); false with the reason, and
+    // no file at `path`.
+    bool saveRecording(const QString &path, QString *error = nullptr);
     // The recording as CSV: everything, or only the visible time range.
     bool exportCsv(const QString &path, bool visibleOnly, QString *error = nullptr);
 
@@ -92,6 +95,7 @@ private:
     // ScopeDockFiles.cpp
     void chooseRecordingToOpen();
     void chooseRecordingFile(bool on);
+    void chooseRecordingToSave();
     void chooseCsv(bool visibleOnly);
     void chooseImage(bool pdf);
 

@@ -5,10 +5,14 @@
 
 #include "main/WindowFeature.h"
 #include "scope/ScopeFileFormat.h"
+#include "scope/ScopeFileWriter.h"
 #include "scope/ScopeRecording.h"
 
 #include <QAction>
 #include <QDateTime>
+#include <QFile>
+
+#include <filesystem>
 
 namespace DriveDesk {
 
@@ -56,6 +60,49 @@ void ScopeDock::setRecordFile(const QString &path)
     m_toFileAction->setChecked(!path.isEmpty());
     showStatus(path.isEmpty() ? tr("Recordings stay in memory.")
                               : tr("The next recording also goes into %1.").arg(path));
+}
+
+void ScopeDock::chooseRecordingToSave()
+{
+    if (m_recording->buffer.count() == 0)
+        return showStatus(tr("There is nothing recorded to save."), true);
+    if (isRecording())
+        return showStatus(tr("Stop the recording before saving it, or use Record to File."), true);
+    m_frame.chooseFileToWrite(tr("Save Scope Recording"),
+                              stampedName(QLatin1String(ScopeFileFormat::kSuffix)),
+                              recordingFilter(), [this](const QString &path) {
+                                  QString error;
+                                  if (!saveRecording(path, &error))
+                                      return showStatus(error, true);
+                                  showStatus(tr("Saved to %1.").arg(path));
+                              });
+}
+
+bool ScopeDock::saveRecording(const QString &path, QString *error)
+{
+    // Written beside the target and renamed at the end: a failure leaves no half file, and an
+    // older file of that name stays until the new one is complete.
+    const QString partial = path + QStringLiteral(".part");
+    ScopeFileWriter writer;
+    const SampleStore &samples = m_recording->buffer.samples();
+    const bool written = writer.open(partial, ScopeFileHeader::of(*m_recording), error)
+                         && writer.append(samples, 0, samples.count(), error)
+                         && writer.close(error);
+    if (!written) {
+        QFile::remove(partial);
+        return false;
+    }
+    // Replaces an older file in one step (std::filesystem::rename does, where QFile's refuses).
+    std::error_code failed;
+    std::filesystem::rename(std::filesystem::path(partial.toStdU16String()),
+                            std::filesystem::path(path.toStdU16String()), failed);
+    if (failed) {
+        QFile::remove(partial);
+        if (error)
+            *error = tr("Cannot save %1: %2").arg(path, QString::fromStdString(failed.message()));
+        return false;
+    }
+    return true;
 }
 
 void ScopeDock::chooseCsv(bool visibleOnly)
