@@ -737,6 +737,10 @@
         <source>the records could not all be read: %1</source>
         <translation>die Datensätze konnten nicht alle gelesen werden: %1</translation>
     </message>
+    <message>
+        <source>&apos;%1&apos;: the set after @ is 0..7, e.g. op.11@2</source>
+        <translation>„%1“: der Satz nach @ ist 0..7, z. B. op.11@2</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ClientWorker</name>
@@ -3026,6 +3030,14 @@
         <source>Channel %1 carries 16 bits: this parameter&apos;s values beyond -32768..32767 arrive cut to their low 16 bits.</source>
         <translation>Kanal %1 überträgt 16 Bit: Werte dieses Parameters außerhalb von -32768..32767 kommen auf ihre unteren 16 Bit gekürzt an.</translation>
     </message>
+    <message>
+        <source>Set</source>
+        <translation>Satz</translation>
+    </message>
+    <message>
+        <source>The parameter set the drive reads channel %1 from</source>
+        <translation>Der Parametersatz, aus dem der Umrichter Kanal %1 liest</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ScopeChannelsJob</name>
@@ -4570,6 +4582,10 @@ Verbindungsdialog.
     <message>
         <source>Channel %1</source>
         <translation>Kanal %1</translation>
+    </message>
+    <message>
+        <source>%1 (set %2)</source>
+        <translation>%1 (Satz %2)</translation>
     </message>
 </context>
 <context>

@@ -22,7 +22,8 @@ struct ScopeChannel
     QString name;        // the parameter's name; empty for an unknown source
     DisplayScaling scaling; // identity for an unknown source
 
-    // "ru.03 Actual frequency", or "Channel 2" for an unknown source (index counts from 0).
+    // "ru.03 Actual frequency", "op.11 Maximum speed forward (set 2)" for a set other than 0,
+    // or "Channel 2" for an unknown source (index counts from 0).
     QString title(int index) const;
     QString unit() const { return scaling.unitSymbol(); }
     // The display number of a raw value; the raw value itself where the scaling cannot.

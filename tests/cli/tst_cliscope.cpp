@@ -94,6 +94,9 @@ private slots:
             << QStringList{QStringLiteral("--offline"), QStringLiteral("--channels"),
                            QStringLiteral("ru.3")}
             << QStringLiteral("--offline");
+        QTest::newRow("set out of range")
+            << QStringList{QStringLiteral("--channels"), QStringLiteral("op.11@9")}
+            << QStringLiteral("0..7");
         QTest::newRow("zero rate")
             << QStringList{QStringLiteral("--rate"), QStringLiteral("0")}
             << QStringLiteral("--rate");
@@ -158,6 +161,25 @@ private slots:
             QCOMPARE(fields.at(0), QString::number(i - 1));
             QVERIFY2(fields.at(1).toInt() > 400, qPrintable(lines.at(i))); // a DC link's volts
         }
+
+        // A source read from another set: what was written there, named with its set.
+        const Run written = cli(connection + QStringList{QStringLiteral("write"),
+                                                         QStringLiteral("op.11"),
+                                                         QStringLiteral("2500"),
+                                                         QStringLiteral("--sets"),
+                                                         QStringLiteral("2")}, dir.path());
+        QVERIFY2(written.exitCode == 0, qPrintable(explain(written)));
+        const QString perSet = dir.filePath(QStringLiteral("set2.csv"));
+        const Run set2 = cli(connection + QStringList{
+            QStringLiteral("scope"), QStringLiteral("--channels"), QStringLiteral("op.11@2,op.11"),
+            QStringLiteral("--duration"), QStringLiteral("50ms"), QStringLiteral("--csv"), perSet},
+                             dir.path());
+        QVERIFY2(set2.exitCode == 0, qPrintable(explain(set2)));
+        const QStringList setLines = csvLines(perSet);
+        QCOMPARE(setLines.first(), QStringLiteral("Time [ms],op.11 Maximum speed forward (set 2) "
+                                                  "[1/min],op.11 Maximum speed forward [1/min]"));
+        QVERIFY(setLines.size() > 1);
+        QCOMPARE(setLines.at(1).section(QLatin1Char(','), 1), QStringLiteral("2500,3000"));
 
         // Over HSP5 as the specification has it there is no service 21: said so, no file.
         const Run hsp5 = sim({QStringLiteral("scope"), QStringLiteral("--offline"),

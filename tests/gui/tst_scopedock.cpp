@@ -22,6 +22,7 @@ namespace {
 constexpr quint16 kActualFrequency = 0x0203; // ru.03, 0.01 Hz
 constexpr quint16 kDcLinkVoltage = 0x0212;   // ru.18, V
 constexpr quint16 kOutputVoltage = 0x0209;   // ru.09, V
+constexpr quint16 kMaxSpeedForward = 0x030B; // op.11, 8 sets
 constexpr quint16 kChannel1Source = 0x0010;  // Sy.16
 constexpr quint16 kChannel3Source = 0x0014;  // Sy.20
 constexpr quint16 kChannel4Source = 0x0016;  // Sy.22
@@ -218,6 +219,13 @@ private slots:
             QVERIFY(connectAndRead(window, simulated()));
             auto *dock = window.findChild<ScopeDock *>();
             chooseSource(*dock, 2, kOutputVoltage);
+            // A set only for a set-programmable source.
+            auto *set1 = dock->findChild<QComboBox *>(QStringLiteral("scopeSet1"));
+            chooseSource(*dock, 0, kActualFrequency);
+            QVERIFY(!set1->isEnabled());
+            chooseSource(*dock, 0, kMaxSpeedForward);
+            QVERIFY(set1->isEnabled());
+            set1->setCurrentIndex(2);
             dock->channelPanel()->setChannelColor(2, QColor(Qt::darkRed));
             dock->channelPanel()->setChannelVisible(1, false);
             dock->channelPanel()->setOwnAxis(2, true);
@@ -233,6 +241,8 @@ private slots:
         QVERIFY(connectAndRead(window, simulated()));
         QCOMPARE(dock->channelPanel()->choices()[2],
                  std::optional<ChannelAssignment>(ChannelAssignment{kOutputVoltage, 0x01}));
+        QCOMPARE(dock->channelPanel()->choices()[0],
+                 std::optional<ChannelAssignment>(ChannelAssignment{kMaxSpeedForward, 0x04}));
     }
 
     void aTriggerWaitsAndCanBeCalledOff()

@@ -123,6 +123,31 @@ private slots:
         }
     }
 
+    void readsASourceFromTheSetChosen()
+    {
+        Session s(simulated(Protocol::Hsp5, fast()));
+        QVERIFY(s.connected());
+        const DriveDescription drive = scanned(s);
+        QVERIFY(s.call(s.client->writeValue(kMaxSpeedForward, 2500, 0x04)).ok()); // set 2
+        ScopeAssignment choices;
+        choices[0] = ChannelAssignment{kMaxSpeedForward, 0x04};
+        choices[1] = ChannelAssignment{kMaxSpeedForward, 0x01};
+        const ScopeChannelsOutcome outcome = assign(s, drive, choices);
+        QVERIFY2(outcome.error.isEmpty(), qPrintable(outcome.error));
+        QCOMPARE(outcome.assignment[0], choices[0]);
+        ScopeRecording recording;
+        recording.channels = scopeChannels(drive, outcome.assignment);
+        QCOMPARE(recording.channels[0].title(0), QStringLiteral("op.11 Maximum speed forward (set 2)"));
+        QCOMPARE(recording.channels[1].title(1), QStringLiteral("op.11 Maximum speed forward"));
+        ScopeRecorder recorder(s.client.get());
+        record(recorder, recording, {}, [&] { return recording.buffer.count() >= 50; });
+        QVERIFY(recording.buffer.count() >= 50);
+        for (qsizetype i = 0; i < recording.buffer.count(); ++i) {
+            QCOMPARE(recording.buffer.samples().value(i, 0), 2500);
+            QCOMPARE(recording.buffer.samples().value(i, 1), kMaxSpeedDefault);
+        }
+    }
+
     void refusesSourcesTheDriveDoesNotPermit()
     {
         Session s(simulated(Protocol::Hsp5, fast()));

@@ -32,7 +32,8 @@ ScopeChannelPanel::ScopeChannelPanel(QWidget *parent)
     grid->setContentsMargins(0, 0, 0, 0);
     grid->addWidget(new QLabel(tr("Channel")), 0, 0, 1, 2);
     grid->addWidget(new QLabel(tr("Source")), 0, 2);
-    grid->addWidget(new QLabel(tr("Unit")), 0, 4);
+    grid->addWidget(new QLabel(tr("Set")), 0, 3);
+    grid->addWidget(new QLabel(tr("Unit")), 0, 5);
     for (int channel = 0; channel < int(m_rows.size()); ++channel) {
         Row &row = m_rows[std::size_t(channel)];
         row.color = new QToolButton(this);
@@ -50,6 +51,11 @@ ScopeChannelPanel::ScopeChannelPanel(QWidget *parent)
         row.source->completer()->setCompletionMode(QCompleter::PopupCompletion);
         row.source->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
         row.source->setMinimumContentsLength(22);
+        row.set = new QComboBox(this);
+        row.set->setObjectName(QStringLiteral("scopeSet%1").arg(channel + 1));
+        for (int set = 0; set < kParameterSets; ++set)
+            row.set->addItem(QString::number(set), 1 << set);
+        row.set->setToolTip(tr("The parameter set the drive reads channel %1 from").arg(channel + 1));
         row.ownAxis = new QCheckBox(tr("Own axis"), this);
         row.ownAxis->setObjectName(QStringLiteral("scopeOwnAxis%1").arg(channel + 1));
         row.ownAxis->setToolTip(tr("Give channel %1 a value axis of its own on the right")
@@ -59,8 +65,9 @@ ScopeChannelPanel::ScopeChannelPanel(QWidget *parent)
         grid->addWidget(row.color, channel + 1, 0);
         grid->addWidget(row.visible, channel + 1, 1);
         grid->addWidget(row.source, channel + 1, 2);
-        grid->addWidget(row.ownAxis, channel + 1, 3);
-        grid->addWidget(row.unit, channel + 1, 4);
+        grid->addWidget(row.set, channel + 1, 3);
+        grid->addWidget(row.ownAxis, channel + 1, 4);
+        grid->addWidget(row.unit, channel + 1, 5);
         paintSwatch(channel);
         fillSources(channel);
 
@@ -69,8 +76,15 @@ ScopeChannelPanel::ScopeChannelPanel(QWidget *parent)
                 [this, channel](bool on) { emit visibilityChanged(channel, on); });
         connect(row.ownAxis, &QCheckBox::toggled, this,
                 [this, channel](bool on) { emit ownAxisChanged(channel, on); });
+        connect(row.set, &QComboBox::currentIndexChanged, this, [this, channel] {
+            if (m_filling)
+                return;
+            m_wanted[std::size_t(channel)] = choices()[std::size_t(channel)];
+            emit choicesChanged();
+        });
         connect(row.source, &QComboBox::currentIndexChanged, this, [this, channel] {
             noteNarrowRange(channel);
+            updateSet(channel);
             if (m_filling)
                 return;
             m_wanted[std::size_t(channel)] = choices()[std::size_t(channel)];
@@ -114,8 +128,11 @@ ScopeAssignment ScopeChannelPanel::choices() const
     ScopeAssignment choices;
     for (std::size_t channel = 0; channel < m_rows.size(); ++channel) {
         const int data = m_rows[channel].source->currentData().toInt();
+        const ParameterDescription *source = sourceOf(int(channel));
+        const bool perSet = source && source->isSetProgrammable();
+        const auto mask = quint8(perSet ? m_rows[channel].set->currentData().toInt() : 0x01);
         if (data != kAsAssigned && m_rows[channel].source->currentIndex() >= 0)
-            choices[channel] = ChannelAssignment{data, 0x01};
+            choices[channel] = ChannelAssignment{data, mask};
     }
     return choices;
 }
@@ -135,6 +152,10 @@ void ScopeChannelPanel::applyWanted()
         const int index = box->findData(wanted);
         box->setCurrentIndex(index >= 0 ? index : 0);
         noteNarrowRange(int(channel));
+        updateSet(int(channel));
+        const int setIndex = m_rows[channel].set->findData(
+            m_wanted[channel] ? int(m_wanted[channel]->setMask) : 0x01);
+        m_rows[channel].set->setCurrentIndex(std::max(0, setIndex));
     }
     m_filling = false;
     emit choicesChanged();
@@ -154,8 +175,10 @@ void ScopeChannelPanel::setChannels(const ScopeChannels &channels)
 void ScopeChannelPanel::setSourcesEditable(bool editable)
 {
     const bool assignable = m_drive && scopeAssignmentParameters(*m_drive);
-    for (Row &row : m_rows)
-        row.source->setEnabled(editable && assignable);
+    for (int channel = 0; channel < int(m_rows.size()); ++channel) {
+        m_rows[std::size_t(channel)].source->setEnabled(editable && assignable);
+        updateSet(channel);
+    }
 }
 
 bool ScopeChannelPanel::isChannelVisible(int channel) const
@@ -204,19 +227,40 @@ void ScopeChannelPanel::paintSwatch(int channel)
     m_rows[std::size_t(channel)].color->setIcon(QIcon(swatch));
 }
 
+const ParameterDescription *ScopeChannelPanel::sourceOf(int channel) const
+{
+    if (!m_drive)
+        return nullptr;
+    const int address = m_rows[std::size_t(channel)].source->currentData().toInt();
+    for (const GroupDescription &group : m_drive->groups) {
+        for (const ParameterDescription &parameter : group.parameters) {
+            if (parameter.address == address)
+                return &parameter;
+        }
+    }
+    return nullptr;
+}
+
+void ScopeChannelPanel::updateSet(int channel)
+{
+    // Only a set-programmable source has a set to choose; the others are read as set 0.
+    const ParameterDescription *source = sourceOf(channel);
+    QComboBox *set = m_rows[std::size_t(channel)].set;
+    const bool perSet = source && source->isSetProgrammable();
+    set->setEnabled(perSet && m_rows[std::size_t(channel)].source->isEnabled());
+    if (!perSet) {
+        const QSignalBlocker blocker(set);
+        set->setCurrentIndex(0);
+    }
+}
+
 void ScopeChannelPanel::noteNarrowRange(int channel)
 {
     if (channel < 2 || !m_drive)
         return;
     QComboBox *box = m_rows[std::size_t(channel)].source;
-    const int address = box->currentData().toInt();
-    bool fits = true;
-    for (const GroupDescription &group : m_drive->groups) {
-        for (const ParameterDescription &parameter : group.parameters) {
-            if (parameter.address == address)
-                fits = fitsNarrowChannel(parameter);
-        }
-    }
+    const ParameterDescription *source = sourceOf(channel);
+    const bool fits = !source || fitsNarrowChannel(*source);
     box->setStyleSheet(fits ? QString() : QStringLiteral("QComboBox { color: #a05a00; }"));
     box->setToolTip(fits ? tr("The parameter the drive delivers on channel %1").arg(channel + 1)
                          : tr("Channel %1 carries 16 bits: this parameter's values beyond "

@@ -58,6 +58,7 @@ private:
         QToolButton *color = nullptr;
         QCheckBox *visible = nullptr;
         QComboBox *source = nullptr;
+        QComboBox *set = nullptr; // for a set-programmable source
         QCheckBox *ownAxis = nullptr;
         QLabel *unit = nullptr;
     };
@@ -66,6 +67,8 @@ private:
     void chooseColor(int channel);
     void paintSwatch(int channel);
     void noteNarrowRange(int channel);
+    void updateSet(int channel);
+    const ParameterDescription *sourceOf(int channel) const;
 
     void applyWanted();
 

@@ -350,8 +350,10 @@ void ScopeDock::restoreSettings()
             m_panel->setChannelColor(channel, color);
         m_panel->setOwnAxis(channel, settings.value(key + QLatin1String("ownAxis"), false).toBool());
         const QVariant source = settings.value(key + QLatin1String("source"));
+        const int mask = settings.value(key + QLatin1String("setMask"), 0x01).toInt();
         if (source.isValid())
-            choices[std::size_t(channel)] = ChannelAssignment{source.toInt(), 0x01};
+            choices[std::size_t(channel)]
+                = ChannelAssignment{source.toInt(), quint8(mask > 0 && mask <= 0xFF ? mask : 0x01)};
     }
     m_panel->setChoices(choices);
     m_rollSeconds->setValue(settings.value(QStringLiteral("rollSeconds"),
@@ -374,10 +376,13 @@ void ScopeDock::saveSettings() const
         settings.setValue(key + QLatin1String("visible"), m_panel->isChannelVisible(channel));
         settings.setValue(key + QLatin1String("color"), m_panel->channelColor(channel).name());
         settings.setValue(key + QLatin1String("ownAxis"), m_panel->hasOwnAxis(channel));
-        if (const auto &choice = choices[std::size_t(channel)])
+        if (const auto &choice = choices[std::size_t(channel)]) {
             settings.setValue(key + QLatin1String("source"), choice->source);
-        else
+            settings.setValue(key + QLatin1String("setMask"), int(choice->setMask));
+        } else {
             settings.remove(key + QLatin1String("source"));
+            settings.remove(key + QLatin1String("setMask"));
+        }
     }
     settings.setValue(QStringLiteral("rollSeconds"), m_rollSeconds->value());
     settings.setValue(QStringLiteral("rateLimit"), m_rateLimit->value());
