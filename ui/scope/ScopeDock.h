@@ -2,6 +2,7 @@
 
 #include "parameters/DriveDescription.h"
 #include "scope/ScopeTrigger.h"
+#include "session/ScopeAssignment.h"
 #include "session/ScopeRecorder.h"
 
 #include <QDockWidget>
@@ -81,6 +82,7 @@ private:
     void toggleRecording(bool on);
     void startRecording();
     void channelsAssigned(const ScopeChannelsOutcome &outcome);
+    void showAssignmentInTable(const ScopeAssignment &assignment);
     void stopRecording();
     void samplesAppended();
     void recorderStatus(const ScopeRecorderStatus &status);

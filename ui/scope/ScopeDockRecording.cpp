@@ -5,6 +5,8 @@
 #include "ScopeChart.h"
 
 #include "client/DriveClient.h"
+#include "main/WindowFeature.h"
+#include "model/ParameterModel.h"
 #include "scope/ScopeRecording.h"
 #include "session/ScopeChannelsJob.h"
 #include "session/ScopeOfflineJob.h"
@@ -43,9 +45,27 @@ void ScopeDock::startRecording()
     });
 }
 
+void ScopeDock::showAssignmentInTable(const ScopeAssignment &assignment)
+{
+    // The table shows Sy.16..Sy.23 too: it shows what the drive holds now, not what was read
+    // before the scope wrote them. Not when the window shows a parameter file instead.
+    const auto parameters = scopeAssignmentParameters(m_drive);
+    ParameterModel *model = m_frame.model();
+    if (!parameters || !model || !m_frame.parameterFilePath().isEmpty())
+        return;
+    for (std::size_t channel = 0; channel < assignment.size(); ++channel) {
+        if (!assignment[channel])
+            continue;
+        // The assignment parameters hold one value (not set-programmable on an F5): set 0.
+        model->setValue(parameters->source[channel], 0, assignment[channel]->source);
+        model->setValue(parameters->setMask[channel], 0, assignment[channel]->setMask);
+    }
+}
+
 void ScopeDock::channelsAssigned(const ScopeChannelsOutcome &outcome)
 {
     m_assigning = false;
+    showAssignmentInTable(outcome.assignment);
     if (!outcome.error.isEmpty() || !m_recorder) {
         m_triggerAction->setChecked(false);
         updateActions();
