@@ -268,6 +268,30 @@ private slots:
         QVERIFY(recording.buffer.count() >= 10);
     }
 
+    void recordsOverASerialPort()
+    {
+        // A pseudo-terminal through QSerialPort, as a USB adapter would be.
+        QTemporaryDir dir;
+        const QString device = dir.filePath(QStringLiteral("ttyDrive"));
+        SimulatorServer server(Protocol::Din66019II, fast());
+        QString error;
+        QVERIFY2(server.listenPty(device, &error), qPrintable(error));
+        ConnectionSettings settings;
+        settings.kind = ConnectionSettings::Kind::Serial;
+        settings.device = device;
+        settings.protocol = Protocol::Din66019II;
+        Session s(settings);
+        QVERIFY(s.connected());
+        ScopeRecording recording;
+        ScopeRecorder recorder(s.client.get());
+        const ScopePollEnd end = record(recorder, recording, {},
+                                        [&] { return recording.buffer.count() >= 100; });
+        QVERIFY2(end.reason.isEmpty(), qPrintable(end.reason));
+        QVERIFY(recording.buffer.count() >= 100);
+        QCOMPARE(end.counts.lost + end.counts.failed, 0);
+        QVERIFY(timesAscend(recording));
+    }
+
     void aLostLinkEndsTheRecordingAndKeepsItsSamples()
     {
         SimulatorServer server(Protocol::Hsp5, fast());
