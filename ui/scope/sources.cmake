@@ -10,6 +10,7 @@ target_sources(drivedesk_ui PRIVATE
     scope/ScopeTraces.cpp scope/ScopeTraces.h
     scope/QCustomPlotInclude.h
     scope/ScopeChannelPanel.cpp scope/ScopeChannelPanel.h
-    scope/ScopeDock.cpp scope/ScopeDockRecording.cpp scope/ScopeDockFiles.cpp scope/ScopeDock.h
+    scope/ScopeDock.cpp scope/ScopeDockRecording.cpp scope/ScopeDockFiles.cpp
+    scope/ScopeDockToolBars.cpp scope/ScopeDock.h
     scope/ScopeFeature.cpp scope/ScopeFeature.h
 )
