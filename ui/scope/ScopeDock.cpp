@@ -5,7 +5,6 @@
 #include "ScopeCursorTable.h"
 
 #include "client/DriveClient.h"
-#include "main/FrameSupport.h"
 #include "main/WindowFeature.h"
 #include "scope/ScopeCsv.h"
 #include "scope/ScopeFileReader.h"
