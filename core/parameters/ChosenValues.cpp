@@ -11,17 +11,6 @@ namespace DriveDesk {
 
 namespace {
 
-ParameterDescription *findParameter(DriveDescription &drive, quint16 address)
-{
-    for (GroupDescription &group : drive.groups) {
-        for (ParameterDescription &parameter : group.parameters) {
-            if (parameter.address == address)
-                return &parameter;
-        }
-    }
-    return nullptr;
-}
-
 // The cell a set's value lives in: set 0 for a parameter with one value.
 std::size_t cellOf(const ParameterDescription &parameter, int set)
 {
@@ -46,7 +35,7 @@ int ChosenValues::apply(DriveDescription &target, const QList<ChosenValue> &valu
 {
     int applied = 0;
     for (const ChosenValue &value : values) {
-        ParameterDescription *parameter = findParameter(target, value.address);
+        ParameterDescription *parameter = target.find(value.address);
         QString refusal;
         const QString id = ParameterId::format(value.address, target);
         if (!parameter) {
@@ -84,7 +73,7 @@ DriveDescription ChosenValues::selectionFor(const DriveDescription &source,
         }
     }
     for (const ChosenValue &value : values) {
-        if (ParameterDescription *parameter = findParameter(selection, value.address))
+        if (ParameterDescription *parameter = selection.find(value.address))
             parameter->values[cellOf(*parameter, value.set)] = value.raw;
     }
     return selection;

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <optional>
+#include <utility>
 
 namespace DriveDesk {
 
@@ -93,6 +94,10 @@ struct DriveDescription {
 
     int parameterCount() const;
     const ParameterDescription *find(quint16 address) const;
+    ParameterDescription *find(quint16 address)
+    {
+        return const_cast<ParameterDescription *>(std::as_const(*this).find(address));
+    }
     const GroupDescription *findGroup(const QString &id) const;
     bool operator==(const DriveDescription &) const = default;
 };

@@ -4,6 +4,7 @@
 #include "parameters/ParameterProperties.h"
 #include "scope/ScopeSample.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace DriveDesk {
@@ -14,28 +15,10 @@ namespace {
 constexpr quint16 kFirstAssignment = 0x0010;
 const QString kAssignmentGroup = QStringLiteral("Sy");
 
-const ParameterDescription *find(const DriveDescription &drive, quint16 address)
+bool inAssignmentGroup(const GroupDescription &group, quint16 address)
 {
-    for (const GroupDescription &group : drive.groups) {
-        for (const ParameterDescription &parameter : group.parameters) {
-            if (parameter.address == address)
-                return &parameter;
-        }
-    }
-    return nullptr;
-}
-
-bool inAssignmentGroup(const DriveDescription &drive, quint16 address)
-{
-    for (const GroupDescription &group : drive.groups) {
-        if (group.id.compare(kAssignmentGroup, Qt::CaseInsensitive) != 0)
-            continue;
-        for (const ParameterDescription &parameter : group.parameters) {
-            if (parameter.address == address)
-                return true;
-        }
-    }
-    return false;
+    return std::any_of(group.parameters.begin(), group.parameters.end(),
+                       [address](const ParameterDescription &p) { return p.address == address; });
 }
 
 } // namespace
@@ -55,8 +38,11 @@ std::optional<ScopeAssignmentParameters> scopeAssignmentParameters(const DriveDe
         parameters.source[channel] = quint16(kFirstAssignment + 2 * channel);
         parameters.setMask[channel] = quint16(kFirstAssignment + 2 * channel + 1);
     }
+    const GroupDescription *group = drive.findGroup(kAssignmentGroup);
+    if (!group)
+        return std::nullopt;
     for (const quint16 address : parameters.all()) {
-        if (!inAssignmentGroup(drive, address))
+        if (!inAssignmentGroup(*group, address))
             return std::nullopt;
     }
     return parameters;
@@ -98,7 +84,7 @@ ScopeChannels scopeChannels(const DriveDescription &drive, const ScopeAssignment
         const auto address = quint16(assigned->source);
         channel.source = address;
         channel.id = ParameterId::format(address, drive);
-        if (const ParameterDescription *parameter = find(drive, address)) {
+        if (const ParameterDescription *parameter = drive.find(address)) {
             channel.name = parameter->name;
             channel.scaling = DisplayScaling(parameter->scaling);
         }

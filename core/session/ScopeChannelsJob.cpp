@@ -15,17 +15,6 @@ QString tr(const char *text)
     return QCoreApplication::translate("ScopeChannelsJob", text);
 }
 
-const ParameterDescription *find(const DriveDescription &drive, quint16 address)
-{
-    for (const GroupDescription &group : drive.groups) {
-        for (const ParameterDescription &parameter : group.parameters) {
-            if (parameter.address == address)
-                return &parameter;
-        }
-    }
-    return nullptr;
-}
-
 } // namespace
 
 ScopeChannelsJob::ScopeChannelsJob(Protocol protocol, const DriveDescription &drive,
@@ -67,8 +56,8 @@ ScopeChannelsJob::ScopeChannelsJob(Protocol protocol, const DriveDescription &dr
         }
         const quint16 sourceParameter = m_parameters->source[channel];
         const quint16 maskParameter = m_parameters->setMask[channel];
-        const ParameterDescription *source = find(drive, sourceParameter);
-        const ParameterDescription *mask = find(drive, maskParameter);
+        const ParameterDescription *source = drive.find(sourceParameter);
+        const ParameterDescription *mask = drive.find(maskParameter);
         m_writes << Write{sourceParameter, source && source->isSetProgrammable(), choice->source}
                  << Write{maskParameter, mask && mask->isSetProgrammable(), choice->setMask};
     }

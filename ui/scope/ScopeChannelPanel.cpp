@@ -232,13 +232,7 @@ const ParameterDescription *ScopeChannelPanel::sourceOf(int channel) const
     if (!m_drive)
         return nullptr;
     const int address = m_rows[std::size_t(channel)].source->currentData().toInt();
-    for (const GroupDescription &group : m_drive->groups) {
-        for (const ParameterDescription &parameter : group.parameters) {
-            if (parameter.address == address)
-                return &parameter;
-        }
-    }
-    return nullptr;
+    return address < 0 ? nullptr : m_drive->find(quint16(address));
 }
 
 void ScopeChannelPanel::updateSet(int channel)
