@@ -84,10 +84,8 @@ void CliRunner::record(const QList<ScopeChannel> &channels)
     connect(m_recorder, &ScopeRecorder::finished, this, &CliRunner::recorded);
     if (!m_request.quiet) {
         QStringList titles;
-        for (int channel = 0; channel < channels.size(); ++channel) {
-            if (channels.at(channel).enabled)
-                titles << channels.at(channel).title(channel);
-        }
+        for (const int channel : m_recording->recordedChannels())
+            titles << channels.at(channel).title(channel);
         m_err << tr("recording %1 for %2 s; Ctrl+C stops and writes what was recorded")
                      .arg(titles.join(QStringLiteral(", ")))
                      .arg(double(m_request.durationMs) / 1000.0)
@@ -121,13 +119,7 @@ void CliRunner::recorded(const ScopePollEnd &end)
 bool CliRunner::writeScopeCsv()
 {
     ScopeCsvOptions csv;
-    csv.channels.clear();
-    for (int channel = 0; channel < m_recording->channels.size(); ++channel) {
-        if (m_recording->channels.at(channel).enabled)
-            csv.channels << channel;
-    }
-    if (csv.channels.isEmpty()) // offline records taken under another assignment: all of them
-        csv.channels = {0, 1, 2, 3};
+    csv.channels = m_recording->recordedChannels();
     QString error;
     if (!saveScopeCsv(m_request.csvFile, *m_recording, csv, &error)) {
         fail(1, error);

@@ -23,6 +23,9 @@ struct ScopeRecording
     // The samples' first and last time in ms; 0 and 0 when there are none.
     qint64 firstTime() const;
     qint64 lastTime() const;
+    // The channels worth showing and exporting: those the drive delivers, or all four where it
+    // delivers none (offline records taken under an assignment that has changed since).
+    QList<int> recordedChannels() const;
     // The display number of sample `index` on `channel`.
     double displayValue(qsizetype index, int channel) const
     {

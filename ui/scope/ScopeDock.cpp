@@ -192,11 +192,7 @@ bool ScopeDock::exportCsv(const QString &path, bool visibleOnly, QString *error)
         options.fromMs = range.fromMs;
         options.toMs = range.toMs;
     }
-    options.channels.clear();
-    for (int channel = 0; channel < m_recording->channels.size(); ++channel) {
-        if (m_recording->channels.at(channel).enabled)
-            options.channels << channel;
-    }
+    options.channels = m_recording->recordedChannels();
     return saveScopeCsv(path, *m_recording, options, error);
 }
 
