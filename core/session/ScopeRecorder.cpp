@@ -40,7 +40,6 @@ void ScopeRecorder::start(ScopeRecording *recording, ScopeRecorderOptions option
     m_status.samples = recording->buffer.count();
     m_clock.reset();
     m_rateWindow.clear();
-    m_firstTime = recording->buffer.count() == 0 ? 0 : recording->firstTime();
     m_inbox = std::make_shared<ScopeInbox>();
     m_job = std::make_shared<ScopePollJob>(m_inbox, options.polling);
     m_watcher.setFuture(m_client->run(m_job));
@@ -63,11 +62,10 @@ void ScopeRecorder::takeSamples()
     bool durationReached = false;
     for (const ScopePoll &poll : polls) {
         const ScopeClock::Tick tick = m_clock.unwrap(poll.timestamp, poll.hostMs);
-        if (buffer.count() == 0) {
+        if (buffer.count() == 0)
             m_recording->started = QDateTime::currentDateTimeUtc();
-            m_firstTime = tick.time;
-        }
-        if (m_options.durationMs > 0 && tick.time - m_firstTime > m_options.durationMs) {
+        const qint64 firstTime = buffer.count() == 0 ? tick.time : m_recording->firstTime();
+        if (m_options.durationMs > 0 && tick.time - firstTime > m_options.durationMs) {
             durationReached = true;
             break;
         }

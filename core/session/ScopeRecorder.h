@@ -83,7 +83,6 @@ private:
     QTimer m_take;
     ScopeClock m_clock;
     ScopeRecorderStatus m_status;
-    qint64 m_firstTime = 0;
     std::deque<std::pair<qint64, qint64>> m_rateWindow; // (host ms, samples so far)
     std::unique_ptr<ScopeFileWriter> m_file; // opened with the first sample
     QElapsedTimer m_sinceFlush;
