@@ -72,13 +72,17 @@ void ScopePollJob::sendMore()
     const int inFlight = std::max(1, m_options.inFlight);
     while (!m_stopping && m_onTheWay < inFlight) {
         if (m_options.maxRateHz > 0) {
-            const auto dueNs = qint64(double(m_sent) * 1e9 / m_options.maxRateHz);
-            const qint64 waitNs = dueNs - m_clock.nsecsElapsed();
+            const auto periodNs = qint64(1e9 / m_options.maxRateHz);
+            const qint64 nowNs = m_clock.nsecsElapsed();
+            const qint64 waitNs = m_nextDueNs - nowNs;
             if (waitNs > 0) {
                 if (!m_pace->isActive())
                     m_pace->start(int(std::ceil(double(waitNs) / 1e6)));
                 break;
             }
+            // A late timer may make up one period, no more: after a stall the polls go on at
+            // the rate, not in a burst that would exceed it.
+            m_nextDueNs = std::max(m_nextDueNs, nowNs - periodNs) + periodNs;
         }
         const qint64 sequence = m_sent++;
         ++m_onTheWay;

@@ -94,6 +94,7 @@ private:
     QElapsedTimer m_clock;
     std::unique_ptr<QTimer> m_pace; // made in the client's thread, for the rate limit
     qint64 m_sent = 0;
+    qint64 m_nextDueNs = 0; // the rate limit's next poll, on m_clock
     qint64 m_nextRelease = 0;
     // Answers that came before an earlier poll's: held until that one is in.
     std::map<qint64, std::optional<ScopePoll>> m_waiting;
