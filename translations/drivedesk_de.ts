@@ -451,6 +451,13 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk</name>
+    <message>
+        <source>offline records of %1, one a millisecond assumed</source>
+        <translation>Offline-Aufzeichnung von %1, eine je Millisekunde angenommen</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::AccessController</name>
     <message>
         <source>The password level could not be read: %1</source>
@@ -3408,10 +3415,6 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
     <message>
         <source>The connection went away.</source>
         <translation>Die Verbindung ist weg.</translation>
-    </message>
-    <message>
-        <source>offline records of %1, one a millisecond assumed</source>
-        <translation>Offline-Aufzeichnung von %1, eine je Millisekunde angenommen</translation>
     </message>
     <message numerus="yes">
         <source>%n offline record(s) read</source>

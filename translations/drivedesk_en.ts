@@ -451,6 +451,13 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk</name>
+    <message>
+        <source>offline records of %1, one a millisecond assumed</source>
+        <translation>offline records of %1, one a millisecond assumed</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::AccessController</name>
     <message>
         <source>The password level could not be read: %1</source>
@@ -3408,10 +3415,6 @@ Home: the whole recording; End: follow the newest samples; A: fit the values; Sp
     <message>
         <source>The connection went away.</source>
         <translation>The connection went away.</translation>
-    </message>
-    <message>
-        <source>offline records of %1, one a millisecond assumed</source>
-        <translation>offline records of %1, one a millisecond assumed</translation>
     </message>
     <message numerus="yes">
         <source>%n offline record(s) read</source>

@@ -130,21 +130,16 @@ bool CliRunner::writeScopeCsv()
 
 void CliRunner::readOfflineRecords(const QList<ScopeChannel> &channels)
 {
-    m_recording = std::make_unique<ScopeRecording>();
-    m_recording->channels = channels;
-    m_recording->source = m_request.connection.displayName();
-    m_recording->started = QDateTime::currentDateTimeUtc();
     auto *watcher = new QFutureWatcher<ScopeOfflineRecords>(this);
     connect(watcher, &QFutureWatcherBase::progressValueChanged, this, [this, watcher](int value) {
         progressLine(value * 100 / std::max(1, watcher->progressMaximum()),
                      tr("reading offline record %1 of %2").arg(value).arg(watcher->progressMaximum()));
     });
-    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] {
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, channels] {
         progressLine(-1, {});
         watcher->deleteLater();
         const ScopeOfflineRecords records = watcher->future().result();
-        for (const ScopeSample &sample : records.samples)
-            m_recording->buffer.append(sample);
+        m_recording = offlineRecording(records, channels, m_request.connection.displayName());
         if (records.samples.isEmpty())
             return fail(1, records.error);
         if (!writeScopeCsv())

@@ -1,5 +1,7 @@
 #include "ScopeOfflineJob.h"
 
+#include "scope/ScopeRecording.h"
+
 #include <QCoreApplication>
 
 #include <limits>
@@ -24,6 +26,19 @@ qint16 clip(qint32 value, bool *clipped)
 }
 
 } // namespace
+
+std::unique_ptr<ScopeRecording> offlineRecording(const ScopeOfflineRecords &records,
+                                                 const ScopeChannels &channels,
+                                                 const QString &connection)
+{
+    auto recording = std::make_unique<ScopeRecording>();
+    recording->channels = channels;
+    recording->source = tr("offline records of %1, one a millisecond assumed").arg(connection);
+    recording->started = QDateTime::currentDateTimeUtc();
+    for (const ScopeSample &sample : records.samples)
+        recording->buffer.append(sample);
+    return recording;
+}
 
 ScopeOfflineJob::ScopeOfflineJob(qint64 periodMs)
     : m_periodMs(std::max<qint64>(1, periodMs))

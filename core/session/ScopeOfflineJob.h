@@ -1,10 +1,13 @@
 #pragma once
 
 #include "client/RequestJob.h"
+#include "scope/ScopeChannel.h"
 #include "scope/ScopeSample.h"
 
 #include <QList>
 #include <QString>
+
+#include <memory>
 
 namespace DriveDesk {
 
@@ -20,6 +23,15 @@ struct ScopeOfflineRecords
     qint64 clipped = 0;
     QString error; // why reading stopped early, in words; empty when every record was read
 };
+
+struct ScopeRecording;
+
+// The records as a recording to view or export: `channels` as they are assigned now (the drive
+// does not say what they were when it recorded), `connection` named with the millisecond
+// spacing assumed.
+std::unique_ptr<ScopeRecording> offlineRecording(const ScopeOfflineRecords &records,
+                                                 const ScopeChannels &channels,
+                                                 const QString &connection);
 
 // Reads the offline records of service 21 (DIN66019II; over HSP5 only with DriveDesk's
 // extensions), record 0 first, whose answer says how many there are, then the rest with

@@ -214,6 +214,34 @@ private slots:
         QCOMPARE(dock->recording()->buffer.count(), recorded);
     }
 
+    void readsTheDrivesOfflineRecords()
+    {
+        m_settings.clear();
+        MainWindow window;
+        window.show();
+        QVERIFY(connectAndRead(window, simulated(Protocol::Din66019II)));
+        auto *dock = window.findChild<ScopeDock *>();
+        chooseSource(*dock, 0, kDcLinkVoltage);
+        QAction *record = action(*dock, "scopeRecordAction");
+        record->trigger(); // assigns the channel; the drive records it offline from then on
+        QTRY_VERIFY_WITH_TIMEOUT(dock->recording()->buffer.count() >= 10, kWaitMs);
+        record->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(!dock->isRecording(), kWaitMs);
+        QTest::qWait(800); // 64 records, one each 10 ms
+
+        QAction *offline = action(*dock, "scopeOfflineAction");
+        QVERIFY(offline->isEnabled());
+        offline->trigger();
+        QVERIFY(!offline->isEnabled()); // while it reads
+        QTRY_VERIFY_WITH_TIMEOUT(offline->isEnabled(), kWaitMs);
+        QVERIFY2(status(*dock).startsWith(QStringLiteral("64 ")), qPrintable(status(*dock)));
+        const ScopeRecording &recording = *dock->recording();
+        QCOMPARE(recording.buffer.count(), 64);
+        QCOMPARE(recording.channels[0].id, QStringLiteral("ru.18"));
+        QVERIFY(recording.source.contains(QStringLiteral("one a millisecond")));
+        QVERIFY(recording.buffer.samples().value(0, 0) > 400); // a DC link's volts
+    }
+
     void theSourcesAndLooksAreRemembered()
     {
         m_settings.clear();

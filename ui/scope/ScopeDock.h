@@ -91,7 +91,8 @@ private:
     ScopeTriggerSettings triggerSettings() const;
     void triggerChannelChanged();
     void readOfflineRecords();
-    void offlineRecordsRead(const ScopeOfflineRecords &records);
+    void readOfflineRecordsOf(const ScopeChannels &channels);
+    void offlineRecordsRead(const ScopeOfflineRecords &records, const ScopeChannels &channels);
     void replaceRecording(std::unique_ptr<ScopeRecording> recording);
 
     // ScopeDockFiles.cpp

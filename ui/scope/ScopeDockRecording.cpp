@@ -218,37 +218,36 @@ void ScopeDock::readOfflineRecords()
     const auto channels = std::make_shared<ScopeChannelsJob>(m_client->settings().protocol,
                                                              m_drive, ScopeAssignment{});
     m_client->run(channels).then(this, [this](const ScopeChannelsOutcome &assigned) {
-        if (!m_client)
-            return offlineRecordsRead({{}, 0, 0, tr("The connection went away.")});
-        auto *watcher = new QFutureWatcher<ScopeOfflineRecords>(this);
-        connect(watcher, &QFutureWatcherBase::progressRangeChanged, m_progress,
-                &QProgressBar::setRange);
-        connect(watcher, &QFutureWatcherBase::progressValueChanged, m_progress,
-                &QProgressBar::setValue);
-        connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, assigned] {
-            watcher->deleteLater();
-            ScopeOfflineRecords records;
-            if (watcher->future().resultCount() > 0)
-                records = watcher->future().result();
-            auto recording = std::make_unique<ScopeRecording>();
-            recording->channels = scopeChannels(m_drive, assigned.assignment);
-            recording->source = tr("offline records of %1, one a millisecond assumed")
-                                    .arg(m_client ? m_client->settings().displayName() : QString());
-            recording->started = QDateTime::currentDateTimeUtc();
-            for (const ScopeSample &sample : std::as_const(records.samples))
-                recording->buffer.append(sample);
-            if (!records.samples.isEmpty()) {
-                replaceRecording(std::move(recording));
-                m_chart->showAll();
-            }
-            offlineRecordsRead(records);
-        });
-        watcher->setFuture(m_client->run(std::make_shared<ScopeOfflineJob>()));
+        readOfflineRecordsOf(scopeChannels(m_drive, assigned.assignment));
     });
 }
 
-void ScopeDock::offlineRecordsRead(const ScopeOfflineRecords &records)
+void ScopeDock::readOfflineRecordsOf(const ScopeChannels &channels)
 {
+    if (!m_client)
+        return offlineRecordsRead({{}, 0, 0, tr("The connection went away.")}, channels);
+    auto *watcher = new QFutureWatcher<ScopeOfflineRecords>(this);
+    connect(watcher, &QFutureWatcherBase::progressRangeChanged, m_progress,
+            &QProgressBar::setRange);
+    connect(watcher, &QFutureWatcherBase::progressValueChanged, m_progress,
+            &QProgressBar::setValue);
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, channels] {
+        watcher->deleteLater();
+        offlineRecordsRead(watcher->future().resultCount() > 0 ? watcher->future().result()
+                                                               : ScopeOfflineRecords{},
+                           channels);
+    });
+    watcher->setFuture(m_client->run(std::make_shared<ScopeOfflineJob>()));
+}
+
+void ScopeDock::offlineRecordsRead(const ScopeOfflineRecords &records,
+                                   const ScopeChannels &channels)
+{
+    if (!records.samples.isEmpty()) {
+        replaceRecording(offlineRecording(
+            records, channels, m_client ? m_client->settings().displayName() : QString()));
+        m_chart->showAll();
+    }
     m_readingOffline = false;
     m_progress->hide();
     updateActions();
