@@ -51,6 +51,16 @@ ScopePollEnd record(ScopeRecorder &recorder, ScopeRecording &recording,
     return finished.first().at(0).value<ScopePollEnd>();
 }
 
+// HSP5 to the simulated drive behind a TCP port, as to a serial-to-Ethernet gateway.
+ConnectionSettings tcpTo(const SimulatorServer &server)
+{
+    ConnectionSettings settings;
+    settings.kind = ConnectionSettings::Kind::Tcp;
+    settings.host = QStringLiteral("127.0.0.1");
+    settings.port = server.tcpPort();
+    return settings;
+}
+
 bool timesAscend(const ScopeRecording &recording)
 {
     for (qsizetype i = 1; i < recording.buffer.count(); ++i) {
@@ -297,10 +307,7 @@ private slots:
         SimulatorServer server(Protocol::Hsp5, fast());
         QString error;
         QVERIFY2(server.listenTcp(QStringLiteral("127.0.0.1"), 0, &error), qPrintable(error));
-        ConnectionSettings settings;
-        settings.kind = ConnectionSettings::Kind::Tcp;
-        settings.host = QStringLiteral("127.0.0.1");
-        settings.port = server.tcpPort();
+        const ConnectionSettings settings = tcpTo(server);
         ClientOptions clientOptions;
         clientOptions.timeoutMs = 10000; // the lost link, not a timeout, must end it
         Session s(settings, clientOptions);
@@ -323,10 +330,7 @@ private slots:
         SimulatorServer server(Protocol::Hsp5, fast());
         QString error;
         QVERIFY2(server.listenTcp(QStringLiteral("127.0.0.1"), 0, &error), qPrintable(error));
-        ConnectionSettings settings;
-        settings.kind = ConnectionSettings::Kind::Tcp;
-        settings.host = QStringLiteral("127.0.0.1");
-        settings.port = server.tcpPort();
+        const ConnectionSettings settings = tcpTo(server);
         ClientOptions clientOptions;
         clientOptions.timeoutMs = 50;
         clientOptions.retries = 0;
