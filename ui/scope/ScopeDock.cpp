@@ -20,7 +20,6 @@
 #include <QSpinBox>
 #include <QSplitter>
 #include <QToolBar>
-#include <QToolButton>
 #include <QVBoxLayout>
 
 namespace DriveDesk {
@@ -107,7 +106,6 @@ void ScopeDock::setClient(DriveClient *client)
         delete m_recorder; // its job ends with the client it ran on
         m_recorder = nullptr;
         m_recordAction->setChecked(false);
-        emit recordingChanged(false);
     }
     m_client = client;
     m_hasDrive = false;
@@ -154,7 +152,6 @@ void ScopeDock::updateActions()
     m_offlineAction->setEnabled(connected && m_hasDrive && !busy);
     m_triggerAction->setEnabled(connected && m_hasDrive && !m_readingOffline);
     m_toFileAction->setEnabled(!busy);
-    m_fileButton->setEnabled(true);
     m_panel->setSourcesEditable(!busy);
     if (!busy && m_recording->buffer.count() == 0) {
         showStatus(connected && m_hasDrive

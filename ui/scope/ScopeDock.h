@@ -17,7 +17,6 @@ class QLabel;
 class QProgressBar;
 class QSpinBox;
 class QToolBar;
-class QToolButton;
 
 namespace DriveDesk {
 
@@ -64,16 +63,12 @@ public:
 
     void saveSettings() const;
     // The connection changed state: what can be done now.
-    void refreshActions() { updateActions(); }
-
-signals:
-    void recordingChanged(bool recording);
+    void updateActions();
 
 private:
     void buildToolBars();
     void buildTriggerBar(QToolBar *bar);
     void restoreSettings();
-    void updateActions();
     void showStatus(const QString &text, bool problem = false);
     // Before anything is recorded, the chart's legend and axes name the sources chosen.
     void previewChannels();
@@ -125,7 +120,6 @@ private:
     QAction *m_triggerAction = nullptr;
     QAction *m_toFileAction = nullptr;
     QAction *m_offlineAction = nullptr;
-    QToolButton *m_fileButton = nullptr;
     QDoubleSpinBox *m_rollSeconds = nullptr;
     QSpinBox *m_rateLimit = nullptr;
     QComboBox *m_triggerChannel = nullptr;

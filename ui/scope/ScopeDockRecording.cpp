@@ -87,7 +87,6 @@ void ScopeDock::channelsAssigned(const ScopeChannelsOutcome &outcome)
     m_recorder->start(m_recording.get(), options);
     showStatus(tr("Recording..."));
     updateActions();
-    emit recordingChanged(true);
 }
 
 void ScopeDock::stopRecording()
@@ -162,7 +161,6 @@ void ScopeDock::recordingFinished(const ScopePollEnd &end)
                        .arg(end.counts.failed));
     }
     updateActions();
-    emit recordingChanged(false);
 }
 
 void ScopeDock::armTrigger(bool on)

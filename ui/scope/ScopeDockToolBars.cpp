@@ -95,11 +95,11 @@ void ScopeDock::buildToolBars()
         ->setObjectName(QStringLiteral("scopeCsvVisibleAction"));
     fileMenu->addAction(tr("Export Chart as PNG..."), this, [this] { chooseImage(false); });
     fileMenu->addAction(tr("Export Chart as PDF..."), this, [this] { chooseImage(true); });
-    m_fileButton = new QToolButton(bar);
-    m_fileButton->setText(tr("Recording"));
-    m_fileButton->setMenu(fileMenu);
-    m_fileButton->setPopupMode(QToolButton::InstantPopup);
-    bar->addWidget(m_fileButton);
+    auto *fileButton = new QToolButton(bar);
+    fileButton->setText(tr("Recording"));
+    fileButton->setMenu(fileMenu);
+    fileButton->setPopupMode(QToolButton::InstantPopup);
+    bar->addWidget(fileButton);
 
     auto *triggerBar = new QToolBar(tr("Trigger"), m_chart->parentWidget());
     triggerBar->setToolButtonStyle(Qt::ToolButtonTextOnly);

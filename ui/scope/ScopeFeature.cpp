@@ -40,7 +40,7 @@ void ScopeFeature::attach(DriveSession *session)
 
 void ScopeFeature::updateActions()
 {
-    m_dock->refreshActions();
+    m_dock->updateActions();
 }
 
 void ScopeFeature::saveSettings()
