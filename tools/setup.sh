@@ -9,6 +9,7 @@ packages=(
     qt6-base-dev qt6-serialport-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
     qt6-qpa-plugins qt6-translations-l10n libqcustomplot-dev
     xvfb xauth socat
+    dpkg-dev lintian appstream desktop-file-utils file
 )
 
 missing=()

@@ -9,13 +9,22 @@
 #include <QTimer>
 
 #include <cstdio>
+#include <cstring>
 
 int main(int argc, char **argv)
 {
+    // Answered before the window system is reached: works on a machine with no display.
+    if (argc == 2 && std::strcmp(argv[1], "--version") == 0) {
+        std::fputs("drivedesk " DRIVEDESK_VERSION "\n", stdout);
+        return 0;
+    }
+
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("DriveDesk"));
     QApplication::setApplicationName(QStringLiteral("DriveDesk"));
     QApplication::setApplicationVersion(QStringLiteral(DRIVEDESK_VERSION));
+    // The installed desktop entry's name: Wayland compositors match the window to it by this id.
+    QGuiApplication::setDesktopFileName(QStringLiteral("io.github.drivedesk.DriveDesk"));
 
     const auto options = DriveDesk::StartupOptions::parse(QApplication::arguments());
     if (options.help) {

@@ -3,6 +3,7 @@
 #include "link/ConnectionOptions.h"
 
 #include <QCommandLineParser>
+#include <QCoreApplication>
 #include <QRegularExpression>
 
 namespace DriveDesk {
@@ -32,6 +33,7 @@ QString usage()
         "\n"
         "Commands:\n"
         "  info                         identification, groups and parameter counts\n"
+        "  --version            print the version and exit\n"
         "  scan [--format json|table|csv] [--values]\n"
         "                               every parameter with its metadata (and values);\n"
         "                               csv: id, name, unit and the value of each set\n"
@@ -201,13 +203,14 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     const QCommandLineOption csv(QStringLiteral("csv"), {}, QStringLiteral("file"));
     const QCommandLineOption offline(QStringLiteral("offline"));
     parser.addOptions({help, timeout, quiet, format, values, set, sets, raw, noCache, password,
-                       dryRun, force, channels, duration, rate, csv, offline});
+                       dryRun, force, channels, duration, rate, csv, offline, version});
     *helpText = usage();
 
     // A negative value ("write uF.07 -5") is not an option: shield such words from the parser.
     QStringList shielded = arguments;
     QStringList negatives;
     static const QRegularExpression negativeNumber(QStringLiteral("^-[0-9.,]"));
+    const QCommandLineOption version(QStringLiteral("version"));
     for (qsizetype i = 1; i < shielded.size(); ++i) {
         if (negativeNumber.match(shielded[i]).hasMatch()) {
             negatives << shielded[i];
@@ -230,6 +233,12 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     const QStringList words = parser.positionalArguments();
     const bool diff = words.value(0).compare(QLatin1String("diff"), Qt::CaseInsensitive) == 0;
     const bool diffWithDrive = words.mid(1).contains(QStringLiteral("drive"), Qt::CaseInsensitive);
+    if (parser.isSet(version)) { // printed as the help is
+        error->clear();
+        *helpText = QStringLiteral("%1 %2\n").arg(QCoreApplication::applicationName(),
+                                                  QCoreApplication::applicationVersion());
+        return std::nullopt;
+    }
     if (diff && diffWithDrive && !parser.isSet(QStringLiteral("connect"))) {
         *error = QStringLiteral("diff with the drive needs --connect");
         return std::nullopt;

@@ -4,3 +4,7 @@ drivedesk_add_test(NAME tst_clitransfer LABELS integration SOURCES cli/tst_clitr
 add_dependencies(tst_clitransfer drivedesk-cli drivedesk-sim)
 drivedesk_add_test(NAME tst_cliscope LABELS integration SOURCES cli/tst_cliscope.cpp LIBS Qt6::Core)
 add_dependencies(tst_cliscope drivedesk-cli drivedesk-sim)
+drivedesk_add_test(NAME tst_manpages LABELS integration SOURCES cli/tst_manpages.cpp LIBS Qt6::Core)
+add_dependencies(tst_manpages drivedesk drivedesk-cli drivedesk-sim)
+target_compile_definitions(tst_manpages PRIVATE DRIVEDESK_PACKAGING_DIR="${PROJECT_SOURCE_DIR}/packaging"
+    DRIVEDESK_VERSION="${PROJECT_VERSION}")
