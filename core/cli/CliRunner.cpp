@@ -12,7 +12,8 @@
 #include "session/ScopeRecorder.h"
 #include "scope/ScopeRecording.h"
 #include "session/PasswordLevelJob.h"
-#include "session/ValueChange.h"
+#include "session/EditText.h"
+#include "session/ValueEdits.h"
 
 #include <QFutureWatcher>
 
@@ -20,19 +21,6 @@
 #include <unistd.h>
 
 namespace DriveDesk {
-
-QString CliRunner::setListText(quint8 mask)
-{
-    if (mask == 0xFF)
-        return tr("all sets");
-    QStringList sets;
-    for (int s = 0; s < kParameterSets; ++s) {
-        if (mask & (1u << s))
-            sets << QString::number(s);
-    }
-    const int count = int(sets.size());
-    return tr("set(s) %1", nullptr, count).arg(sets.join(QLatin1Char(',')));
-}
 
 CliRunner::CliRunner(CliRequest request, QObject *parent)
     : QObject(parent)
@@ -127,17 +115,10 @@ void CliRunner::runLegacy()
     const int raw = m_request.value.toInt(&ok, 0);
     if (!ok || raw < -32768 || raw > 65535)
         return fail(2, tr("'%1' is not a raw 16-bit value (DIN66019 writes raw values)").arg(m_request.value));
-    m_client->writeValueStandard(*address, raw, 0).then(this, [this, id, address = *address](const Reply &r) {
-        if (!r.ok())
-            return fail(1, QStringLiteral("%1: %2").arg(id, r.message()));
-        m_client->readValueStandard(address, 0).then(this, [this, id](const Reply &back) {
-            if (!back.ok())
-                return fail(1, tr("%1: written, but reading it back failed: %2")
-                                   .arg(id, back.message()));
-            m_out << tr("%1 = %2 (raw)").arg(id).arg(back.data<ParameterValue>()->value) << '\n';
-            done();
-        });
-    });
+    // Known by its address alone: no sets, no scaling, written to the active set.
+    ParameterDescription parameter;
+    parameter.address = *address;
+    writeValue(id, parameter, false, raw);
 }
 
 void CliRunner::scan(ScanOptions options, std::function<void(const DriveDescription &)> next)
@@ -278,7 +259,8 @@ void CliRunner::runRead()
 void CliRunner::runWrite()
 {
     lookUpParameter([this](const GroupDescription &group, const ParameterDescription &parameter) {
-        const QString id = parameterId(group.id, parameter.number());
+        const QString id
+            = ParameterId::format(parameter.address, GroupAddress{group.id, group.address});
         if (ParameterProperties(parameter.properties1, parameter.properties2).isReadOnly())
             return fail(2, tr("%1 is read-only; nothing was written").arg(id));
         // The window's rule: a plaintext or a number in display units (or a raw integer with
@@ -289,54 +271,26 @@ void CliRunner::runWrite()
         const std::optional<qint32> raw = format.parse(m_request.value, &error);
         if (!raw)
             return fail(2, tr("%1: %2; nothing was written").arg(id, error));
-        ValueChange change;
-        change.address = parameter.address;
-        change.setProgrammable = parameter.isSetProgrammable();
-        change.steps = {WriteStep{m_request.setMask, *raw, false}};
-        const auto job = std::make_shared<WriteValueJob>(m_request.connection.protocol, change);
-        m_client->run(job).then(this, [this, id, parameter, raw = *raw](const WriteOutcome &outcome) {
-            report(id, parameter, raw, outcome);
-        });
+        writeValue(id, parameter, true, *raw);
     });
 }
 
-// A write counts only once the drive shows the value: the job read every written set back.
-void CliRunner::report(const QString &id, const ParameterDescription &parameter, qint32 raw,
-                       const WriteOutcome &outcome)
+// The window's edit path: a write counts only once the drive shows the value, and the outcome
+// is said in the window's words.
+void CliRunner::writeValue(const QString &id, const ParameterDescription &parameter,
+                           bool described, qint32 raw)
 {
-    if (!outcome.anyAcknowledged())
-        return fail(1, QStringLiteral("%1: %2").arg(id, outcome.error));
-    if (!outcome.readBackError.isEmpty()) {
-        return fail(1, tr("%1: written, but reading it back failed: %2")
-                           .arg(id, outcome.readBackError));
-    }
-    QStringList shown;
-    QStringList differing;
-    for (int set = 0; set < kParameterSets; ++set) {
-        const std::optional<qint32> held = outcome.readBack[std::size_t(set)];
-        if (!held)
-            continue;
-        shown << valueText(parameter, *held);
-        if (*held != raw) {
-            differing << (outcome.activeSetAcknowledged
-                              ? tr("the active set holds %1").arg(valueText(parameter, *held))
-                              : tr("set %1 holds %2").arg(set).arg(valueText(parameter, *held)));
-        }
-    }
-    shown.removeDuplicates();
-    const quint8 mask = outcome.acknowledgedMask;
-    m_out << QStringLiteral("%1  %2 = %3  (%4)\n")
-                 .arg(id, parameter.name, shown.join(QStringLiteral(" / ")),
-                      mask ? setListText(mask) : tr("active set"));
-    if (!outcome.error.isEmpty()) {
-        return fail(1, tr("%1: not written to %2: %3")
-                           .arg(id, setListText(outcome.refusedMask), outcome.error));
-    }
-    if (!differing.isEmpty()) {
-        return fail(1, tr("%1: written %2, but %3")
-                           .arg(id, valueText(parameter, raw), differing.join(QStringLiteral(", "))));
-    }
-    done();
+    auto *edits = new ValueEdits(m_client.get(), this);
+    edits->write(parameter, m_request.setMask, raw,
+                 [this, edits, id, parameter, described](const EditOutcome &outcome) {
+                     edits->deleteLater();
+                     const QString text
+                         = EditText(id, described ? &parameter : nullptr).outcome(outcome);
+                     if (!outcome.complete())
+                         return fail(1, text);
+                     m_out << text << '\n';
+                     done();
+                 });
 }
 
 QString CliRunner::valueText(const ParameterDescription &parameter, qint32 raw) const

@@ -15,7 +15,6 @@ class DownloadRun;
 class ScopeRecorder;
 struct ScopePollEnd;
 struct ScopeRecording;
-struct WriteOutcome;
 
 // Runs one drivedesk-cli command against a drive: connects, does the work asynchronously
 // through the client, prints the result, and ends with finished(exit code).
@@ -66,8 +65,10 @@ private:
     void noteScan(const DriveDescription &drive, const QString &cacheDirectory);
     // Finds the parameter named on the command line and reads its metadata, then calls next.
     void lookUpParameter(std::function<void(const GroupDescription &, const ParameterDescription &)> next);
-    void report(const QString &id, const ParameterDescription &parameter, qint32 raw,
-                const WriteOutcome &outcome);
+    // Writes through core's ValueEdits and reads back; `described`: the parameter's metadata
+    // is known (not DIN66019), so values are shown scaled.
+    void writeValue(const QString &id, const ParameterDescription &parameter, bool described,
+                    qint32 raw);
     // Scans with progress on stderr and hands the result to done.
     // Metadata of a cached kind of drive comes from the cache unless --no-cache.
     void scan(ScanOptions options, std::function<void(const DriveDescription &)> done);
@@ -75,8 +76,6 @@ private:
     void fail(int exitCode, const QString &message);
     void done();
     QString valueText(const ParameterDescription &parameter, qint32 raw) const;
-    // "set 2", "sets 0,2,3" or "all sets".
-    static QString setListText(quint8 mask);
 
     CliRequest m_request;
     std::unique_ptr<DriveClient> m_client;

@@ -41,6 +41,11 @@ int ParameterId::numberLimit(const GroupAddress &group, const QList<GroupAddress
     return end - group.address;
 }
 
+QString ParameterId::format(quint16 address, const GroupAddress &group)
+{
+    return format(address, QList<GroupAddress> { group });
+}
+
 QString ParameterId::format(quint16 address, const QList<GroupAddress> &groups)
 {
     const std::optional<GroupAddress> group = groupOf(address, groups);

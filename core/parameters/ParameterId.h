@@ -34,6 +34,8 @@ public:
     static std::optional<quint16> parse(const QString &text, const DriveDescription &drive,
                                         QString *error = nullptr);
 
+    // The id messages and the parameter table name a parameter by: "op.11", or "0203h".
+    static QString format(quint16 address, const GroupAddress &group);
     static QString format(quint16 address, const QList<GroupAddress> &groups);
     static QString format(quint16 address, const DriveDescription &drive);
     static QString hexAddress(quint16 address); // "0203h"

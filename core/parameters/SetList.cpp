@@ -22,6 +22,16 @@ QString SetList::text(quint8 mask)
     return tr("sets %1").arg(sets.join(QStringLiteral(", ")));
 }
 
+quint8 SetList::setsWritten(bool setProgrammable, quint8 mask)
+{
+    return setProgrammable || mask == 0 ? mask : quint8(0x01);
+}
+
+quint8 SetList::setsWritten(const ParameterDescription &parameter, quint8 mask)
+{
+    return setsWritten(parameter.isSetProgrammable(), mask);
+}
+
 QString SetList::standardSetText(quint8 set)
 {
     switch (set) {

@@ -1,6 +1,7 @@
 #include "ValueChange.h"
 
 #include "client/ValueRequests.h"
+#include "parameters/SetList.h"
 
 #include <memory>
 
@@ -93,12 +94,8 @@ void sendValueChange(RequestSink &sink, Protocol protocol, ValueChange change,
     auto run = std::make_shared<ChangeRun>();
     run->protocol = protocol;
     run->outcome.address = change.address;
-    if (!change.setProgrammable) {
-        for (WriteStep &step : change.steps) {
-            if (step.setMask != 0 || step.reset)
-                step.setMask = 0x01;
-        }
-    }
+    for (WriteStep &step : change.steps)
+        step.setMask = SetList::setsWritten(change.setProgrammable, step.setMask);
     run->change = std::move(change);
     run->done = std::move(done);
     sendNextStep(sink, run);

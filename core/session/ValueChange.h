@@ -27,8 +27,7 @@ struct WriteStep
 struct ValueChange
 {
     quint16 address = 0;
-    // Not set-programmable: the drive holds one value, written as set 0 (mask 01h) whatever the
-    // steps' masks say.
+    // The steps' masks go through SetList::setsWritten() before they are sent.
     bool setProgrammable = true;
     QList<WriteStep> steps;
 };
@@ -58,7 +57,7 @@ struct WriteOutcome
 void sendValueChange(RequestSink &sink, Protocol protocol, ValueChange change,
                      std::function<void(const WriteOutcome &)> done);
 
-// One change as a job of its own: the window's edits, undo and redo, the command line's write.
+// One change as a job of its own; ValueEdits runs the window's and the command line's edits so.
 class WriteValueJob : public RequestJob<WriteOutcome>
 {
 public:

@@ -26,6 +26,12 @@ QString shownValue(const ParameterModel &model, quint16 address, int set = 0)
     return model.valueIndex(address, set).data().toString();
 }
 
+// The model only asks for a write; the edit path (ValueEdits::pending) has the cells marked.
+void markPendingAsTheEditPathDoes(ParameterModel &model)
+{
+    QObject::connect(&model, &ParameterModel::valueEdited, &model, &ParameterModel::markPending);
+}
+
 } // namespace
 
 // The parameter tree: what it shows, value updates, edit states, password level, favourites.
@@ -236,6 +242,7 @@ private slots:
     {
         ParameterModel model;
         model.setDescription(drive());
+        markPendingAsTheEditPathDoes(model);
         QSignalSpy edited(&model, &ParameterModel::valueEdited);
         const QModelIndex cell = model.valueIndex(kMaxFrequency, 2);
         QVERIFY(model.setData(cell, 7000));
@@ -276,6 +283,7 @@ private slots:
     {
         ParameterModel model;
         model.setDescription(drive());
+        markPendingAsTheEditPathDoes(model);
         QVERIFY(model.requestWrite(kMaxFrequency, 0x06, 7000));
         QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
         model.markWritten(kMaxFrequency, 0x02);
@@ -313,6 +321,7 @@ private slots:
     {
         ParameterModel model;
         model.setDescription(drive());
+        markPendingAsTheEditPathDoes(model);
         QVERIFY(model.requestWrite(kRampTime, 0x01, 900));
         const QModelIndex cell = model.valueIndex(kRampTime, 0);
         const QPalette original = QGuiApplication::palette();

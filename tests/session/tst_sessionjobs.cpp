@@ -1,9 +1,11 @@
 #include "../client/ClientTestSupport.h"
 
 #include "session/CopySet.h"
+#include "session/EditText.h"
 #include "session/PasswordLevelJob.h"
 #include "session/Polling.h"
 #include "session/ValueChange.h"
+#include "session/ValueEdits.h"
 #include "session/ValueReads.h"
 
 using namespace DriveDesk;
@@ -13,6 +15,17 @@ namespace {
 
 constexpr quint16 kActualFrequency = 0x0203; // ru.03, read-only
 constexpr quint16 kNoSuchParameter = 0x7F7F;
+constexpr quint16 kDemoPeriod = 0x0305; // op.05, one value
+
+ParameterDescription described(quint16 address, bool setProgrammable)
+{
+    ParameterDescription parameter;
+    parameter.address = address;
+    parameter.maximum = 10000;
+    parameter.properties1 = setProgrammable ? 1u << 11 : 0u;
+    parameter.scaling = DisplayScalingData{address, 1, 1, 0, 0}; // raw, no unit
+    return parameter;
+}
 
 ValueRead oneValue(quint16 address)
 {
@@ -135,6 +148,60 @@ private slots:
         QVERIFY(!refused.constFirst().connectionFailed);
         QVERIFY2(refused.constFirst().error.contains(QStringLiteral("write protected")),
                  qPrintable(refused.constFirst().error));
+    }
+
+    // The one edit path of the window and the command line: queued per parameter, a later edit
+    // supersedes the earlier one's cells, the outcome said in words.
+    void editsOfOneParameterQueueAndTheLaterOneSupersedes()
+    {
+        Session session(simulated(Protocol::Hsp5, fast()));
+        QVERIFY(session.connected());
+        ValueEdits edits(session.client.get());
+        QSignalSpy pending(&edits, &ValueEdits::pending);
+        QSignalSpy edited(&edits, &ValueEdits::edited);
+        QList<EditOutcome> outcomes;
+        const ParameterDescription speed = described(kMaxSpeedForward, true);
+        edits.write(speed, 0x02, 1000, [&](const EditOutcome &outcome) { outcomes << outcome; });
+        edits.write(speed, 0x02, 2000, [&](const EditOutcome &outcome) { outcomes << outcome; });
+        QCOMPARE(pending.size(), 2); // at once, each edit once
+        QCOMPARE(pending.at(1).at(2).toInt(), 2000);
+        QCOMPARE(edits.runningCount(), 2);
+        QTRY_COMPARE_WITH_TIMEOUT(outcomes.size(), 2, kWaitMs);
+        QCOMPARE(edited.size(), 2);
+        QCOMPARE(edits.runningCount(), 0);
+        QVERIFY(outcomes.at(0).superseded);
+        QVERIFY(!outcomes.at(1).superseded);
+        QVERIFY(outcomes.at(1).complete());
+        QCOMPARE(outcomes.at(1).readBack[1], 2000);
+        QCOMPARE(EditText(QStringLiteral("op.11"), &speed).outcome(outcomes.at(1)),
+                 QStringLiteral("op.11 = 2000 written (set 1)"));
+    }
+
+    void aParameterWithoutSetsIsWrittenAsSetZeroAndARefusalIsSaid()
+    {
+        Session session(simulated(Protocol::Hsp5, fast()));
+        QVERIFY(session.connected());
+        ValueEdits edits(session.client.get());
+        QSignalSpy pending(&edits, &ValueEdits::pending);
+        std::optional<EditOutcome> outcome;
+        const ParameterDescription period = described(kDemoPeriod, false);
+        edits.write(period, 0xFF, 300, [&](const EditOutcome &done) { outcome = done; });
+        QCOMPARE(pending.constFirst().at(1).value<quint8>(), quint8(0x01));
+        QTRY_VERIFY_WITH_TIMEOUT(outcome, kWaitMs);
+        QCOMPARE(outcome->acknowledgedMask, quint8(0x01));
+        QCOMPARE(outcome->readBack[0], 300);
+        QCOMPARE(EditText(QStringLiteral("op.05"), &period).outcome(*outcome),
+                 QStringLiteral("op.05 = 300 written"));
+
+        outcome.reset();
+        const ParameterDescription actual = described(kActualFrequency, false);
+        edits.write(actual, 0x01, 10, [&](const EditOutcome &done) { outcome = done; });
+        QTRY_VERIFY_WITH_TIMEOUT(outcome, kWaitMs);
+        QVERIFY(!outcome->anyAcknowledged());
+        const QString said = EditText(QStringLiteral("ru.03"), &actual).outcome(*outcome);
+        QVERIFY2(said.startsWith(QStringLiteral("ru.03 = 10 not written: "))
+                     && said.contains(QStringLiteral("write protected")),
+                 qPrintable(said));
     }
 
     void thePasswordLevelIsReadAndAPasswordChangesIt()

@@ -3,9 +3,7 @@
 #include "DocumentValueCommand.h"
 
 #include "model/ParameterModel.h"
-#include "parameters/ParameterFormat.h"
 #include "parameters/ParameterId.h"
-#include "parameters/PasswordLevel.h"
 #include "parameters/SetList.h"
 #include "session/CopySet.h"
 
@@ -32,14 +30,13 @@ QUndoCommand *DocumentEditor::makeChange(quint16 address, quint8 *setMask, qint3
         *refusal = tr("the file has no parameter %1").arg(ParameterId::hexAddress(address));
         return nullptr;
     }
-    if (!parameter->isSetProgrammable())
-        *setMask = 0x01;
+    *setMask = SetList::setsWritten(*parameter, *setMask);
     if (*setMask == 0) {
         *refusal = tr("no set chosen");
         return nullptr;
     }
     if (!m_model->isEditable(address)) {
-        *refusal = tr("%1 is read-only").arg(idOf(address));
+        *refusal = tr("%1 is read-only").arg(m_model->editText(address).id());
         return nullptr;
     }
     if (const QString problem = ParameterFormat(*parameter).limitsProblem(raw);
@@ -66,26 +63,21 @@ QUndoCommand *DocumentEditor::makeChange(quint16 address, quint8 *setMask, qint3
 
 void DocumentEditor::write(quint16 address, quint8 setMask, qint32 raw)
 {
-    const quint8 asked = setMask;
+    const EditText text = m_model->editText(address);
     QString refusal;
-    QUndoCommand *command
-        = makeChange(address, &setMask, raw,
-                     tr("Change %1 to %2%3")
-                         .arg(idOf(address), valueText(address, raw), inSets(address, setMask)),
-                     &refusal);
+    QUndoCommand *command = makeChange(
+        address, &setMask, raw,
+        tr("Change %1 to %2%3").arg(text.id(), text.value(raw), text.inSets(setMask)), &refusal);
     if (!command) {
-        // The table marked the cells pending: they show the file's value again.
-        m_model->clearEditState(address, asked);
         if (!refusal.isEmpty()) {
             emit message(tr("%1 = %2 not changed%3: %4")
-                             .arg(idOf(address), valueText(address, raw), inSets(address, setMask),
-                                  refusal));
+                             .arg(text.id(), text.value(raw), text.inSets(setMask), refusal));
         }
         return;
     }
     m_undoStack->push(command);
     emit message(tr("%1 = %2 in the file%3; save to keep it")
-                     .arg(idOf(address), valueText(address, raw), inSets(address, setMask)));
+                     .arg(text.id(), text.value(raw), text.inSets(setMask)));
 }
 
 void DocumentEditor::resetToDefault(quint16 address, quint8 setMask)
@@ -96,20 +88,19 @@ void DocumentEditor::resetToDefault(quint16 address, quint8 setMask)
             tr("Not reset: the file has no parameter %1").arg(ParameterId::hexAddress(address)));
         return;
     }
+    const EditText text = m_model->editText(address);
     QString refusal;
     QUndoCommand *command = makeChange(
         address, &setMask, parameter->defaultValue,
-        tr("Reset %1 to its default%2").arg(idOf(address), inSets(address, setMask)), &refusal);
+        tr("Reset %1 to its default%2").arg(text.id(), text.inSets(setMask)), &refusal);
     if (!command) {
-        emit message(
-            refusal.isEmpty()
-                ? tr("%1 holds its default already%2").arg(idOf(address), inSets(address, setMask))
-                : tr("%1 not reset%2: %3").arg(idOf(address), inSets(address, setMask), refusal));
+        emit message(refusal.isEmpty()
+                         ? tr("%1 holds its default already%2").arg(text.id(), text.inSets(setMask))
+                         : tr("%1 not reset%2: %3").arg(text.id(), text.inSets(setMask), refusal));
         return;
     }
     m_undoStack->push(command);
-    emit message(
-        tr("%1 reset to its default in the file%2").arg(idOf(address), inSets(address, setMask)));
+    emit message(tr("%1 reset to its default in the file%2").arg(text.id(), text.inSets(setMask)));
 }
 
 void DocumentEditor::copySet(int fromSet, int toSet)
@@ -144,31 +135,6 @@ void DocumentEditor::copySet(int fromSet, int toSet)
     if (!notes.isEmpty())
         result += tr("; left as they are: %1").arg(notes.join(QStringLiteral(", ")));
     emit message(result);
-}
-
-QString DocumentEditor::idOf(quint16 address) const
-{
-    const QString id = m_model->indexOf(address).data().toString();
-    return id.isEmpty() ? ParameterId::hexAddress(address) : id;
-}
-
-QString DocumentEditor::valueText(quint16 address, qint32 raw) const
-{
-    // A password is never repeated in the status bar or the undo history.
-    if (address == kPasswordParameterAddress)
-        return QStringLiteral("****");
-    const ParameterDescription *parameter = m_model->parameter(address);
-    return parameter ? ParameterFormat(*parameter).text(raw) : QString::number(raw);
-}
-
-QString DocumentEditor::inSets(quint16 address, quint8 setMask) const
-{
-    const ParameterDescription *parameter = m_model->parameter(address);
-    if (parameter && !parameter->isSetProgrammable())
-        return {};
-    // A note in parentheses after the parameter or the value: it takes no part in the
-    // sentence's grammar, so every language can append it where the sentence names them.
-    return QStringLiteral(" (%1)").arg(SetList::text(setMask));
 }
 
 } // namespace DriveDesk

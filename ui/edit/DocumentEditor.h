@@ -24,7 +24,7 @@ public:
 
     // Connected to ParameterModel::valueEdited by the editor itself: the value goes into the
     // sets of the mask, or is refused with the reason (message()) and the cells stay as they
-    // were.
+    // were. Messages name the change as the drive's edits do (EditText).
     void write(quint16 address, quint8 setMask, qint32 raw);
     void resetToDefault(quint16 address, quint8 setMask) override;
     void copySet(int fromSet, int toSet) override;
@@ -39,11 +39,6 @@ private:
     // a parameter without sets).
     QUndoCommand *makeChange(quint16 address, quint8 *setMask, qint32 raw, const QString &text,
                              QString *refusal, QUndoCommand *parent = nullptr) const;
-
-    QString idOf(quint16 address) const;
-    QString valueText(quint16 address, qint32 raw) const;
-    // " (set 2)", " (sets 0, 3)", " (all sets)", or nothing for a parameter without sets.
-    QString inSets(quint16 address, quint8 setMask) const;
 
     ParameterModel *m_model = nullptr;
     QUndoStack *m_undoStack = nullptr;

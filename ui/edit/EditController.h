@@ -2,10 +2,10 @@
 
 #include "ParameterEditing.h"
 #include "ValueReadBatch.h"
-#include "ValueWriter.h"
 #include "WriteValueCommand.h"
 
 #include "session/CopySet.h"
+#include "session/ValueEdits.h"
 
 #include <QFutureWatcher>
 #include <QHash>
@@ -21,9 +21,10 @@ namespace DriveDesk {
 class DriveClient;
 class ParameterModel;
 
-// Carries the user's edits to the drive: writes and resets to default as undoable commands,
-// each read back so that the model shows what the drive holds (written, or failed with the
-// drive's reason); copying one set to another; re-reading every value. A value that only came
+// Carries the user's edits to the drive through core's ValueEdits: writes and resets to
+// default as undoable commands, each read back so that the model shows what the drive holds
+// (written, or failed with the drive's reason); copying one set to another; re-reading every
+// value. A value that only came
 // from the drive is never written back to it. Lives in the GUI thread; the client, the model and
 // the undo stack outlive it.
 class EditController : public QObject, public ParameterEditing
@@ -37,8 +38,8 @@ public:
     ~EditController() override;
 
     // Connected to ParameterModel::valueEdited by the controller itself. The cells show pending
-    // at once; the command goes on the undo stack once the drive has acknowledged the write,
-    // so a refused write never stands there as if it had happened.
+    // at once (ValueEdits::pending); the command goes on the undo stack once the drive has
+    // acknowledged the write, so a refused write never stands there as if it had happened.
     void write(quint16 address, quint8 setMask, qint32 raw);
     // Service 32 write, then read back; undoable (the earlier values are written back).
     void resetToDefault(quint16 address, quint8 setMask) override;
@@ -87,8 +88,10 @@ private:
     void perform(WriteValueCommand *command, Direction direction);
     void performed(WriteValueCommand *command, const std::weak_ptr<const int> &alive,
                    Direction direction, const EditOutcome &outcome);
-    void changeDone(WriteValueCommand::Kind kind, quint8 setMask, qint32 raw,
-                    const EditOutcome &outcome);
+    void changeDone(const EditOutcome &outcome);
+    // The undo history's name of a change: "Write op.11 = 2500 1/min (set 2)".
+    QString commandText(WriteValueCommand::Kind kind, quint16 address, quint8 setMask,
+                        qint32 raw) const;
 
     void copyTake(int begin, int end);
     void copyFinished();
@@ -97,19 +100,12 @@ private:
     void startQueuedReads();
     bool refuseWhileJobRuns();
 
-    // "op.11", the way the table names it.
-    QString idOf(quint16 address) const;
-    QString valueText(quint16 address, qint32 raw) const;
-    // " (set 2)", " (sets 0, 3)", " (all sets)", or nothing for a parameter without sets.
-    QString inSets(quint16 address, quint8 setMask) const;
-    // The cells that read back something other than what was written, said in words.
-    QString readBackDifferences(quint16 address, quint8 setMask) const;
     void updateBusy();
 
     DriveClient *m_client = nullptr;
     ParameterModel *m_model = nullptr;
     QUndoStack *m_undoStack = nullptr;
-    ValueWriter *m_writer = nullptr; // child
+    ValueEdits *m_edits = nullptr; // child
     QPointer<ValueReadBatch> m_refresh; // child while a refresh runs
     std::unique_ptr<CopyJob> m_copy;
     QHash<quint32, QString> m_readFailures; // address << 8 | set

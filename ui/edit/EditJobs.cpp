@@ -64,19 +64,18 @@ void EditController::copyTake(int begin, int end)
     for (int index = begin; index < end; ++index) {
         const WriteOutcome outcome = future.resultAt(index);
         const CopySetPlan::Item &item = copy.plan.items.at(index);
-        showOutcome(*m_model, outcome);
+        m_model->showOutcome(outcome);
         if (outcome.acknowledgedMask) {
             new WriteValueCommand(this, WriteValueCommand::Kind::Write, item.address,
                                   outcome.acknowledgedMask, item.raw, copy.before.at(index),
-                                  tr("Write %1 = %2%3")
-                                      .arg(idOf(item.address), valueText(item.address, item.raw),
-                                           inSets(item.address, outcome.acknowledgedMask)),
+                                  commandText(WriteValueCommand::Kind::Write, item.address,
+                                              outcome.acknowledgedMask, item.raw),
                                   copy.macro.get());
             ++copy.written;
         } else if (outcome.connectionFailed) {
             copy.stopReason = outcome.error;
         } else {
-            copy.refusals << tr("%1: %2").arg(idOf(item.address), outcome.error);
+            copy.refusals << tr("%1: %2").arg(m_model->editText(item.address).id(), outcome.error);
         }
     }
 }
@@ -178,10 +177,10 @@ void EditController::refreshFinished()
     parts << tr("%n value(s) read", nullptr, batch->done() - int(batch->failures().size()));
     if (!batch->failures().isEmpty()) {
         const ValueReading &first = batch->failures().constFirst();
+        const EditText text = m_model->editText(first.read.address);
         parts << tr("%n could not be read (first: %1%2: %3)", nullptr,
                     int(batch->failures().size()))
-                     .arg(idOf(first.read.address),
-                          inSets(first.read.address, quint8(1u << first.read.set)), first.reason);
+                     .arg(text.id(), text.inSets(quint8(1u << first.read.set)), first.reason);
     }
     if (!batch->stopReason().isEmpty())
         parts << tr("stopped: %1").arg(batch->stopReason());

@@ -131,7 +131,7 @@ void EditingFeature::resetToDefault()
         if (model->isEditable(address))
             editing->resetToDefault(address, setMask);
         else
-            skipped << model->indexOf(address).data(Qt::DisplayRole).toString();
+            skipped << model->editText(address).id();
     }
     if (skipped.isEmpty())
         return;
@@ -164,7 +164,7 @@ void EditingFeature::writeToSets()
     const ParameterDescription *parameter = model->parameter(address);
     if (!parameter)
         return;
-    const QString id = model->indexOf(address).data(Qt::DisplayRole).toString();
+    const QString id = model->editText(address).id();
     if (!parameter->isSetProgrammable()) {
         frame().showMessage(
             tr("%1 is not set-programmable: it holds one value for every set.").arg(id));

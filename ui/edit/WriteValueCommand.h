@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ValueWriter.h"
+#include "session/ValueChange.h"
 
 #include <QUndoCommand>
 

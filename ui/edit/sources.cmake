@@ -13,6 +13,5 @@ target_sources(drivedesk_ui PRIVATE
     edit/PollingFeature.cpp edit/PollingFeature.h
     edit/SetsDialog.cpp edit/SetsDialog.h
     edit/ValueReadBatch.cpp edit/ValueReadBatch.h
-    edit/ValueWriter.cpp edit/ValueWriter.h
     edit/WriteValueCommand.cpp edit/WriteValueCommand.h
 )

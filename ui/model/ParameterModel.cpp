@@ -2,6 +2,8 @@
 
 #include "parameters/ParameterAccess.h"
 #include "parameters/ParameterId.h"
+#include "parameters/SetList.h"
+#include "session/ValueChange.h"
 
 #include <QDateTime>
 
@@ -12,15 +14,6 @@ namespace DriveDesk {
 namespace {
 
 constexpr quintptr kGroupId = 0; // internal id of group rows; parameters carry group row + 1
-
-QString idFor(const GroupDescription &group, quint16 address)
-{
-    // Numbers count from the group's first address: half-page group Fb at 0280h has Fb.09 = 0289h.
-    if ((address & 0xFF00) == (group.address & 0xFF00) && address >= group.address)
-        return parameterId(group.id, quint8(address - group.address));
-    return ParameterId::hexAddress(address);
-}
-
 } // namespace
 
 ParameterModel::ParameterModel(QObject *parent)
@@ -45,7 +38,9 @@ void ParameterModel::setDescription(const DriveDescription &drive)
         const int groupRow = int(m_groups.size());
         for (const ParameterDescription &parameter : source.parameters) {
             m_locations.insert(parameter.address, { groupRow, int(group.rows.size()) });
-            group.rows.emplace_back(parameter, idFor(source, parameter.address));
+            group.rows.emplace_back(parameter,
+                                    ParameterId::format(parameter.address,
+                                                        GroupAddress{ source.id, source.address }));
             group.rows.back().searchText(m_raw); // built now, so that a keystroke only compares
             const auto &values = parameter.values;
             if (std::any_of(values.begin(), values.end(), [](const auto &v) { return v.has_value(); }))
@@ -223,13 +218,37 @@ bool ParameterModel::requestWrite(quint16 address, quint8 setMask, qint32 raw, Q
         return fail(refusal);
     if (setMask == 0)
         return fail(tr("%1: no set chosen").arg(row->id()));
-    if (!row->description().isSetProgrammable())
-        setMask = 0x01;
     if (!row->format().isWithinLimits(raw))
         return fail(tr("%1: %2").arg(row->id(), row->format().limitsProblem(raw)));
-    markPending(address, setMask, raw);
-    emit valueEdited(address, setMask, raw);
+    emit valueEdited(address, SetList::setsWritten(row->description(), setMask), raw);
     return true;
+}
+
+EditText ParameterModel::editText(quint16 address) const
+{
+    const ParameterRow *row = rowAt(address);
+    return row ? EditText(row->id(), &row->description())
+               : EditText(ParameterId::hexAddress(address), nullptr);
+}
+
+void ParameterModel::showOutcome(const WriteOutcome &outcome, bool superseded)
+{
+    const quint16 address = outcome.address;
+    if (outcome.refusedMask && !superseded)
+        markFailed(address, outcome.refusedMask, outcome.error);
+    for (int set = 0; set < kParameterSets; ++set) {
+        if (!(outcome.acknowledgedMask & (1u << set)))
+            continue;
+        if (const std::optional<qint32> value = outcome.readBack[std::size_t(set)]) {
+            if (superseded)
+                setValue(address, set, *value);
+            else
+                confirmReadBack(address, set, *value);
+        } else if (!superseded) {
+            // The drive acknowledged the write; only the confirmation is missing.
+            markWritten(address, quint8(1u << set));
+        }
+    }
 }
 
 template<typename Change>

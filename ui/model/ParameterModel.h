@@ -5,6 +5,7 @@
 
 #include "parameters/DriveDescription.h"
 #include "parameters/PasswordLevel.h"
+#include "session/EditText.h"
 
 #include <QAbstractItemModel>
 #include <QHash>
@@ -13,6 +14,8 @@
 #include <vector>
 
 namespace DriveDesk {
+
+struct WriteOutcome;
 
 // The parameters of one drive as a tree: groups in the drive's order, their parameters below.
 // Values are held raw and shown as the drive shows them (scaled with unit, or the plaintext).
@@ -83,10 +86,17 @@ public:
     const ParameterDescription *parameter(quint16 address) const;
 
     // Asks for a write: checks that the user may edit the parameter and that the value lies
-    // within its limits, marks the cells pending and emits valueEdited(). Parameters that are
-    // not set-programmable are written as set 0 (mask 01h). The reason when refused.
+    // within its limits, and emits valueEdited() with the sets SetList::setsWritten() gives.
+    // The reason when refused. The cells show pending once the edit is under way (markPending).
     bool requestWrite(quint16 address, quint8 setMask, qint32 raw, QString *error = nullptr);
-    // Edit states of the cells of the sets in the mask; the edit controller reports back.
+    // How messages name the parameter and its values (its id as the table shows it).
+    EditText editText(quint16 address) const;
+    // An edit's outcome in the cells: failed with the drive's reason, or the value read back
+    // (written when it is what was asked for). A superseded edit (a later one of the same
+    // parameter will write and read these cells again) only stores the values read, so the
+    // later one's cells never show a failure that is not theirs.
+    void showOutcome(const WriteOutcome &outcome, bool superseded = false);
+    // Edit states of the cells of the sets in the mask, as the edit path reports them.
     void markPending(quint16 address, quint8 setMask, qint32 raw);
     void markWritten(quint16 address, quint8 setMask);
     void markFailed(quint16 address, quint8 setMask, const QString &reason);
@@ -138,7 +148,7 @@ public:
                         int role = Qt::DisplayRole) const override;
 
 signals:
-    // The user changed a value: write it (the model has marked the cells pending).
+    // The user changed a value: write it.
     void valueEdited(quint16 address, quint8 setMask, qint32 raw);
     void favouritesChanged();
     void passwordLevelChanged(DriveDesk::PasswordLevel level);

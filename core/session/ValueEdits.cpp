@@ -1,0 +1,131 @@
+#include "ValueEdits.h"
+
+#include "client/DriveClient.h"
+#include "parameters/ParameterAccess.h"
+#include "parameters/SetList.h"
+
+#include <QFutureWatcher>
+
+namespace DriveDesk {
+
+quint8 EditOutcome::askedMask() const
+{
+    quint8 mask = 0;
+    for (const WriteStep &step : steps)
+        mask |= step.setMask;
+    return mask;
+}
+
+std::optional<qint32> EditOutcome::asked(int set) const
+{
+    std::optional<qint32> raw;
+    for (const WriteStep &step : steps) {
+        if ((step.setMask & (1u << set)) || (step.setMask == 0 && set == 0))
+            raw = step.raw;
+    }
+    return raw;
+}
+
+ValueEdits::ValueEdits(DriveClient *client, QObject *parent)
+    : QObject(parent)
+    , m_client(client)
+{ }
+
+ValueEdits::~ValueEdits() = default;
+
+void ValueEdits::write(const ParameterDescription &parameter, quint8 setMask, qint32 raw, Done done)
+{
+    apply(parameter, { WriteStep { setMask, raw, false } }, false, std::move(done));
+}
+
+void ValueEdits::resetToDefault(const ParameterDescription &parameter, quint8 setMask, Done done)
+{
+    apply(parameter, { WriteStep { setMask, 0, true } }, true, std::move(done));
+}
+
+void ValueEdits::apply(const ParameterDescription &parameter, QList<WriteStep> steps, bool reset,
+                       Done done)
+{
+    auto edit = std::make_shared<Edit>();
+    for (WriteStep &step : steps) {
+        step.setMask = SetList::setsWritten(parameter, step.setMask);
+        if (step.reset)
+            step.raw = parameter.defaultValue;
+    }
+    edit->change.address = parameter.address;
+    edit->change.setProgrammable = parameter.isSetProgrammable();
+    edit->change.steps = steps;
+    edit->judgeReadBack = !readBackMayDiffer(parameter);
+    edit->done = std::move(done);
+    edit->outcome.address = parameter.address;
+    edit->outcome.reset = reset;
+    edit->outcome.steps = std::move(steps);
+    for (const WriteStep &step : std::as_const(edit->outcome.steps))
+        emit pending(parameter.address, step.setMask, step.raw);
+    QList<EditPtr> &queue = m_queues[parameter.address];
+    queue << edit;
+    setRunning(m_running + 1);
+    if (queue.size() == 1)
+        begin(edit);
+}
+
+void ValueEdits::begin(const EditPtr &edit)
+{
+    // Taken now, not when queued: the edit before it may have changed these values.
+    if (m_held) {
+        for (int set = 0; set < kParameterSets; ++set)
+            edit->outcome.before[std::size_t(set)] = m_held(edit->change.address, set);
+    }
+    auto *watcher = new QFutureWatcher<WriteOutcome>(this);
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, edit] {
+        const QFuture<WriteOutcome> future = watcher->future();
+        watcher->deleteLater();
+        if (future.resultCount() > 0)
+            return finish(edit, future.result());
+        // The client went away before the job ran: nothing was sent.
+        WriteOutcome outcome;
+        outcome.address = edit->change.address;
+        outcome.error = tr("the connection to the drive was closed");
+        outcome.connectionFailed = true;
+        for (const WriteStep &step : std::as_const(edit->change.steps))
+            outcome.refusedMask |= step.setMask;
+        finish(edit, outcome);
+    });
+    watcher->setFuture(m_client->run(
+        std::make_shared<WriteValueJob>(m_client->settings().protocol, edit->change)));
+}
+
+void ValueEdits::finish(const EditPtr &edit, const WriteOutcome &written)
+{
+    EditOutcome &outcome = edit->outcome;
+    static_cast<WriteOutcome &>(outcome) = written;
+    if (edit->judgeReadBack) {
+        for (int set = 0; set < kParameterSets; ++set) {
+            const std::optional<qint32> held = outcome.readBack[std::size_t(set)];
+            if (held && held != outcome.asked(set))
+                outcome.differingMask |= quint8(1u << set);
+        }
+    }
+    QList<EditPtr> &queue = m_queues[outcome.address];
+    outcome.superseded = queue.size() > 1;
+    queue.removeOne(edit);
+    const EditPtr next = queue.value(0);
+    if (queue.isEmpty())
+        m_queues.remove(outcome.address);
+    setRunning(m_running - 1);
+    emit edited(outcome);
+    if (edit->done)
+        edit->done(outcome);
+    if (next)
+        begin(next);
+}
+
+void ValueEdits::setRunning(int count)
+{
+    if (count == m_running)
+        return;
+    m_running = count;
+    emit runningCountChanged(count);
+}
+
+} // namespace DriveDesk
