@@ -1,10 +1,10 @@
 // drivedesk-cli upload and download: a drive's parameter list to a file and back.
 #include "CliRunner.h"
 
-#include "parameters/ParameterDocument.h"
 #include "parameters/ParameterList.h"
 #include "session/DownloadRun.h"
 #include "session/ScopeRecorder.h"
+#include "session/UploadRun.h"
 
 #include <unistd.h>
 
@@ -34,35 +34,38 @@ void CliRunner::progressLine(int percent, const QString &text)
     m_err << Qt::flush;
 }
 
+// The window's File > Save Drive to File runs the same UploadRun: the drive read afresh, a
+// backup only when the read is whole.
 void CliRunner::runUpload()
 {
-    ScanOptions options;
-    options.values = true;
-    options.parameterList = true;
-    scan(options, [this](const DriveDescription &drive) {
-        // A backup with holes the user does not know of is worse than none.
-        if (!drive.incompleteReason.isEmpty()) {
-            return fail(1, tr("the drive could not be read to the end (%1); no file was written")
-                               .arg(drive.incompleteReason));
-        }
+    auto *upload = new UploadRun(m_client.get(), this);
+    connect(upload, &UploadRun::progress, this, [this](int value, int maximum, const QString &what) {
+        progressLine(value * 100 / std::max(1, maximum), what);
+    });
+    connect(upload, &UploadRun::finished, this, [this, upload](const UploadResult &result) {
+        progressLine(-1, {});
+        upload->deleteLater();
+        noteScan(result.document, {});
         const QString &path = m_request.files.constFirst();
+        if (!result.isComplete()) {
+            // A backup with holes the user does not know of is worse than none.
+            for (const QString &line : result.details())
+                m_err << tr("not read: %1").arg(line) << '\n';
+            return fail(1, result.summary());
+        }
         QString error;
-        if (!ParameterDocument::save(path, drive, &error))
+        if (!saveUpload(path, result, &error))
             return fail(1, error);
         int parameters = 0;
         int values = 0;
         int writeOnly = 0;
-        QStringList unread;
-        for (const GroupDescription &group : drive.groups) {
+        for (const GroupDescription &group : result.document.groups) {
             for (const ParameterDescription &parameter : group.parameters) {
                 ++parameters;
                 if (!ParameterList::isReadByUpload(parameter))
                     ++writeOnly;
                 for (const std::optional<qint32> &value : parameter.values)
                     values += value ? 1 : 0;
-                if (!parameter.error.isEmpty())
-                    unread << QStringLiteral("%1 (%2)").arg(
-                        parameterId(group.id, parameter.number()), parameter.error);
             }
         }
         m_out << tr("%1: %n parameter(s)", nullptr, parameters).arg(path) << QStringLiteral(", ")
@@ -70,13 +73,11 @@ void CliRunner::runUpload()
         if (writeOnly)
             m_out << QStringLiteral(", ") << tr("%n write-only with the default", nullptr, writeOnly);
         m_out << '\n';
-        if (!unread.isEmpty()) {
-            return fail(1, tr("%n parameter(s) could not be read and have no value in the file: %1",
-                              nullptr, int(unread.size()))
-                               .arg(unread.join(QStringLiteral(", "))));
-        }
         done();
     });
+    ScanOptions reading;
+    reading.metadata = m_request.useCache ? MetadataSource::Cache : MetadataSource::RefreshCache;
+    upload->start(reading);
 }
 
 // The window's download runs the same DownloadRun: read the drive, plan, write, report.

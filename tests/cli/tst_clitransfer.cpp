@@ -183,6 +183,31 @@ private slots:
         QVERIFY(readSet(QStringLiteral("op.11"), 6).contains(QStringLiteral("3000 1/min")));
     }
 
+    // A backup with holes is no backup: values the drive refuses (its lowest password level)
+    // are named, and no file is written, not even over an older one.
+    void anIncompleteReadWritesNoFile()
+    {
+        const QString path = m_dir.filePath(QStringLiteral("part.json"));
+        Run run = drive({QStringLiteral("--password"), QStringLiteral("100"),
+                         QStringLiteral("upload"), path});
+        QCOMPARE(run.exitCode, 1);
+        QVERIFY2(run.err.contains(QRegularExpression(
+                     QStringLiteral("not read: op.11 Maximum speed forward: .*password"))),
+                 qPrintable(run.err));
+        QVERIFY2(run.err.contains(QStringLiteral("could not be read; nothing was saved")),
+                 qPrintable(run.err));
+        QVERIFY(!QFile::exists(path));
+
+        QFile older(m_file);
+        QVERIFY(older.open(QIODevice::ReadOnly));
+        const QByteArray before = older.readAll();
+        older.close();
+        run = drive({QStringLiteral("upload"), m_file}); // the level stays where it was
+        QCOMPARE(run.exitCode, 1);
+        QVERIFY(older.open(QIODevice::ReadOnly));
+        QCOMPARE(older.readAll(), before);
+    }
+
     void argumentsAreChecked_data()
     {
         QTest::addColumn<QStringList>("arguments");

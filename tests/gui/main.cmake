@@ -10,3 +10,5 @@ drivedesk_add_test(NAME tst_finddrives LABELS gui
     SOURCES gui/tst_finddrives.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui)
 drivedesk_add_test(NAME tst_offlineediting LABELS gui
     SOURCES gui/tst_offlineediting.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui)
+drivedesk_add_test(NAME tst_savedrive LABELS gui
+    SOURCES gui/tst_savedrive.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui)

@@ -163,7 +163,7 @@ private slots:
         QVERIFY(connectAndRead(*m_window, simulated()));
         m_pathA = path(QStringLiteral("a.json"));
         m_pathB = path(QStringLiteral("b.json"));
-        QVERIFY(m_window->saveDriveToFile(m_pathA));
+        QVERIFY(saveDriveAndWait(*m_window, m_pathA));
         m_a = load(m_pathA);
         QVERIFY(m_a.parameterCount() > 100);
         m_demoPeriod = *m_a.find(kDemoPeriod)->values[0];

@@ -11,6 +11,7 @@
 
 #include <QCoreApplication>
 #include <QDir>
+#include <QFileInfo>
 #include <QPointer>
 #include <QSettings>
 #include <QTemporaryDir>
@@ -140,6 +141,15 @@ inline bool connectAndRead(MainWindow &window, const ConnectionSettings &setting
 template<typename T> bool waitFinished(const QFuture<T> &future)
 {
     return QTest::qWaitFor([&future] { return future.isFinished(); }, kWaitMs);
+}
+
+// File > Save Drive to File once chosen: the drive is read afresh, then saved. True once the
+// read ended and a file is at `path`.
+inline bool saveDriveAndWait(MainWindow &window, const QString &path)
+{
+    return window.saveDriveToFile(path)
+        && QTest::qWaitFor([&window] { return !window.isSavingDrive(); }, kWaitMs)
+        && QFileInfo::exists(path);
 }
 
 // What the drive holds, read past the window.

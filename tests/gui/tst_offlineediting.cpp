@@ -3,6 +3,7 @@
 #include "edit/ParameterEditing.h"
 #include "main/NoticeBar.h"
 #include "main/StartupOptions.h"
+#include "parameters/ParameterAccess.h"
 #include "parameters/ParameterDocument.h"
 #include "parameters/ParameterList.h"
 
@@ -99,6 +100,19 @@ private:
         return found;
     }
 
+    // Without the values the drive changes by itself: they move between two reads.
+    static DriveDescription settled(DriveDescription drive)
+    {
+        drive.metadataFromCache = false; // not part of a file
+        for (GroupDescription &group : drive.groups) {
+            for (ParameterDescription &parameter : group.parameters) {
+                if (readBackMayDiffer(parameter))
+                    parameter.values = {};
+            }
+        }
+        return drive;
+    }
+
     static DriveDescription withValue(DriveDescription drive, quint16 address, int set, qint32 raw)
     {
         for (GroupDescription &group : drive.groups) {
@@ -122,14 +136,16 @@ private slots:
         QVERIFY(action("saveDriveAction")->isEnabled());
         QVERIFY(!action("saveFileAction")->isEnabled()); // no file shown
         m_driveFile = path(QStringLiteral("drive.json"));
-        QVERIFY(m_window->saveDriveToFile(m_driveFile));
+        QVERIFY(saveDriveAndWait(*m_window, m_driveFile));
         QVERIFY(statusMessage().contains(QStringLiteral("drive.json")));
 
         QString error;
         const std::optional<DriveDescription> saved = ParameterDocument::load(m_driveFile, &error);
         QVERIFY2(saved, qPrintable(error));
         m_driveDocument = *saved;
-        QCOMPARE(m_driveDocument, ParameterList::fromScan(m_window->model()->description()));
+        // Read afresh, it is what the table shows of the drive just read.
+        QCOMPARE(settled(m_driveDocument),
+                 settled(ParameterList::fromScan(m_window->model()->description())));
         QVERIFY(m_driveDocument.parameterCount() > 100);
         // The drive's values, as the drive holds them.
         const ParameterDescription *fixedSpeed = m_driveDocument.find(kFixedSpeed1);

@@ -62,7 +62,7 @@ private:
     QString fileWith(const QString &name, Edit edit)
     {
         const QString path = m_dir.filePath(name);
-        if (!m_window->saveDriveToFile(path))
+        if (!saveDriveAndWait(*m_window, path))
             return {};
         std::optional<DriveDescription> file = ParameterDocument::load(path);
         if (!file)

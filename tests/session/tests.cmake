@@ -15,3 +15,9 @@ drivedesk_add_test(NAME tst_download LABELS integration TIMEOUT 300
 drivedesk_add_test(NAME tst_scoperecording LABELS integration TIMEOUT 300
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scoperecording.cpp
     LIBS drivedesk_session drivedesk_bus)
+
+# Upload (drive to parameter file): a whole read equals the drive; a refused value, a drive gone
+# silent or a cancel is refused, names what is missing and saves nothing.
+drivedesk_add_test(NAME tst_upload LABELS integration TIMEOUT 300
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_upload.cpp
+    LIBS drivedesk_session drivedesk_bus)

@@ -13,6 +13,7 @@
 #include "edit/DocumentEditor.h"
 #include "edit/EditController.h"
 #include "model/ParameterModel.h"
+#include "session/UploadRun.h"
 
 #include <QAction>
 #include <QCloseEvent>
@@ -100,7 +101,9 @@ MainWindow::MainWindow(Language language, QWidget *parent)
     statusBar()->addPermanentWidget(m_stateLabel);
 
     connect(m_notice, &NoticeBar::cancelClicked, this, [this] {
-        if (m_session)
+        if (m_upload)
+            m_upload->cancel();
+        else if (m_session)
             m_session->cancelScan();
     });
     connect(m_notice, &NoticeBar::reconnectClicked, this, &MainWindow::reconnect);

@@ -23,6 +23,8 @@ class DriveSession;
 class NoticeBar;
 class ParameterBrowser;
 class ParameterModel;
+class UploadRun;
+struct UploadResult;
 
 // DriveDesk's window, a frame: the parameter browser of the connected drive or of a parameter
 // file shown instead of one (one thing at a time), the connection's state where the user looks
@@ -57,9 +59,15 @@ public:
     // in a message (the file on disk is left as it was).
     bool saveParameterFile();
     bool saveParameterFileAs(const QString &path);
-    // What an upload keeps of the drive read (ParameterList::fromScan); the window goes on with
-    // the drive.
+    // Reads the connected drive afresh as an upload does (core's UploadRun, as
+    // `drivedesk-cli upload`) with progress and Cancel in the notice bar, and saves it to `path`
+    // once the read is whole; an incomplete read is refused with a dialog naming what is
+    // missing, and nothing is saved. What the table shows is not what is saved. False when it
+    // cannot start (no drive connected, a scan or another save on its way). The window goes on
+    // with the drive.
     bool saveDriveToFile(const QString &path);
+    // Save Drive to File is reading the drive.
+    bool isSavingDrive() const { return !m_upload.isNull(); }
     // The parameter file shown instead of a drive, absolute; empty while none is.
     QString parameterFilePath() const override { return m_filePath; }
     // The file shown was changed since it was opened or saved (undoing back clears this).
@@ -124,6 +132,7 @@ private:
     void confirmReplace(const QString &path, const std::function<void()> &proceed);
     void updateFileTitle();
     bool reportFileProblem(const QString &title, const QString &text);
+    void driveFileRead(const UploadResult &result, const QString &path);
     // MainWindow.cpp
     void openNextSession();
     // The session goes at once: its link closes, its undo history goes.
@@ -153,6 +162,7 @@ private:
     DocumentEditor *m_document = nullptr; // child while a parameter file is shown, or nullptr
     QString m_filePath; // of the parameter file shown
     QPointer<QMessageBox> m_unsavedQuestion; // asking Save / Discard / Cancel, at most one
+    QPointer<UploadRun> m_upload; // Save Drive to File reading the drive; a child of its session
     bool m_closeAnyway = false; // the file's changes were saved or discarded on closing
     // connectTo() while connected: where to connect once the old link is closed.
     std::optional<ConnectionSettings> m_nextSettings;

@@ -39,8 +39,9 @@ void MainWindow::createActions()
 
     m_saveDriveAction = new QAction(tr("Save &Drive to File..."), this);
     m_saveDriveAction->setObjectName(QStringLiteral("saveDriveAction"));
-    m_saveDriveAction->setToolTip(tr("Save the parameters read from the drive to a parameter "
-                                     "file; the window goes on with the drive"));
+    m_saveDriveAction->setToolTip(tr("Read the drive afresh and save it to a parameter file "
+                                     "once every value was read; the window goes on with the "
+                                     "drive"));
     connect(m_saveDriveAction, &QAction::triggered, this, &MainWindow::chooseDriveFile);
 
     m_connectAction = new QAction(themedIcon("network-connect", QStyle::SP_DriveNetIcon),
@@ -229,11 +230,11 @@ void MainWindow::updateActions()
     const bool connected = session && m_session->state() == DriveClient::State::Connected;
     const bool connecting = session && m_session->state() == DriveClient::State::Connecting;
     m_disconnectAction->setEnabled(connected || connecting);
-    m_refreshAction->setEnabled(connected && !m_session->isScanning());
-    m_readMetadataAction->setEnabled(connected && !m_session->isScanning());
+    // Save Drive to File reads the drive with progress in the notice bar: one read at a time.
+    m_refreshAction->setEnabled(connected && !m_session->isScanning() && !isSavingDrive());
+    m_readMetadataAction->setEnabled(connected && !m_session->isScanning() && !isSavingDrive());
     m_driveInfoAction->setEnabled(session && m_session->hasDescription());
-    m_saveDriveAction->setEnabled(session && m_session->hasDescription()
-                                  && !m_session->isScanning());
+    m_saveDriveAction->setEnabled(connected && !m_session->isScanning() && !isSavingDrive());
     m_saveFileAction->setEnabled(m_document != nullptr);
     m_saveFileAsAction->setEnabled(m_document != nullptr);
     m_browser->setEditingEnabled(editing() != nullptr);

@@ -1,5 +1,5 @@
 // MainWindow: parameter files. Opening one shows it with no drive and edits it; saving writes it
-// atomically; "Save Drive to File" keeps what an upload keeps of the drive read.
+// atomically; "Save Drive to File" reads the drive afresh and saves it only when read whole.
 #include "MainWindow.h"
 
 #include "DriveSession.h"
@@ -11,7 +11,7 @@
 #include "edit/DocumentEditor.h"
 #include "model/ParameterModel.h"
 #include "parameters/ParameterDocument.h"
-#include "parameters/ParameterList.h"
+#include "session/UploadRun.h"
 
 #include <QDate>
 #include <QDir>
@@ -137,19 +137,84 @@ bool MainWindow::saveParameterFileAs(const QString &path)
 
 bool MainWindow::saveDriveToFile(const QString &path)
 {
-    if (!m_session || !m_session->hasDescription() || m_session->isScanning())
+    if (!m_session || m_session->state() != DriveClient::State::Connected
+        || m_session->isScanning() || m_upload)
         return false;
-    const DriveDescription upload = ParameterList::fromScan(m_model->description());
+    // The table may hold a scan stopped halfway or values gone stale: a backup reads the drive
+    // afresh, as the command line's upload does.
+    auto *upload = new UploadRun(m_session->client(), m_session);
+    m_upload = upload;
+    const QString name = QFileInfo(path).fileName();
+    // What the notice said before comes back unless something newer took its place.
+    const bool noticeShown = m_notice->isVisible();
+    const NoticeBar::Kind noticeKind = m_notice->kind();
+    const QString noticeText = m_notice->text();
+    connect(upload, &UploadRun::progress, this,
+            [this, name](int value, int maximum, const QString &what) {
+                m_notice->showProgress(tr("Saving the drive to %1: %2").arg(name, what), value,
+                                       maximum);
+            });
+    connect(upload, &UploadRun::finished, this,
+            [this, upload, path, noticeShown, noticeKind, noticeText](const UploadResult &result) {
+                upload->deleteLater();
+                m_upload.clear(); // done: the next save may start
+                if (m_notice->kind() == NoticeBar::Kind::Progress) {
+                    if (!noticeShown)
+                        m_notice->hide();
+                    else if (noticeKind == NoticeBar::Kind::Problem)
+                        m_notice->showProblem(noticeText);
+                    else if (noticeKind == NoticeBar::Kind::Information)
+                        m_notice->showInformation(noticeText);
+                }
+                driveFileRead(result, path);
+                updateActions();
+            });
+    m_notice->showProgress(tr("Saving the drive to %1: reading the drive...").arg(name), 0, 1000);
+    ScanOptions reading;
+    reading.metadata = MetadataSource::Cache;
+    upload->start(reading);
+    updateActions();
+    return true;
+}
+
+void MainWindow::driveFileRead(const UploadResult &result, const QString &path)
+{
+    if (result.outcome == UploadResult::Outcome::Cancelled) {
+        showMessage(tr("Save Drive to File cancelled: nothing was saved to %1.")
+                        .arg(shownPath(path)));
+        return;
+    }
+    if (!result.isComplete()) {
+        const QString text = tr("The drive was not saved to %1: %2.")
+                                 .arg(shownPath(path), result.summary());
+        showMessage(text);
+        auto *box = new QMessageBox(QMessageBox::Warning, tr("Save Drive to File"), text,
+                                    QMessageBox::Ok, this);
+        box->setObjectName(QStringLiteral("uploadRefused"));
+        const QStringList details = result.details();
+        constexpr int kShown = 8;
+        QString missing = tr("Not read:") + QLatin1Char('\n')
+                          + details.mid(0, kShown).join(QLatin1Char('\n'));
+        if (details.size() > kShown) {
+            const int more = int(details.size()) - kShown;
+            missing += QLatin1Char('\n') + tr("... and %n more (Show Details...)", nullptr, more);
+        }
+        box->setInformativeText(missing);
+        box->setDetailedText(details.join(QLatin1Char('\n')));
+        openDialog(box);
+        return;
+    }
     QString error;
-    if (!ParameterDocument::save(path, upload, &error)) {
-        return reportFileProblem(tr("Save Drive to File"),
-                                 tr("Could not save %1: %2. The file on disk is as it was.")
-                                     .arg(shownPath(path), error));
+    if (!saveUpload(path, result, &error)) {
+        reportFileProblem(tr("Save Drive to File"),
+                          tr("Could not save %1: %2. The file on disk is as it was.")
+                              .arg(shownPath(path), error));
+        return;
     }
     rememberDirectory(path);
-    showMessage(tr("Saved %n parameter(s) of the drive to %1.", nullptr, upload.parameterCount())
+    showMessage(tr("Saved %n parameter(s) of the drive to %1.", nullptr,
+                   result.document.parameterCount())
                     .arg(shownPath(path)));
-    return true;
 }
 
 bool MainWindow::reportFileProblem(const QString &title, const QString &text)
@@ -294,7 +359,7 @@ void MainWindow::chooseFileToSaveAs()
 
 void MainWindow::chooseDriveFile()
 {
-    if (!m_session || !m_session->hasDescription())
+    if (!m_session || m_session->state() != DriveClient::State::Connected)
         return;
     const QString name
         = QStringLiteral("drive-%1.json").arg(QDate::currentDate().toString(Qt::ISODate));
