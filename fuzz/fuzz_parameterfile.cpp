@@ -41,6 +41,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (!drive) {
         if (error.isEmpty())
             fail("refused without a reason");
+        // A fault in the drive or the groups is named with its line and column.
+        if ((error.startsWith(QLatin1String("groups")) || error.startsWith(QLatin1String("drive")))
+            && !error.contains(QLatin1String(", column ")))
+            fail("refused without naming the line and column", error);
         return 0;
     }
     if (!error.isEmpty())
@@ -57,6 +61,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 
     for (const GroupDescription &group : drive->groups) {
         for (const ParameterDescription &parameter : group.parameters) {
+            if (parameter.minimum > parameter.maximum)
+                fail("loaded with min above max", parameter.name);
             const ParameterFormat format(parameter);
             show(format, parameter.minimum);
             show(format, parameter.maximum);

@@ -9,6 +9,19 @@
 
 namespace DriveDesk {
 
+// The first fault of a document: where ("groups[2].parameters[5].min") and what.
+struct JsonFault
+{
+    QString place;
+    QString message;
+
+    bool isEmpty() const { return message.isEmpty(); }
+    QString text() const
+    {
+        return place.isEmpty() ? message : place + QStringLiteral(": ") + message;
+    }
+};
+
 // Reads the fields of one JSON object of a parameter file, naming the place of a fault
 // ("groups[2].parameters[5].min: expected an integer"). The first fault anywhere is kept in
 // the error all readers of a document share; after it, reads return defaults, so a caller
@@ -16,7 +29,7 @@ namespace DriveDesk {
 class JsonObjectReader
 {
 public:
-    JsonObjectReader(QJsonObject object, QString path, QString *error)
+    JsonObjectReader(QJsonObject object, QString path, JsonFault *error)
         : m_object(std::move(object))
         , m_path(std::move(path))
         , m_error(error)
@@ -26,7 +39,7 @@ public:
     JsonObjectReader element(const QString &key, const QJsonArray &array, qsizetype index);
 
     bool ok() const { return m_error->isEmpty(); }
-    QString *error() const { return m_error; }
+    JsonFault *error() const { return m_error; }
     QString place(const QString &key) const;
     static QString indexed(const QString &place, qsizetype index); // "values[2]"
     void fail(const QString &place, const QString &message);
@@ -48,7 +61,7 @@ public:
 private:
     QJsonObject m_object;
     QString m_path;
-    QString *m_error;
+    JsonFault *m_error;
     QSet<QString> m_read;
 };
 

@@ -44,6 +44,11 @@ std::optional<qint32> valueOf(const ParameterDescription &parameter, int set)
 
 } // namespace
 
+bool countsAsSetting(const ParameterDescription &parameter)
+{
+    return ParameterList::isReadByUpload(parameter) && isUserSetting(parameter);
+}
+
 QString ParameterComparison::kindText(ParameterDifference::Kind kind)
 {
     switch (kind) {
@@ -66,6 +71,8 @@ ParameterComparison compareDescriptions(const DriveDescription &a, const DriveDe
     for (const ComparisonRow &row : compareAll(a, b).rows) {
         const bool firstOfParameter = previous != row.address;
         previous = row.address;
+        if (row.state == ComparisonRow::State::NotASetting)
+            continue;
         const bool only = row.state == ComparisonRow::State::OnlyInA
             || row.state == ComparisonRow::State::OnlyInB;
         if (!only && firstOfParameter)
@@ -93,7 +100,7 @@ DriveDescription userSettingsOf(const DriveDescription &drive)
     DriveDescription settings = drive;
     for (GroupDescription &group : settings.groups) {
         group.parameters.removeIf(
-            [](const ParameterDescription &parameter) { return !isUserSetting(parameter); });
+            [](const ParameterDescription &parameter) { return !countsAsSetting(parameter); });
     }
     return settings;
 }
@@ -135,6 +142,8 @@ QString ComparisonTable::stateText(ComparisonRow::State state)
         return tr("only in B");
     case ComparisonRow::State::ReadOnly:
         return tr("read-only");
+    case ComparisonRow::State::NotASetting:
+        return tr("not a setting");
     }
     return {};
 }
@@ -170,7 +179,13 @@ ComparisonTable compareRows(const DriveDescription &a, int setA, const DriveDesc
         row.name = named.parameter->name;
         row.groupId = named.groupId;
         row.perSet = perSet;
-        if (!l.parameter || !r.parameter) {
+        row.onlyInA = !r.parameter;
+        row.onlyInB = !l.parameter;
+        if ((l.parameter && !countsAsSetting(*l.parameter))
+            || (r.parameter && !countsAsSetting(*r.parameter))) {
+            row.state = ComparisonRow::State::NotASetting;
+            row.differs = row.onlyInA || row.onlyInB;
+        } else if (!l.parameter || !r.parameter) {
             row.state = l.parameter ? ComparisonRow::State::OnlyInA
                                     : ComparisonRow::State::OnlyInB;
             row.differs = true;
@@ -193,7 +208,8 @@ ComparisonTable compareRows(const DriveDescription &a, int setA, const DriveDesc
             }
             if (l.parameter && r.parameter) {
                 shownRow.differs = shownRow.rawA != shownRow.rawB;
-                if (row.state != ComparisonRow::State::ReadOnly) {
+                if (row.state != ComparisonRow::State::ReadOnly
+                    && row.state != ComparisonRow::State::NotASetting) {
                     shownRow.state = shownRow.differs ? ComparisonRow::State::Different
                                                       : ComparisonRow::State::Equal;
                 }

@@ -10,6 +10,14 @@
 
 namespace DriveDesk {
 
+// Whether a parameter counts as a setting when two descriptions are compared: a value the user
+// sets (isUserSetting: not read-only, not live, not changed by the drive itself) whose value an
+// upload reads (ParameterList::isReadByUpload: not excluded from the list, not write only). The
+// one rule of compareDescriptions(), compareAll() and compareSets(), so of `diff`, the compare
+// window and a check that a drive still matches its backup: anything else may be shown, never
+// counted.
+bool countsAsSetting(const ParameterDescription &parameter);
+
 // One difference between two descriptions of a drive (two parameter files, a drive and a file):
 // a value of one set that differs, or a parameter only one side has. Values are in display
 // form, each side formatted with its own metadata.
@@ -38,8 +46,9 @@ public:
     static QString kindText(ParameterDifference::Kind kind);
 };
 
-// Compares every parameter value of `a` with `b`, set by set where either side holds one value
-// per set. A value one side read and the other did not differs; two unread values do not.
+// Compares every setting (countsAsSetting) of `a` with `b`, set by set where either side holds
+// one value per set. A value one side read and the other did not differs; two unread values do
+// not. Live and read-only values and parameters a parameter list leaves out are no difference.
 ParameterComparison compareDescriptions(const DriveDescription &a, const DriveDescription &b);
 
 // Compares the values a user sets (isUserSetting) with their defaults, set by set; the
@@ -47,8 +56,8 @@ ParameterComparison compareDescriptions(const DriveDescription &a, const DriveDe
 // they are no setting to go back to.
 ParameterComparison compareWithDefaults(const DriveDescription &drive, bool defaultsFirst = false);
 
-// The values a user sets (isUserSetting) of `drive`, as they are: the parameters
-// compareWithDefaults() looks at.
+// The settings (countsAsSetting) of `drive`, as they are: the parameters compareWithDefaults()
+// looks at.
 DriveDescription userSettingsOf(const DriveDescription &drive);
 // The same parameters as userSettingsOf(), each with its default in every set it has.
 DriveDescription defaultsOf(const DriveDescription &drive);
@@ -67,6 +76,10 @@ struct ComparisonRow
         // of transfer lists). Neither side can be made like the other; `differs` tells whether
         // the values do.
         ReadOnly,
+        // Not a setting by the metadata of a side that has it (countsAsSetting is false): a live
+        // or read-only value, or one a parameter list leaves out. Shown on request, never a
+        // difference; `differs` tells whether the values do.
+        NotASetting,
     };
 
     State state = State::Equal;
@@ -84,6 +97,9 @@ struct ComparisonRow
     std::optional<qint32> rawB;
     QString a; // "50.00 Hz", "?" where that side did not read it, empty where it has none
     QString b;
+    // Only one side has the parameter; the state may still be NotASetting.
+    bool onlyInA = false;
+    bool onlyInB = false;
 
     // A value of the other side can be written into this one: the values differ, both sides
     // have the parameter, a download may write it, and the other side's value is known.
@@ -101,7 +117,7 @@ public:
     QList<ComparisonRow> rows;
 
     int count(ComparisonRow::State state) const;
-    // "equal", "different", "only in A", "only in B", "read-only".
+    // "equal", "different", "only in A", "only in B", "read-only", "not a setting".
     static QString stateText(ComparisonRow::State state);
 };
 

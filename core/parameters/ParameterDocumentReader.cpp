@@ -2,6 +2,7 @@
 
 #include "DisplayScaling.h"
 #include "JsonObjectReader.h"
+#include "JsonTextPlaces.h"
 #include "ParameterId.h"
 #include "ParameterProperties.h"
 
@@ -73,6 +74,34 @@ void checkDerived(JsonObjectReader &reader, const ParameterDescription &paramete
             reader.fail(reader.place(QStringLiteral("readOnly")),
                         ParameterDocument::tr("%1 does not agree with properties2 bit 3")
                             .arg(onOff(readOnly)));
+    }
+}
+
+// What no drive can report. A value outside the limits is not among them: limits and default
+// may follow other parameters (properties 1 bits 12-15, bit 18), and a backup keeps what the
+// drive held; the download checks values against the drive's limits.
+void checkLimits(JsonObjectReader &reader, const ParameterDescription &parameter)
+{
+    if (parameter.minimum > parameter.maximum) {
+        reader.fail(reader.place(QStringLiteral("max")),
+                    ParameterDocument::tr("%1 is below min %2")
+                        .arg(parameter.maximum)
+                        .arg(parameter.minimum));
+        return;
+    }
+    const ParameterProperties properties(parameter.properties1, parameter.properties2);
+    const bool constant = !properties.hasVariableDefault()
+        && properties.lowerLimitType() == ParameterProperties::LimitType::Constant
+        && properties.upperLimitType() == ParameterProperties::LimitType::Constant;
+    if (constant
+        && (parameter.defaultValue < parameter.minimum
+            || parameter.defaultValue > parameter.maximum)) {
+        reader.fail(reader.place(QStringLiteral("default")),
+                    ParameterDocument::tr("%1 is outside min..max (%2..%3), and properties1 "
+                                          "says default and limits are constant")
+                        .arg(parameter.defaultValue)
+                        .arg(parameter.minimum)
+                        .arg(parameter.maximum));
     }
 }
 
@@ -148,6 +177,9 @@ ParameterDescription readParameter(JsonObjectReader &reader, const GroupDescript
         = qint32(reader.integer(QStringLiteral("default"), kInt32Min, kInt32Max));
     parameter.properties1 = quint32(reader.integer(QStringLiteral("properties1"), 0, 0xFFFFFFFFLL));
     parameter.properties2 = quint32(reader.integer(QStringLiteral("properties2"), 0, 0xFFFFFFFFLL));
+    if (!reader.ok())
+        return parameter;
+    checkLimits(reader, parameter);
     if (!reader.ok())
         return parameter;
     if ((parameter.address & 0xFF00) != (group.address & 0xFF00)) {
@@ -252,6 +284,23 @@ bool readGroups(JsonObjectReader &root, DriveDescription &drive)
         addresses.append({ group.id, group.address });
         drive.groups.append(group);
     }
+    // The file names parameters by group id ("ru.3"): a group id such an id cannot carry (a
+    // space, a dot) would be saved into ids no reader takes back.
+    for (qsizetype i = 0; i < drive.groups.size() && root.ok(); ++i) {
+        const GroupDescription &group = drive.groups.at(i);
+        const QString id = ParameterId::format(group.address, addresses);
+        QString why;
+        if (ParameterId::parse(id, addresses, &why) != group.address) {
+            JsonObjectReader reader = root.element(key, groups, i);
+            reader.fail(reader.place(QStringLiteral("id")),
+                        ParameterDocument::tr("'%1' cannot stand in a parameter id: %2")
+                            .arg(group.id,
+                                 why.isEmpty() ? ParameterDocument::tr("'%1' names another "
+                                                                       "address")
+                                                     .arg(id)
+                                               : why));
+        }
+    }
     QSet<quint16> seen;
     for (qsizetype i = 0; i < drive.groups.size() && root.ok(); ++i) {
         JsonObjectReader reader = root.element(key, groups, i);
@@ -274,11 +323,22 @@ bool readGroups(JsonObjectReader &root, DriveDescription &drive)
     return root.ok();
 }
 
+// The fault with the line and column of its place in the text.
+QString located(const QByteArray &json, const JsonFault &fault)
+{
+    const JsonTextPlaces::LineColumn at
+        = JsonTextPlaces::lineColumn(json, JsonTextPlaces::offsetOf(json, fault.place));
+    return ParameterDocument::tr("%1 (line %2, column %3)")
+        .arg(fault.text())
+        .arg(at.line)
+        .arg(at.column);
+}
+
 } // namespace
 
 std::optional<DriveDescription> ParameterDocument::fromJson(const QByteArray &json, QString *error)
 {
-    QString fault;
+    JsonFault fault;
     auto fail = [&](const QString &message) -> std::optional<DriveDescription> {
         if (error)
             *error = message;
@@ -288,13 +348,11 @@ std::optional<DriveDescription> ParameterDocument::fromJson(const QByteArray &js
     QJsonParseError parseError;
     const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
     if (parseError.error != QJsonParseError::NoError) {
-        const QByteArray before = json.left(parseError.offset);
-        const qsizetype line = before.count('\n') + 1;
-        const qsizetype column = parseError.offset - (before.lastIndexOf('\n') + 1) + 1;
+        const JsonTextPlaces::LineColumn at = JsonTextPlaces::lineColumn(json, parseError.offset);
         return fail(ParameterDocument::tr("not valid JSON: %1 at line %2, column %3")
                         .arg(parseError.errorString())
-                        .arg(line)
-                        .arg(column));
+                        .arg(at.line)
+                        .arg(at.column));
     }
     if (!document.isObject())
         return fail(ParameterDocument::tr(
@@ -325,12 +383,21 @@ std::optional<DriveDescription> ParameterDocument::fromJson(const QByteArray &js
                 .arg(kVersion));
     }
 
+    // QJsonObject keeps only the last of two equal keys: which one the writer meant is unknown.
+    if (const auto duplicate = JsonTextPlaces::firstDuplicateKey(json)) {
+        const JsonTextPlaces::LineColumn at = JsonTextPlaces::lineColumn(json, duplicate->offset);
+        return fail(ParameterDocument::tr("%1: appears twice in one object (line %2, column %3)")
+                        .arg(duplicate->path)
+                        .arg(at.line)
+                        .arg(at.column));
+    }
+
     DriveDescription drive;
     if (!readDrive(root, drive) || !readGroups(root, drive))
-        return fail(fault);
+        return fail(located(json, fault));
     root.finish();
     if (!root.ok())
-        return fail(fault);
+        return fail(located(json, fault));
     return drive;
 }
 

@@ -102,7 +102,7 @@ bool ScopeFileFormat::parseHeader(const QByteArray &json, ScopeFileHeader &heade
                                        : tr("not a JSON object");
         return false;
     }
-    QString fault;
+    JsonFault fault;
     JsonObjectReader reader(document.object(), QString(), &fault);
 
     const QString startedKey = QStringLiteral("started");
@@ -127,7 +127,7 @@ bool ScopeFileFormat::parseHeader(const QByteArray &json, ScopeFileHeader &heade
     }
     reader.finish();
     if (!fault.isEmpty() && error)
-        *error = fault;
+        *error = fault.text();
     return fault.isEmpty();
 }
 

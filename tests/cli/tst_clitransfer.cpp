@@ -92,6 +92,44 @@ private slots:
         QVERIFY2(!run.out.contains(QStringLiteral("op.11")), qPrintable(run.out));
     }
 
+    // "Does the drive still match its backup?": live values move on (Sy.32, the scope timer,
+    // counts every millisecond), settings do not; only a changed setting is a difference.
+    void theDriveMatchesItsBackupWhileLiveValuesChange()
+    {
+        QFile file(m_file);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        qint64 timer = -1;
+        const QJsonArray groups = QJsonDocument::fromJson(file.readAll()).object().value(QStringLiteral("groups")).toArray();
+        for (const QJsonValue &group : groups) {
+            for (const QJsonValue &parameter : group.toObject().value(QStringLiteral("parameters")).toArray()) {
+                if (parameter.toObject().value(QStringLiteral("id")).toString() == QLatin1String("Sy.32"))
+                    timer = parameter.toObject().value(QStringLiteral("values")).toArray().at(0).toInteger(-1);
+            }
+        }
+        QVERIFY2(timer >= 0, "Sy.32 in the file");
+        Run run = drive({QStringLiteral("read"), QStringLiteral("Sy.32")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        QVERIFY2(!run.out.contains(QStringLiteral("(raw %1,").arg(timer)), qPrintable(run.out));
+
+        run = drive({QStringLiteral("diff"), m_file, QStringLiteral("drive")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        QVERIFY2(run.out.startsWith(QStringLiteral("0 differences")), qPrintable(run.out));
+        run = drive({QStringLiteral("diff"), QStringLiteral("drive"), m_file, QStringLiteral("--format"),
+                     QStringLiteral("json")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        QCOMPARE(QJsonDocument::fromJson(run.out.toUtf8()).object().value(QStringLiteral("differences")).toArray().size(),
+                 0);
+
+        run = drive({QStringLiteral("write"), QStringLiteral("op.11"), QStringLiteral("2500"),
+                     QStringLiteral("--sets"), QStringLiteral("2")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        run = drive({QStringLiteral("diff"), m_file, QStringLiteral("drive")});
+        QCOMPARE(run.exitCode, 1);
+        QVERIFY2(run.out.contains(QRegularExpression(QStringLiteral("op.11 +Maximum speed forward +2 +3000 1/min +2500 1/min"))),
+                 qPrintable(run.out));
+        QVERIFY2(run.out.contains(QStringLiteral("1 difference")), qPrintable(run.out));
+    }
+
     void aFileOfAnotherDriveIsRefusedAndNothingIsWritten()
     {
         QVERIFY(editFile(m_file, QStringLiteral("In.6"), 0, 170)); // software 1.70
@@ -151,6 +189,10 @@ private slots:
         QTest::newRow("wrong type") << QByteArray("\"min\": 0,") << QStringLiteral("expected an integer");
         QTest::newRow("newer version") << QByteArray("\"version\": 1") << QStringLiteral("newer format");
         QTest::newRow("duplicate parameter") << QByteArray("duplicate") << QStringLiteral("twice");
+        QTest::newRow("key twice") << QByteArray("key twice")
+                                   << QStringLiteral("groups[0].name: appears twice in one object (line ");
+        QTest::newRow("max below min") << QByteArray("max below min")
+                                       << QStringLiteral("groups[0].parameters[0].max: -1 is below min 0 (line ");
     }
 
     void aCorruptFileChangesNothing()
@@ -168,6 +210,12 @@ private slots:
             const qsizetype start = bytes.indexOf("{", bytes.indexOf("\"parameters\": ["));
             const qsizetype end = bytes.indexOf("\n                },", start) + 19;
             bytes.insert(start, bytes.mid(start, end - start));
+        } else if (change == "key twice") {
+            const qsizetype at = bytes.indexOf("\"name\": ");
+            bytes.insert(at, "\"name\": \"again\", ");
+        } else if (change == "max below min") {
+            const qsizetype at = bytes.indexOf("\"max\": ");
+            bytes.replace(at, bytes.indexOf(',', at) - at, "\"max\": -1");
         } else if (change.startsWith("\"min")) {
             const qsizetype at = bytes.indexOf(change);
             bytes.replace(at, change.size(), "\"min\": \"zero\",");
@@ -177,9 +225,16 @@ private slots:
         QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
         file.write(bytes);
         file.close();
-        const Run run = drive({QStringLiteral("download"), m_file});
-        QCOMPARE(run.exitCode, 2);
-        QVERIFY2(run.err.contains(m_file) && run.err.contains(message), qPrintable(run.err));
+        // The download, its dry run and a diff with the drive all refuse it, naming the place.
+        for (const QStringList &command :
+             { QStringList { QStringLiteral("download"), m_file },
+               QStringList { QStringLiteral("download"), m_file, QStringLiteral("--dry-run") },
+               QStringList { QStringLiteral("diff"), m_file, QStringLiteral("drive") } }) {
+            const Run run = drive(command);
+            QCOMPARE(run.exitCode, 2);
+            QVERIFY2(run.err.contains(m_file) && run.err.contains(message), qPrintable(run.err));
+            QVERIFY2(run.out.isEmpty(), qPrintable(run.out));
+        }
         QVERIFY(readSet(QStringLiteral("op.11"), 6).contains(QStringLiteral("3000 1/min")));
     }
 

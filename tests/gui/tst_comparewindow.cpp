@@ -269,9 +269,15 @@ private slots:
         QVERIFY(ParameterDocument::save(m_pathB, b));
         auto window = filesWindow();
         QVERIFY(window->compare());
+        // A live value is no setting: not shown at first, shown on request, never chosen.
+        QVERIFY(!rowOf(*window, kInverterState, 0).isValid());
+        QCOMPARE(window->comparisonModel()->comparison().count(ComparisonRow::State::Different), 3);
+        QCheckBox *notSettings = stateBox(*window, ComparisonRow::State::NotASetting);
+        QVERIFY(!notSettings->isChecked());
+        notSettings->setChecked(true);
         const QModelIndex state = rowOf(*window, kInverterState, 0);
         QCOMPARE(state.siblingAtColumn(ComparisonModel::StateColumn).data().toString(),
-                 QStringLiteral("read-only, different"));
+                 QStringLiteral("not a setting, different"));
         QVERIFY(!(state.flags() & Qt::ItemIsUserCheckable));
         QVERIFY(!choose(*window, kInverterState, 0));
     }
@@ -360,6 +366,36 @@ private slots:
         window->close();
     }
 
+    // The drive against a backup made a moment ago: what the backup leaves out (parameters
+    // outside the parameter list) and live values that moved on are no difference, and the
+    // default filter shows nothing to act on.
+    void theDriveAgainstItsFreshBackupShowsNoDifference()
+    {
+        const QString backup = path(QStringLiteral("backup.json"));
+        QVERIFY(saveDriveAndWait(*m_window, backup));
+        auto *feature = m_window->findChild<CompareFeature *>();
+        CompareWindow *window = feature->showCompareWindow();
+        window->setSide(true, CompareWindow::Source::Drive);
+        window->setSide(false, CompareWindow::Source::File, backup);
+        QVERIFY2(window->compare(), qPrintable(window->message()));
+        const ComparisonTable &table = window->comparisonModel()->comparison();
+        QCOMPARE(table.count(ComparisonRow::State::Different), 0);
+        QCOMPARE(table.count(ComparisonRow::State::OnlyInA), 0);
+        QCOMPARE(table.count(ComparisonRow::State::OnlyInB), 0);
+        QVERIFY(table.count(ComparisonRow::State::NotASetting) > 0);
+        for (const ComparisonRow &row : table.rows) {
+            if (row.onlyInA)
+                QCOMPARE(row.state, ComparisonRow::State::NotASetting);
+        }
+        for (const QString &row : shownRows(*window)) {
+            QVERIFY2(!row.contains(QStringLiteral("different")) && !row.contains(QStringLiteral("only in"))
+                         && !row.contains(QStringLiteral("not a setting")),
+                     qPrintable(row));
+        }
+        QVERIFY2(window->message().contains(QStringLiteral("0 value")), qPrintable(window->message()));
+        window->close();
+    }
+
     void chosenValuesReachTheDriveThroughTheDownload()
     {
         auto *feature = m_window->findChild<CompareFeature *>();
@@ -427,6 +463,16 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(download->dialog()->run()->stage() == DownloadRun::Stage::Done, kWaitMs);
         QCOMPARE(driveValue(m_window->session()->client(), kFixedSpeed1, 3), 250);
         QCOMPARE(driveValue(m_window->session()->client(), kDemoPeriod, 0), m_demoPeriod + 15);
+        // The window reads the drive again and the compare window compares again by itself:
+        // what was written is equal, and nothing stays chosen.
+        auto rowState = [&](quint16 address, int set) {
+            return rowOf(*window, address, set).siblingAtColumn(ComparisonModel::StateColumn).data().toString();
+        };
+        QTRY_COMPARE_WITH_TIMEOUT(rowState(kFixedSpeed1, 3), QStringLiteral("equal"), kWaitMs);
+        QCOMPARE(rowState(kDemoPeriod, 0), QStringLiteral("equal"));
+        QVERIFY(window->comparisonModel()->chosenRows().isEmpty());
+        QCOMPARE(window->comparisonModel()->comparison().count(ComparisonRow::State::Different), 1);
+        QVERIFY(isWriteText(writeA->text(), 0, QStringLiteral("A (the drive)")));
         download->dialog()->reject();
         window->close();
     }

@@ -65,8 +65,8 @@ private slots:
     {
         const ComparisonTable table = compareAll(drive(), changed());
         const QStringList expected{
-            QStringLiteral("ru.00 - Fcon vs Fcon read-only"),
-            QStringLiteral("ru.03 - -52.25 Hz vs 0.00 Hz read-only"),
+            QStringLiteral("ru.00 - Fcon vs Fcon not a setting"),
+            QStringLiteral("ru.03 - -52.25 Hz vs 0.00 Hz not a setting"),
             QStringLiteral("oP.10 0/0 50.00 Hz vs 50.00 Hz equal"),
             QStringLiteral("oP.10 1/1 60.00 Hz vs 60.00 Hz equal"),
             QStringLiteral("oP.10 2/2 50.00 Hz vs 50.00 Hz equal"),
@@ -84,7 +84,8 @@ private slots:
         QCOMPARE(lines(table), expected);
         QCOMPARE(table.count(ComparisonRow::State::Equal), 10);
         QCOMPARE(table.count(ComparisonRow::State::Different), 2);
-        QCOMPARE(table.count(ComparisonRow::State::ReadOnly), 2);
+        QCOMPARE(table.count(ComparisonRow::State::ReadOnly), 0);
+        QCOMPARE(table.count(ComparisonRow::State::NotASetting), 2);
         QCOMPARE(table.count(ComparisonRow::State::OnlyInA), 1);
         QCOMPARE(table.count(ComparisonRow::State::OnlyInB), 0);
     }
@@ -103,15 +104,46 @@ private slots:
         QVERIFY(row.isWritableTo(false));
     }
 
-    void aReadOnlyValueTellsWhetherItDiffers()
+    void aValueThatIsNoSettingTellsWhetherItDiffers()
     {
         const ComparisonTable table = compareAll(drive(), changed());
-        QCOMPARE(table.rows[0].state, ComparisonRow::State::ReadOnly);
+        QCOMPARE(table.rows[0].state, ComparisonRow::State::NotASetting);
         QVERIFY(!table.rows[0].differs);
-        QCOMPARE(table.rows[1].state, ComparisonRow::State::ReadOnly);
+        QCOMPARE(table.rows[1].state, ComparisonRow::State::NotASetting);
         QVERIFY(table.rows[1].differs);
         QVERIFY(!table.rows[1].isWritableTo(false));
         QVERIFY(!table.rows[1].isWritableTo(true));
+    }
+
+    // A parameter a list leaves out is "not a setting" on the side that has it, never "only in".
+    void aLeftOutParameterIsNoSettingOnItsSide()
+    {
+        DriveDescription a = drive();
+        find(a, kService)->properties2 |= 1u << 14; // excluded from the complete list
+        const ComparisonTable table = compareAll(a, changed());
+        QCOMPARE(table.count(ComparisonRow::State::OnlyInA), 0);
+        const ComparisonRow &row = table.rows.constLast();
+        QCOMPARE(row.address, kService);
+        QCOMPARE(row.state, ComparisonRow::State::NotASetting);
+        QVERIFY(row.onlyInA);
+        QVERIFY(!row.isWritableTo(false));
+    }
+
+    // A setting a download does not write ("read only for up/download lists", properties 2
+    // bit 17) is read-only here, and still a difference.
+    void aSettingADownloadLeavesIsReadOnlyAndCounts()
+    {
+        DriveDescription a = drive();
+        find(a, kRampTime)->properties2 |= 1u << 17;
+        DriveDescription b = drive(); // afresh: find() writes through const
+        find(b, kRampTime)->properties2 |= 1u << 17;
+        find(b, kRampTime)->values[0] = 750;
+        const ComparisonTable table = compareAll(a, b);
+        QCOMPARE(table.rows[10].address, kRampTime);
+        QCOMPARE(table.rows[10].state, ComparisonRow::State::ReadOnly);
+        QVERIFY(table.rows[10].differs);
+        QVERIFY(!table.rows[10].isWritableTo(true));
+        QCOMPARE(compareDescriptions(a, b).differences.size(), 1);
     }
 
     void aParameterOnlyInBIsListedSetBySet()

@@ -50,6 +50,62 @@ QVariantList state(const QString &field)
     return { QStringLiteral("groups"), 1, QStringLiteral("parameters"), 0, field };
 }
 
+// The example of docs/parameter-file.md.
+QByteArray documentedExample()
+{
+    return R"({
+    "format": "drivedesk-parameters",
+    "version": 1,
+    "drive": {
+        "protocol": "hsp5",
+        "connection": "/dev/ttyUSB0",
+        "address": -1,
+        "language": 0,
+        "identification": "",
+        "incompleteReason": ""
+    },
+    "groups": [
+        {
+            "id": "ru", "index": 1, "address": 512, "name": "Run", "shortcut": "r",
+            "properties": 24, "highestNumber": 43, "parameterCount": 30,
+            "parameters": [
+                {
+                    "id": "ru.03", "address": 515, "name": "Actual frequency",
+                    "min": -32000, "max": 32000, "default": 0,
+                    "unit": "Hz", "decimals": 2, "setProgrammable": false, "readOnly": true,
+                    "values": [-4180],
+                    "properties1": 1024, "properties2": 5,
+                    "scaling": {"divisor": 80, "multiplier": 1, "offset": 0, "flags": 530},
+                    "plaintextIndices": {"displayIndex": 0, "displayCount": 0,
+                                         "combivisIndex": 0, "combivisCount": 0},
+                    "plaintextDefinitions": [],
+                    "plaintexts": []
+                }
+            ]
+        }
+    ]
+})";
+}
+
+// "line 18, column 43" of the first `marker` in `json`, counted independently of the reader.
+QString placeOf(const QByteArray &json, const QByteArray &marker, qsizetype from = 0)
+{
+    const qsizetype at = json.indexOf(marker, from);
+    const qsizetype lineStart = json.lastIndexOf('\n', at) + 1;
+    return QStringLiteral("(line %1, column %2)")
+        .arg(json.left(at).count('\n') + 1)
+        .arg(at - lineStart + 1);
+}
+
+// The example with `from` replaced by `to` (the first place only).
+QByteArray exampleWith(const QByteArray &from, const QByteArray &to)
+{
+    QByteArray json = documentedExample();
+    const qsizetype at = json.indexOf(from);
+    Q_ASSERT(at >= 0);
+    return json.replace(at, from.size(), to);
+}
+
 } // namespace
 
 // The parameter file as JSON: exact round trip, clear errors naming the place.
@@ -87,39 +143,7 @@ private slots:
 
     void documentedExampleLoads()
     {
-        // The example of docs/parameter-file.md.
-        const QByteArray json = R"({
-    "format": "drivedesk-parameters",
-    "version": 1,
-    "drive": {
-        "protocol": "hsp5",
-        "connection": "/dev/ttyUSB0",
-        "address": -1,
-        "language": 0,
-        "identification": "",
-        "incompleteReason": ""
-    },
-    "groups": [
-        {
-            "id": "ru", "index": 1, "address": 512, "name": "Run", "shortcut": "r",
-            "properties": 24, "highestNumber": 43, "parameterCount": 30,
-            "parameters": [
-                {
-                    "id": "ru.03", "address": 515, "name": "Actual frequency",
-                    "min": -32000, "max": 32000, "default": 0,
-                    "unit": "Hz", "decimals": 2, "setProgrammable": false, "readOnly": true,
-                    "values": [-4180],
-                    "properties1": 1024, "properties2": 5,
-                    "scaling": {"divisor": 80, "multiplier": 1, "offset": 0, "flags": 530},
-                    "plaintextIndices": {"displayIndex": 0, "displayCount": 0,
-                                         "combivisIndex": 0, "combivisCount": 0},
-                    "plaintextDefinitions": [],
-                    "plaintexts": []
-                }
-            ]
-        }
-    ]
-})";
+        const QByteArray json = documentedExample();
         QString error;
         const std::optional<DriveDescription> drive = ParameterDocument::fromJson(json, &error);
         QVERIFY2(drive, qPrintable(error));
@@ -319,6 +343,15 @@ private slots:
         QTest::newRow("duplicate parameter")
             << sampleWith({ QStringLiteral("groups"), 1, QStringLiteral("parameters"), 1 }, first)
             << QStringLiteral("groups[1].parameters[1].address: 0200h appears twice");
+        // Found by fuzz_parameterfile: such a file loaded, and saved with ids it refuses.
+        QTest::newRow("group id with a tab")
+            << sampleWith({ QStringLiteral("groups"), 0, QStringLiteral("id") },
+                          QStringLiteral("u\tF"))
+            << QStringLiteral("groups[0].id: 'u\tF' cannot stand in a parameter id");
+        QTest::newRow("group id with a dot")
+            << sampleWith({ QStringLiteral("groups"), 0, QStringLiteral("id") },
+                          QStringLiteral("S.y"))
+            << QStringLiteral("groups[0].id: 'S.y' cannot stand in a parameter id");
         QTest::newRow("shortcut") << sampleWith(
             { QStringLiteral("groups"), 0, QStringLiteral("shortcut") }, QStringLiteral("ab"))
                                   << QStringLiteral(
@@ -338,6 +371,108 @@ private slots:
         QString actual;
         QVERIFY(!ParameterDocument::fromJson(json, &actual));
         QVERIFY2(actual.startsWith(error), qPrintable(actual));
+    }
+
+    // What no drive can hold is refused with the place, its line and its column: a key given
+    // twice (JSON readers keep one of them, silently), limits the wrong way round, a default
+    // outside constant limits.
+    void impossibleFilesAreRefusedAtTheirLineAndColumn_data()
+    {
+        QTest::addColumn<QByteArray>("json");
+        QTest::addColumn<QString>("error");
+        QTest::addColumn<QString>("place");
+        const QByteArray twiceMin = exampleWith("\"min\": -32000,", "\"min\": -32000, \"min\": 5,");
+        QTest::newRow("key twice in a parameter")
+            << twiceMin << QStringLiteral("groups[0].parameters[0].min: appears twice")
+            << placeOf(twiceMin, "\"min\": 5");
+        const QByteArray twiceVersion = exampleWith("\"version\": 1,", "\"version\": 1,\n    \"version\": 1,");
+        QTest::newRow("key twice at the top")
+            << twiceVersion << QStringLiteral("version: appears twice")
+            << placeOf(twiceVersion, "\"version\"", twiceVersion.indexOf("\"version\"") + 1);
+        const QByteArray twiceFlags
+            = exampleWith("\"flags\": 530}", "\"flags\": 530, \"flags\": 18}");
+        QTest::newRow("key twice in scaling")
+            << twiceFlags << QStringLiteral("groups[0].parameters[0].scaling.flags: appears twice")
+            << placeOf(twiceFlags, "\"flags\": 18");
+        const QByteArray twiceLanguage
+            = exampleWith("\"language\": 0,", "\"language\": 0, \"lan\\u0067uage\": 1,");
+        QTest::newRow("key twice, once escaped")
+            << twiceLanguage << QStringLiteral("drive.language: appears twice")
+            << placeOf(twiceLanguage, "\"lan\\u0067uage\"");
+        const QByteArray maxBelowMin = exampleWith("\"max\": 32000", "\"max\": -32001");
+        QTest::newRow("max below min")
+            << maxBelowMin
+            << QStringLiteral("groups[0].parameters[0].max: -32001 is below min -32000")
+            << placeOf(maxBelowMin, "\"max\"");
+        const QByteArray defaultAbove = exampleWith("\"default\": 0", "\"default\": 32001");
+        QTest::newRow("default above constant max")
+            << defaultAbove
+            << QStringLiteral("groups[0].parameters[0].default: 32001 is outside min..max "
+                              "(-32000..32000)")
+            << placeOf(defaultAbove, "\"default\"");
+        const QByteArray defaultBelow = exampleWith("\"default\": 0", "\"default\": -32001");
+        QTest::newRow("default below constant min")
+            << defaultBelow
+            << QStringLiteral("groups[0].parameters[0].default: -32001 is outside min..max")
+            << placeOf(defaultBelow, "\"default\"");
+        // The reader's other faults name their line too: the field, or the object lacking it.
+        const QByteArray minText = exampleWith("\"min\": -32000", "\"min\": \"low\"");
+        QTest::newRow("wrong type")
+            << minText << QStringLiteral("groups[0].parameters[0].min: expected an integer")
+            << placeOf(minText, "\"min\"");
+        const QByteArray noName = exampleWith("\"name\": \"Actual frequency\",", "");
+        QTest::newRow("missing field")
+            << noName << QStringLiteral("groups[0].parameters[0].name: missing")
+            << placeOf(noName, "{", noName.indexOf("\"parameters\""));
+    }
+
+    void impossibleFilesAreRefusedAtTheirLineAndColumn()
+    {
+        QFETCH(QByteArray, json);
+        QFETCH(QString, error);
+        QFETCH(QString, place);
+        QString actual;
+        QVERIFY(!ParameterDocument::fromJson(json, &actual));
+        QVERIFY2(actual.startsWith(error), qPrintable(actual));
+        QVERIFY2(actual.endsWith(place), qPrintable(actual + QLatin1String(" / ") + place));
+    }
+
+    // What a drive can hold loads: limits and a default that follow other parameters
+    // (properties 1 bits 12-15, bit 18) may leave the default outside the limits read, and a
+    // backup keeps a value outside its limits as the drive held it.
+    void whatADriveCanHoldLoads_data()
+    {
+        QTest::addColumn<QByteArray>("json");
+        QTest::addColumn<quint16>("address");
+        QTest::addColumn<qint32>("value");
+        QTest::newRow("value outside its limits")
+            << exampleWith("\"values\": [-4180]", "\"values\": [-40000]") << quint16(0x0203)
+            << qint32(-40000);
+        QByteArray variableDefault
+            = exampleWith("\"properties1\": 1024", "\"properties1\": 263168"); // bit 18
+        QTest::newRow("variable default outside the limits")
+            << variableDefault.replace("\"default\": 0", "\"default\": 40000")
+            << quint16(0x0203) << qint32(-4180);
+        QByteArray variableMax
+            = exampleWith("\"properties1\": 1024", "\"properties1\": 33792"); // bit 15: always
+        QTest::newRow("default above a variable max")
+            << variableMax.replace("\"default\": 0", "\"default\": 40000") << quint16(0x0203)
+            << qint32(-4180);
+        QTest::newRow("min equal to max")
+            << exampleWith("\"max\": 32000", "\"max\": -32000").replace("\"default\": 0",
+                                                                       "\"default\": -32000")
+            << quint16(0x0203) << qint32(-4180);
+    }
+
+    void whatADriveCanHoldLoads()
+    {
+        QFETCH(QByteArray, json);
+        QFETCH(quint16, address);
+        QFETCH(qint32, value);
+        QString error;
+        const std::optional<DriveDescription> drive = ParameterDocument::fromJson(json, &error);
+        QVERIFY2(drive, qPrintable(error));
+        QCOMPARE(drive->find(address)->values[0], value);
     }
 
     void parseErrorsGiveLineAndColumn()

@@ -2,6 +2,8 @@
 
 #include "CompareWindow.h"
 
+#include "edit/EditController.h"
+#include "main/DriveSession.h"
 #include "model/ParameterModel.h"
 
 #include <QAction>
@@ -36,8 +38,16 @@ CompareWindow *CompareFeature::showCompareWindow()
     return m_window;
 }
 
-void CompareFeature::attach(DriveSession *)
+void CompareFeature::attach(DriveSession *session)
 {
+    if (session) {
+        // The window reads the drive again after a download, and the edit controller is idle
+        // once it has: the compare window then sees what the drive holds now.
+        connect(session->editController(), &EditController::busyChanged, this, [this](bool busy) {
+            if (!busy && m_window)
+                m_window->driveReadAgain();
+        });
+    }
     if (m_window)
         m_window->updateSources();
 }

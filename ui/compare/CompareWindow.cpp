@@ -33,7 +33,7 @@ namespace {
 constexpr ComparisonRow::State kStates[] = {
     ComparisonRow::State::Equal,   ComparisonRow::State::Different,
     ComparisonRow::State::OnlyInA, ComparisonRow::State::OnlyInB,
-    ComparisonRow::State::ReadOnly,
+    ComparisonRow::State::ReadOnly, ComparisonRow::State::NotASetting,
 };
 
 QString shownPath(const QString &path)
@@ -224,7 +224,10 @@ QWidget *CompareWindow::makeFilterRow()
         const ComparisonRow::State state = kStates[i];
         auto *box = new QCheckBox(row);
         box->setObjectName(QStringLiteral("showState%1").arg(int(state)));
-        box->setChecked(true);
+        box->setChecked(m_filter->isStateShown(state));
+        if (state == ComparisonRow::State::NotASetting)
+            box->setToolTip(tr("Live and read-only values and parameters a parameter list "
+                               "leaves out: never counted as a difference"));
         connect(box, &QCheckBox::toggled, this,
                 [this, state](bool on) { m_filter->setStateShown(state, on); });
         m_stateBoxes[i] = box;
@@ -443,7 +446,8 @@ void CompareWindow::updateCounts()
 {
     const ComparisonTable &table = m_model->comparison();
     const QString names[] = { tr("&Equal (%1)"), tr("&Different (%1)"), tr("Only in A (%1)"),
-                              tr("Only in B (%1)"), tr("Read-&only (%1)") };
+                              tr("Only in B (%1)"), tr("Read-&only (%1)"),
+                              tr("&Not settings (%1)") };
     for (std::size_t i = 0; i < std::size(kStates); ++i)
         m_stateBoxes[i]->setText(names[i].arg(table.count(kStates[i])));
     int shown = 0;
@@ -518,6 +522,7 @@ void CompareWindow::writeChosen(bool toA)
             return;
         }
         m_host->writeToDrive(ChosenValues::selectionFor(source.origin, values));
+        m_waitingForDrive = true;
         showMessage(tr("%n value(s) handed to the window's download to the drive; it shows "
                        "what it writes before it does.",
                        nullptr, int(values.size())));
@@ -546,6 +551,17 @@ void CompareWindow::writeChosen(bool toA)
     case Source::SameAsA:
         return; // never a side's source once read
     }
+}
+
+void CompareWindow::driveReadAgain()
+{
+    if (!m_waitingForDrive)
+        return;
+    m_waitingForDrive = false;
+    const bool driveCompared
+        = (m_a && m_a->source == Source::Drive) || (m_b && m_b->source == Source::Drive);
+    if (driveCompared && m_host && m_host->hasDrive())
+        compare();
 }
 
 void CompareWindow::writeToFile(const Side &target, const QList<ChosenValue> &values)

@@ -52,6 +52,10 @@ public:
 
     // Writes the chosen values into side A (`toA`) or B, as the button of that side does.
     void writeChosen(bool toA);
+    // The window has read the drive's values again. After chosen values went to the drive (the
+    // download writes them, then the window reads the drive), compares again: what was
+    // written is equal now and no longer chosen.
+    void driveReadAgain();
 
 private:
     struct SideWidgets
@@ -91,7 +95,7 @@ private:
     SideWidgets m_sideB;
     QCheckBox *m_setAgainstSet = nullptr;
     QPushButton *m_compareButton = nullptr;
-    QCheckBox *m_stateBoxes[5] = {};
+    QCheckBox *m_stateBoxes[6] = {};
     QComboBox *m_groupBox = nullptr;
     QLineEdit *m_searchEdit = nullptr;
     QCheckBox *m_chosenOnlyBox = nullptr;
@@ -107,6 +111,7 @@ private:
     ComparisonFilterModel *m_filter = nullptr;
     std::optional<Side> m_a; // as last compared
     std::optional<Side> m_b;
+    bool m_waitingForDrive = false; // values were handed to the download
 };
 
 } // namespace DriveDesk

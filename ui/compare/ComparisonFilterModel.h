@@ -15,7 +15,7 @@ class ComparisonFilterModel : public ParameterFilterModel
 public:
     explicit ComparisonFilterModel(QObject *parent = nullptr);
 
-    // Every state is shown at first.
+    // Every state but NotASetting is shown at first.
     void setStateShown(ComparisonRow::State state, bool shown);
     bool isStateShown(ComparisonRow::State state) const { return m_states & bit(state); }
     // A group's id ("oP"); empty: every group.
@@ -30,7 +30,8 @@ protected:
 private:
     static quint8 bit(ComparisonRow::State state) { return quint8(1u << int(state)); }
 
-    quint8 m_states = 0xFF; // a bit per state shown
+    // A bit per state shown.
+    quint8 m_states = quint8(0xFF & ~bit(ComparisonRow::State::NotASetting));
     QString m_group;
     bool m_chosenOnly = false;
 };

@@ -228,6 +228,13 @@ QVariant ComparisonModel::rowData(int tableRow, int column, int role) const
             if (row.state == ComparisonRow::State::ReadOnly) {
                 return row.differs ? tr("read-only, different") : tr("read-only, equal");
             }
+            if (row.state == ComparisonRow::State::NotASetting) {
+                if (row.onlyInA)
+                    return tr("not a setting, only in A");
+                if (row.onlyInB)
+                    return tr("not a setting, only in B");
+                return row.differs ? tr("not a setting, different") : tr("not a setting, equal");
+            }
             return ComparisonTable::stateText(row.state);
         }
         return {};
@@ -237,6 +244,9 @@ QVariant ComparisonModel::rowData(int tableRow, int column, int role) const
         if (column == StateColumn && row.state == ComparisonRow::State::ReadOnly)
             return tr("A download does not write this parameter: neither side can be changed "
                       "to the other's value here.");
+        if (column == StateColumn && row.state == ComparisonRow::State::NotASetting)
+            return tr("A live or read-only value, or one a parameter list leaves out: shown, "
+                      "never counted as a difference.");
         return {};
     case Qt::CheckStateRole:
         if (column == IdColumn && (row.isWritableTo(true) || row.isWritableTo(false)))
@@ -251,7 +261,8 @@ QVariant ComparisonModel::rowData(int tableRow, int column, int role) const
         }
         return {};
     case Qt::ForegroundRole:
-        if (row.state == ComparisonRow::State::ReadOnly)
+        if (row.state == ComparisonRow::State::ReadOnly
+            || row.state == ComparisonRow::State::NotASetting)
             return QGuiApplication::palette().brush(QPalette::Disabled, QPalette::Text);
         return {};
     case ParameterModel::RawValueRole:
