@@ -2,18 +2,17 @@
 // any other program that talks HSP5 or DIN66019(II).
 #include "bus/SimulatedBus.h"
 #include "bus/SimulatorServer.h"
+#include "link/ConnectionOptions.h"
+#include "link/SignalNotifier.h"
 #include "link/TcpTarget.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QHostAddress>
-#include <QSocketNotifier>
 
 #include <csignal>
+#include <utility>
 #include <cstdio>
-#include <fcntl.h>
-#include <sys/socket.h>
-#include <unistd.h>
 
 using namespace DriveDesk;
 
@@ -21,8 +20,6 @@ namespace {
 
 constexpr int kBadOption = 2;
 constexpr int kCannotServe = 1;
-
-int g_signalPipe[2] = {-1, -1};
 
 QString tr(const char *text)
 {
@@ -49,13 +46,6 @@ int complain(const QString &text, int code = kBadOption)
     return code;
 }
 
-// Only async-signal-safe work here; the event loop picks the byte up.
-void onSignal(int signal)
-{
-    const char byte = char(signal);
-    [[maybe_unused]] const ssize_t written = ::write(g_signalPipe[1], &byte, 1);
-}
-
 struct Options {
     Protocol protocol = Protocol::Hsp5;
     SimulationOptions simulation;
@@ -63,22 +53,6 @@ struct Options {
     int tcpPort = -1;
     QString ptyPath;
 };
-
-bool parseInteger(const QCommandLineParser &parser, const QString &name, qint64 minimum,
-                  qint64 maximum, qint64 *value, QString *error)
-{
-    if (!parser.isSet(name))
-        return true;
-    bool ok = false;
-    const qint64 number = parser.value(name).toLongLong(&ok);
-    if (!ok || number < minimum || number > maximum) {
-        *error = tr("--%1 \"%2\" is not a whole number from %3 to %4")
-                     .arg(name, parser.value(name)).arg(minimum).arg(maximum);
-        return false;
-    }
-    *value = number;
-    return true;
-}
 
 bool parseRate(const QCommandLineParser &parser, const QString &name, double *value,
                QString *error)
@@ -123,24 +97,61 @@ bool parseListen(const QString &text, Options *options, QString *error)
     return true;
 }
 
-bool parseAddresses(const QStringList &values, Options *options, QString *error)
+// Drive addresses, repeated or as a list (1,2,3), each once.
+bool parseAddressList(const QCommandLineParser &parser, const QString &name, QList<int> *addresses,
+                      QString *error)
 {
-    QList<int> addresses;
-    for (const QString &value : values) {
+    for (const QString &value : parser.values(name)) {
         for (const QString &item : value.split(QLatin1Char(','))) {
             bool ok = false;
             const int address = item.trimmed().toInt(&ok);
-            if (!ok || address < 0 || address > 239) {
-                *error = tr("--address \"%1\" is not a drive address from 0 to 239").arg(item);
+            if (!ok || address < 0 || address > ConnectionSettings::kMaxDriveAddress) {
+                *error = tr("--%1 \"%2\" is not a drive address from 0 to %3")
+                             .arg(name, item)
+                             .arg(ConnectionSettings::kMaxDriveAddress);
                 return false;
             }
-            if (addresses.contains(address)) {
-                *error = tr("--address %1 is given twice").arg(address);
+            if (addresses->contains(address)) {
+                *error = tr("--%1 %2 is given twice").arg(name).arg(address);
                 return false;
             }
-            addresses.append(address);
+            addresses->append(address);
         }
     }
+    return true;
+}
+
+// --other-kind and --unidentified: drives of the bus, one kind each.
+bool parseKinds(const QCommandLineParser &parser, Options *options, QString *error)
+{
+    SimulationOptions &simulation = options->simulation;
+    const QString other = QStringLiteral("other-kind");
+    const QString unidentified = QStringLiteral("unidentified");
+    if (!parseAddressList(parser, other, &simulation.otherKindAddresses, error)
+        || !parseAddressList(parser, unidentified, &simulation.unidentifiedAddresses, error))
+        return false;
+    for (const auto &[name, addresses] :
+         {std::pair{other, simulation.otherKindAddresses},
+          std::pair{unidentified, simulation.unidentifiedAddresses}}) {
+        for (int address : addresses) {
+            if (!simulation.driveAddresses.contains(address)) {
+                *error = tr("--%1 %2: there is no drive %2 (see --address)").arg(name).arg(address);
+                return false;
+            }
+            if (name == other && simulation.unidentifiedAddresses.contains(address)) {
+                *error = tr("drive %1 is given both --other-kind and --unidentified").arg(address);
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+bool parseAddresses(const QCommandLineParser &parser, Options *options, QString *error)
+{
+    QList<int> addresses;
+    if (!parseAddressList(parser, QStringLiteral("address"), &addresses, error))
+        return false;
     if (addresses.isEmpty())
         addresses = {1};
     if (options->protocol == Protocol::Hsp5 && addresses.size() > 1) {
@@ -179,7 +190,7 @@ bool parseOptions(const QCommandLineParser &parser, Options *options, QString *e
         }
         options->protocol = *protocol;
     }
-    if (!parseAddresses(parser.values(QStringLiteral("address")), options, error))
+    if (!parseAddresses(parser, options, error) || !parseKinds(parser, options, error))
         return false;
 
     SimulationOptions &simulation = options->simulation;
@@ -188,13 +199,19 @@ bool parseOptions(const QCommandLineParser &parser, Options *options, QString *e
     qint64 parameters = simulation.parameterCount;
     qint64 delayMs = simulation.delayMs;
     qint64 seed = simulation.seed;
-    if (!parseInteger(parser, QStringLiteral("latency-us"), 0, 60'000'000, &latency, error)
-        || !parseInteger(parser, QStringLiteral("baud"), 50, 10'000'000, &baud, error)
-        || !parseInteger(parser, QStringLiteral("parameters"), 0, 65535, &parameters, error)
-        || !parseInteger(parser, QStringLiteral("delay-ms"), 0, 600'000, &delayMs, error)
-        || !parseInteger(parser, QStringLiteral("seed"), 0, 0xFFFFFFFFLL, &seed, error)
+    const auto parseInteger = [&parser, error](const char *name, qint64 low, qint64 high,
+                                               qint64 *value) {
+        return ConnectionOptions::integer(parser, QCommandLineOption(QString::fromLatin1(name)),
+                                          low, high, value, error);
+    };
+    if (!parseInteger("latency-us", 0, 60'000'000, &latency)
+        || !parseInteger("baud", 50, 10'000'000, &baud)
+        || !parseInteger("parameters", 0, 65535, &parameters)
+        || !parseInteger("delay-ms", 0, 600'000, &delayMs)
+        || !parseInteger("seed", 0, 0xFFFFFFFFLL, &seed)
         || !parseRate(parser, QStringLiteral("corrupt-rate"), &simulation.corruptByteRate, error)
         || !parseRate(parser, QStringLiteral("drop-rate"), &simulation.dropByteRate, error)
+        || !parseRate(parser, QStringLiteral("flip-rate"), &simulation.flipByteRate, error)
         || !parseRate(parser, QStringLiteral("delay-rate"), &simulation.delayRate, error)
         || !parseRate(parser, QStringLiteral("busy-rate"), &simulation.busyRate, error)
         || !parseRate(parser, QStringLiteral("unsolicited-rate"), &simulation.unsolicitedRate,
@@ -221,8 +238,15 @@ bool parseOptions(const QCommandLineParser &parser, Options *options, QString *e
 QString drivesText(const Options &options)
 {
     QStringList addresses;
-    for (int address : options.simulation.driveAddresses)
-        addresses.append(QString::number(address));
+    const SimulationOptions &simulation = options.simulation;
+    for (int address : simulation.driveAddresses) {
+        if (simulation.otherKindAddresses.contains(address))
+            addresses.append(tr("%1 (other kind)").arg(address));
+        else if (simulation.unidentifiedAddresses.contains(address))
+            addresses.append(tr("%1 (unidentified)").arg(address));
+        else
+            addresses.append(QString::number(address));
+    }
     const QString protocol = protocolName(options.protocol).toUpper();
     return addresses.size() == 1
                ? tr("%1 drive %2").arg(protocol, addresses.constFirst())
@@ -255,7 +279,14 @@ int main(int argc, char *argv[])
         option("hsp5-extensions", "HSP5: also know DriveDesk's services 13, 14, 19-21 and 51-53 "
                                   "(default: only those of the HSP5 specification)."),
         option("parameters", "Pad the drive to N parameters (0: the standard F5).", "N"),
-        option("corrupt-rate", "Chance per byte of one flipped bit.", "RATE"),
+        option("other-kind", "The drives at these addresses run other software: a higher "
+                             "version and more parameters.", "N"),
+        option("unidentified", "The drives at these addresses have no identification "
+                               "parameters (not an F5).", "N"),
+        option("corrupt-rate", "Chance per byte of one flipped bit, flagged as a parity error.",
+               "RATE"),
+        option("flip-rate", "Chance per byte of one flipped bit that arrives unflagged, as on "
+                            "a line without parity (both directions).", "RATE"),
         option("drop-rate", "Chance per byte of losing it.", "RATE"),
         option("delay-rate", "Chance per reply of holding it back by --delay-ms.", "RATE"),
         option("delay-ms", "How long a delayed reply is held back (default 50).", "MS"),
@@ -276,18 +307,14 @@ int main(int argc, char *argv[])
     if (!parseOptions(parser, &options, &error))
         return complain(error);
 
-    if (::socketpair(AF_UNIX, SOCK_STREAM, 0, g_signalPipe) != 0)
+    SignalNotifier signalNotifier;
+    if (!signalNotifier.watch({SIGINT, SIGTERM, SIGUSR1}))
         return complain(tr("cannot set up signal handling"), kCannotServe);
-    // A signal handler must never block, even if signals pile up.
-    ::fcntl(g_signalPipe[1], F_SETFL, ::fcntl(g_signalPipe[1], F_GETFL) | O_NONBLOCK);
-    QSocketNotifier signalNotifier(qintptr(g_signalPipe[0]), QSocketNotifier::Read);
     SimulatorServer server(options.protocol, options.simulation);
     // SIGUSR1 freezes the drives (the connection stays open, nothing is answered) and thaws
     // them again: a drive that stops answering, on demand.
-    QObject::connect(&signalNotifier, &QSocketNotifier::activated, &app, [&server] {
-        char byte = 0;
-        [[maybe_unused]] const ssize_t n = ::read(g_signalPipe[0], &byte, 1);
-        if (byte == char(SIGUSR1)) {
+    QObject::connect(&signalNotifier, &SignalNotifier::caught, &app, [&server](int signal) {
+        if (signal == SIGUSR1) {
             server.bus().setSilent(!server.bus().isSilent());
             say(server.bus().isSilent() ? tr("the drives stopped answering (SIGUSR1 again: answer)")
                                         : tr("the drives answer again"));
@@ -295,13 +322,6 @@ int main(int argc, char *argv[])
         }
         QCoreApplication::quit();
     });
-    struct sigaction action {};
-    action.sa_handler = onSignal;
-    sigemptyset(&action.sa_mask);
-    action.sa_flags = SA_RESTART;
-    ::sigaction(SIGINT, &action, nullptr);
-    ::sigaction(SIGTERM, &action, nullptr);
-    ::sigaction(SIGUSR1, &action, nullptr);
 
     const bool listening = options.tcpPort >= 0
                                ? server.listenTcp(options.tcpHost, quint16(options.tcpPort), &error)

@@ -43,7 +43,12 @@ SimulatedBus::SimulatedBus(Protocol protocol, const SimulationOptions &options)
         driveOptions.address = addresses[i];
         driveOptions.parameterCount = options.parameterCount;
         driveOptions.seed = options.seed + quint32(i);
+        driveOptions.metadataSeed = options.seed;
         driveOptions.displayTextAsCharacters = protocol != Protocol::Hsp5;
+        if (options.unidentifiedAddresses.contains(addresses[i]))
+            driveOptions.kind = SimulatedDriveKind::Unidentified;
+        else if (options.otherKindAddresses.contains(addresses[i]))
+            driveOptions.kind = SimulatedDriveKind::Other;
         Station station;
         station.address = addresses[i];
         station.drive = std::make_unique<SimulatedDrive>(driveOptions);

@@ -16,8 +16,14 @@ struct SimulationOptions {
     QList<int> driveAddresses{1}; // DIN66019(II): several drives on one bus
     int replyLatencyUs = 1000;    // time from the end of a request to the start of its reply
     bool paced = false;           // send and receive at the configured baud rate
-    qint32 baudRate = 38400;      // for pacing
+    // For pacing, and over a pty the rate the operator's port must be set to (a drive hears
+    // nothing sent at another rate).
+    qint32 baudRate = 38400;
     int parameterCount = 0;       // 0: the standard simulated F5; more pads it with generated ones
+    // The drives at these addresses are of another kind (other software, more parameters) or
+    // have no identification at all (not an F5); the others are standard F5s.
+    QList<int> otherKindAddresses;
+    QList<int> unidentifiedAddresses;
     // HSP5: the drive also knows DriveDesk's services 13, 14, 19-21 and 51-53. Off, it knows
     // exactly seed 000's services and loses step on any other, as a real drive does.
     bool hsp5Extensions = false;
@@ -25,6 +31,9 @@ struct SimulationOptions {
     // back by delayMs, answer busy (ack 6), send an unsolicited inverter request (HSP5).
     double corruptByteRate = 0;
     double dropByteRate = 0;
+    // One bit flipped in a byte that arrives unflagged, as on a line without parity: only the
+    // protocol's checksum stands between it and the decoder. Both directions.
+    double flipByteRate = 0;
     double delayRate = 0;
     int delayMs = 50;
     double busyRate = 0;
@@ -36,6 +45,11 @@ struct SimulationOptions {
 struct ConnectionSettings {
     enum class Kind : quint8 { Simulated, Serial, Tcp };
 
+    // What --address and --baud accept (seed 003: 240..255 select groups and all drives).
+    static constexpr int kMaxDriveAddress = 239;
+    static constexpr qint32 kMinimumBaudRate = 50;
+    static constexpr qint32 kMaximumBaudRate = 4'000'000;
+
     Kind kind = Kind::Simulated;
     QString device;           // serial: /dev/ttyUSB0, COM3
     QString host;             // tcp
@@ -43,6 +57,9 @@ struct ConnectionSettings {
     Protocol protocol = Protocol::Hsp5;
     int driveAddress = 1;     // DIN66019(II): 0..239
     qint32 baudRate = 38400;
+    // Serial: find the rate the drive talks at (BaudRateSearch) instead of using baudRate;
+    // baudRate then holds the rate found once connected.
+    bool automaticBaudRate = false;
     // Character format; unset means the protocol's default (8E1 HSP5, 7E1 DIN66019II).
     std::optional<QSerialPort::DataBits> dataBits;
     std::optional<QSerialPort::Parity> parity;

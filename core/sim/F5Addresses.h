@@ -17,6 +17,10 @@ constexpr std::array<quint16, 4> kReadChannel { 0x0010, 0x0012, 0x0014, 0x0016 }
 constexpr std::array<quint16, 4> kWriteChannel { 0x0018, 0x001A, 0x001C, 0x001E };
 
 constexpr quint16 kSoftwareVersion = 0x0E06; // In.06, 0.01
+// What identifies a drive (DriveIdentity): Sy.02 inverter identifier, Sy.03 power unit, In.00
+// type, In.01 rated current, In.04 voltage class, In.06/In.07 software, In.10 serial number.
+constexpr std::array<quint16, 8> kIdentification { 0x0002, 0x0003, 0x0E00, 0x0E01,
+                                                   0x0E04, 0x0E06, 0x0E07, 0x0E0A };
 
 constexpr quint16 kSetValueSource = 0x0301; // op.01: 0 op.03, 1 demo cycle
 constexpr quint16 kCommandSpeed = 0x0303; // op.03, rpm
@@ -26,8 +30,10 @@ constexpr quint16 kMinimumSpeedForward = 0x030A; // op.10
 constexpr quint16 kMaximumSpeedForward = 0x030B; // op.11
 constexpr quint16 kMinimumSpeedReverse = 0x030C; // op.12
 constexpr quint16 kMaximumSpeedReverse = 0x030D; // op.13
+constexpr quint16 kFixedSpeed1 = 0x0314; // op.20, rpm
 constexpr quint16 kAccelerationTime = 0x031C; // op.28, 0.01 s per 100 Hz
 constexpr quint16 kDecelerationTime = 0x031E; // op.30, 0.01 s per 100 Hz
+constexpr quint16 kQuickStopTime = 0x0323; // op.35, 0.01 s per 100 Hz
 
 constexpr quint16 kBoost = 0x0500; // uF.00, 0.1 %
 constexpr quint16 kCornerFrequency = 0x0501; // uF.01, 0.1 Hz

@@ -193,7 +193,7 @@ Telegram answerFieldbus(const Telegram &request, const QByteArray &identificatio
     if (!d)
         return malformed(request);
     FieldbusData result { d->function, d->index, d->subindex, {} };
-    if (request.isWrite() || d->function != kIdentifyFunction)
+    if (request.isWrite() || d->function != kIdentifyFunction || identification.isEmpty())
         return answer(request, Ack::ServiceNotAvailable, result);
     result.data = identification.left(64);
     return answer(request, Ack::Ok, result);

@@ -32,6 +32,18 @@ bool ParameterDatabase::setDefaultValue(quint16 address, qint32 value)
     return true;
 }
 
+bool ParameterDatabase::removeParameter(quint16 address)
+{
+    const int index = indexOf(address);
+    if (index < 0)
+        return false;
+    m_parameters.erase(m_parameters.begin() + index);
+    m_index.clear();
+    for (std::size_t i = 0; i < m_parameters.size(); ++i)
+        m_index.insert(m_parameters[i].address, int(i));
+    return true;
+}
+
 void ParameterDatabase::addParameter(const SimParameter &parameter)
 {
     const auto hex

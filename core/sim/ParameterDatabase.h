@@ -97,6 +97,9 @@ public:
     // Changes a parameter's default and the value it starts with in every set; false when
     // there is no such parameter.
     bool setDefaultValue(quint16 address, qint32 value);
+    // Leaves a parameter out (a drive that lacks it); false when there is no such parameter.
+    // Call finish() afterwards.
+    bool removeParameter(quint16 address);
     // Returns the index of an identical enumeration if there is one; `key` names it for
     // enumerationIndex().
     int addEnumeration(const QString &key, const Enumeration &enumeration);

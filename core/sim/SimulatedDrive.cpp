@@ -1,34 +1,24 @@
 #include "SimulatedDrive.h"
 
-#include "DatabaseLoader.h"
 #include "DriveState.h"
-#include "GeneratedParameters.h"
+#include "DriveVariety.h"
 #include "Services.h"
 
 namespace DriveDesk {
 
-namespace {
-
-std::shared_ptr<const Sim::ParameterDatabase> databaseFor(const SimulatedDriveOptions &options)
-{
-    std::shared_ptr<const Sim::ParameterDatabase> standard = Sim::standardDatabase();
-    if (options.parameterCount <= int(standard->parameters().size()))
-        return standard;
-    auto padded = std::make_shared<Sim::ParameterDatabase>(*standard);
-    Sim::addGeneratedParameters(*padded, options.parameterCount, options.seed);
-    return padded;
-}
-
-} // namespace
-
 SimulatedDrive::SimulatedDrive(SimulatedDriveOptions options)
-    : m_state(std::make_unique<Sim::DriveState>(databaseFor(options),
-                                                qBound(0, options.address, 239), options.seed))
+    : m_state(std::make_unique<Sim::DriveState>(
+          Sim::databaseFor(options.kind, options.parameterCount,
+                            options.metadataSeed.value_or(options.seed)),
+          qBound(0, options.address, 239), options.seed))
 {
     m_state->setDisplayTextAsCharacters(options.displayTextAsCharacters);
-    m_identification = QStringLiteral("DriveDesk simulated COMBIVERT F5, %1 parameters")
-                           .arg(m_state->db().parameters().size())
-                           .toLatin1();
+    Sim::giveOwnSettings(*m_state);
+    // A drive that is not an F5 has no text to identify it by either.
+    if (options.kind != SimulatedDriveKind::Unidentified)
+        m_identification = QStringLiteral("DriveDesk simulated COMBIVERT F5, %1 parameters")
+                               .arg(m_state->db().parameters().size())
+                               .toLatin1();
 }
 
 SimulatedDrive::~SimulatedDrive() = default;

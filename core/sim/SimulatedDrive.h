@@ -13,9 +13,17 @@ namespace Sim {
 class DriveState;
 }
 
+// What metadata a simulated drive has: one kind, one metadata, as the metadata cache expects.
+enum class SimulatedDriveKind : quint8 {
+    Standard,     // the simulated F5 (padded to parameterCount where asked)
+    Other,        // other software: a higher version (In.06) and more parameters
+    Unidentified, // not an F5: no identification parameters (Sy.02, Sy.03, In.00 ... In.10)
+                  // and no service 13 text
+};
+
 struct SimulatedDriveOptions
 {
-    int address = 1; // DIN66019II drive address 0..239
+    int address = 1; // DIN66019II drive address 0..239; it also picks a few user settings
     int parameterCount = 0; // 0: the standard simulated F5; N > standard: pad with generated
                             // groups/parameters to N
     quint32 seed = 1; // generated parameters, measurement noise, serial number
@@ -23,6 +31,10 @@ struct SimulatedDriveOptions
     // a DIN66019II drive as five characters (seed 003 5.15), since a 7-bit line has no room
     // for the patterns.
     bool displayTextAsCharacters = false;
+    SimulatedDriveKind kind = SimulatedDriveKind::Standard;
+    // Generated parameters come from this seed where it is given, so that drives of one kind on
+    // a bus, each with a seed of its own, have the same metadata.
+    std::optional<quint32> metadataSeed;
 };
 
 // A drive that answers telegrams like a KEB COMBIVERT F5, built from data about real F5s

@@ -103,6 +103,43 @@ private slots:
         QVERIFY2(sim.output.contains(QStringLiteral("stopped")), qPrintable(sim.output));
     }
 
+    void servesDrivesOfOtherKinds()
+    {
+        constexpr quint16 kSoftwareVersion = 0x0E06; // In.06
+        Simulator sim;
+        QVERIFY(sim.start({QStringLiteral("--listen"), QStringLiteral("tcp:127.0.0.1:0"),
+                           QStringLiteral("--protocol"), QStringLiteral("din66019ii"),
+                           QStringLiteral("--address"), QStringLiteral("2,9,11"),
+                           QStringLiteral("--other-kind"), QStringLiteral("9"),
+                           QStringLiteral("--unidentified"), QStringLiteral("11")}));
+        const QRegularExpression pattern(
+            QStringLiteral("^drivedesk-sim: DIN66019II drives 2, 9 \\(other kind\\), 11 "
+                           "\\(unidentified\\) listening on tcp:127\\.0\\.0\\.1:(\\d+)$"));
+        const QRegularExpressionMatch match = pattern.match(sim.listeningLine());
+        QVERIFY2(match.hasMatch(), qPrintable(sim.output));
+
+        ConnectionSettings settings;
+        QVERIFY(settings.parseTarget(QStringLiteral("tcp:127.0.0.1:") + match.captured(1), nullptr));
+        TcpLink link(settings);
+        Operator op(Protocol::Din66019II);
+        QList<Telegram> replies;
+        connect(&link, &Link::received, this,
+                [&](const QByteArray &bytes) { replies += op.telegrams(bytes); });
+        QSignalSpy opened(&link, &Link::opened);
+        link.open();
+        QTRY_COMPARE(opened.count(), 1);
+        quint8 invoke = 0;
+        for (int drive : {2, 9, 11}) {
+            link.send(op.encode(readValue(kSoftwareVersion, ++invoke, drive)));
+            QTRY_COMPARE(replies.size(), int(invoke));
+        }
+        QCOMPARE(replies[0].ack, Ack::Ok);
+        QCOMPARE(replies[1].ack, Ack::Ok);
+        QVERIFY(replies[0].as<ParameterValue>()->value != replies[1].as<ParameterValue>()->value);
+        QVERIFY(replies[2].ack != Ack::Ok); // drive 11 has no In.06
+        QVERIFY(sim.stop(SIGTERM));
+    }
+
     void removesItsPtyLinkOnInterrupt()
     {
         QTemporaryDir dir;
@@ -154,6 +191,12 @@ private slots:
         row("address text", with("--address one"), "one");
         row("address twice", with("--protocol din66019ii --address 3,3"), "twice");
         row("hsp5 several", with("--address 1,2"), "point to point");
+        row("other kind not on the bus", with("--protocol din66019ii --address 2,5 --other-kind 9"),
+            "no drive 9");
+        row("unidentified not on the bus", with("--unidentified 2"), "no drive 2");
+        row("unidentified range", with("--unidentified 300"), "300");
+        row("two kinds", with("--protocol din66019ii --address 2,5 --other-kind 5 --unidentified 5"),
+            "both");
         row("latency", with("--latency-us -1"), "--latency-us");
         row("baud", with("--baud 0"), "--baud");
         row("rate range", with("--corrupt-rate 1.5"), "--corrupt-rate");

@@ -1,5 +1,6 @@
 #include "BusTestSupport.h"
 #include "bus/SimulatedBus.h"
+#include "sim/SimulatedDrive.h"
 
 #include <QTest>
 
@@ -154,6 +155,51 @@ private slots:
         QCOMPARE(replies.size(), 1);
         QVERIFY(replies[0].as<ParameterValue>()->value != 11);
         QCOMPARE(bus.selection(), 2);
+    }
+
+    void drivesOnOneBusHaveSettingsOfTheirOwn()
+    {
+        constexpr quint16 kAccelerationTime = 0x031C; // op.28
+        constexpr quint16 kSoftwareVersion = 0x0E06;  // In.06
+        constexpr quint16 kInverterIdentifier = 0x0002; // Sy.02
+        SimulationOptions options = quietOptions({2, 5, 9, 11});
+        options.otherKindAddresses = {9};
+        options.unidentifiedAddresses = {11};
+        SimulatedBus bus(Protocol::Din66019II, options);
+        Operator op(Protocol::Din66019II);
+        quint8 invoke = 0;
+        const auto valueAt = [&](int drive, quint16 address) -> std::optional<qint32> {
+            const QList<Telegram> replies = ask(bus, op, readValue(address, ++invoke, drive));
+            if (replies.size() != 1 || replies[0].ack != Ack::Ok)
+                return std::nullopt;
+            return replies[0].as<ParameterValue>()->value;
+        };
+        const std::optional<qint32> two = valueAt(2, kAccelerationTime);
+        QVERIFY(two && valueAt(5, kAccelerationTime));
+        QVERIFY(*two != *valueAt(5, kAccelerationTime));
+        // A change to one drive is found on that one only.
+        QCOMPARE(ask(bus, op, writeValue(kAccelerationTime, 1234, ++invoke, 5)).size(), 1);
+        QCOMPARE(valueAt(5, kAccelerationTime), 1234);
+        QCOMPARE(valueAt(2, kAccelerationTime), two);
+        // Drive 9 runs other software; drive 11 cannot say what it is.
+        QVERIFY(*valueAt(9, kSoftwareVersion) != *valueAt(2, kSoftwareVersion));
+        QCOMPARE(bus.drive(2).parameterCount(), bus.drive(0).parameterCount() + 24);
+        QVERIFY(valueAt(2, kInverterIdentifier));
+        QVERIFY(!valueAt(11, kInverterIdentifier));
+        QVERIFY(valueAt(11, kAccelerationTime));
+    }
+
+    void paddedDrivesOnOneBusShareTheirMetadata()
+    {
+        // One kind, one metadata: the metadata cache serves a scan of drive 2 to drive 5.
+        SimulationOptions options = quietOptions({2, 5});
+        options.parameterCount = 300;
+        SimulatedBus bus(Protocol::Din66019II, options);
+        for (quint16 address = 0x2000; address < 0x2000 + 94; ++address) {
+            const Telegram limits = Telegram::request(Service::Limits, Access::Read,
+                                                      ParameterLimits{address});
+            QCOMPARE(bus.drive(1).respond(limits, 0), bus.drive(0).respond(limits, 0));
+        }
     }
 
     void dinNegativeReadDropsSelection()
