@@ -3,40 +3,63 @@
 #include "ParameterFormat.h"
 #include "SavedFile.h"
 
+#include <QCoreApplication>
+#include <QLocale>
 #include <QStringList>
 
 namespace DriveDesk {
 
 namespace {
 
-QByteArray line(const QStringList &fields)
+QByteArray line(const QStringList &fields, QChar separator)
 {
-    return csvRecord(fields).toUtf8() + "\r\n";
+    return csvRecord(fields, separator).toUtf8() + "\r\n";
+}
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("ParameterCsv", text);
 }
 
 } // namespace
 
-QString csvRecord(const QStringList &fields)
+CsvStyle CsvStyle::forSpreadsheet()
+{
+    CsvStyle style;
+    if (QLocale().decimalPoint() == QLatin1String(","))
+        style.separator = QLatin1Char(';');
+    style.translatedHeader = true;
+    return style;
+}
+
+QString csvRecord(const QStringList &fields, QChar separator)
 {
     QStringList quoted;
     quoted.reserve(fields.size());
     for (QString field : fields) {
-        if (field.contains(QLatin1Char(',')) || field.contains(QLatin1Char('"'))
+        if (field.contains(separator) || field.contains(QLatin1Char('"'))
             || field.contains(QLatin1Char('\n')) || field.contains(QLatin1Char('\r'))) {
             field.replace(QLatin1Char('"'), QLatin1String("\"\""));
             field = QLatin1Char('"') + field + QLatin1Char('"');
         }
         quoted << field;
     }
-    return quoted.join(QLatin1Char(','));
+    return quoted.join(separator);
 }
 
-QByteArray parametersAsCsv(const DriveDescription &drive)
+QByteArray parametersAsCsv(const DriveDescription &drive, const CsvStyle &style)
 {
-    QStringList heading { QStringLiteral("id"), QStringLiteral("name"), QStringLiteral("unit") };
-    for (int set = 0; set < kParameterSets; ++set)
-        heading << QStringLiteral("set %1").arg(set);
-    QByteArray csv = line(heading);
+    QStringList heading;
+    if (style.translatedHeader) {
+        heading << tr("id") << tr("name") << tr("unit");
+        for (int set = 0; set < kParameterSets; ++set)
+            heading << tr("set %1").arg(set);
+    } else {
+        heading << QStringLiteral("id") << QStringLiteral("name") << QStringLiteral("unit");
+        for (int set = 0; set < kParameterSets; ++set)
+            heading << QStringLiteral("set %1").arg(set);
+    }
+    QByteArray csv = line(heading, style.separator);
     for (const GroupDescription &group : drive.groups) {
         for (const ParameterDescription &parameter : group.parameters) {
             const ParameterFormat format(parameter);
@@ -49,15 +72,16 @@ QByteArray parametersAsCsv(const DriveDescription &drive)
                         : value     ? format.text(*value, false)
                                     : QStringLiteral("?"));
             }
-            csv += line(row);
+            csv += line(row, style.separator);
         }
     }
     return csv;
 }
 
-bool saveParametersAsCsv(const QString &path, const DriveDescription &drive, QString *error)
+bool saveParametersAsCsv(const QString &path, const DriveDescription &drive, QString *error,
+                         const CsvStyle &style)
 {
-    return SavedFile::write(path, parametersAsCsv(drive), error);
+    return SavedFile::write(path, parametersAsCsv(drive, style), error);
 }
 
 } // namespace DriveDesk

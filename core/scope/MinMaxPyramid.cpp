@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <limits>
 
 namespace DriveDesk {
 
@@ -53,26 +54,31 @@ MinMaxPyramid::MinMax MinMaxPyramid::minMax(const SampleStore &store, int channe
     Q_ASSERT(begin < end && end <= m_count && m_count <= store.count());
     Q_ASSERT(channel >= 0 && channel < ScopeSample::kChannelCount);
     const auto &levels = m_levels[channel];
-    const qint32 first = store.value(begin, channel);
-    MinMax result{first, first};
-    // Greedy from the left: each step takes the largest block aligned at `index` that ends by
-    // `end`; block sizes climb to the coarsest that fits and fall again towards the end, at
-    // most two blocks a level and fewer than kBaseSize raw samples at either end.
+    MinMax result{std::numeric_limits<qint32>::max(), std::numeric_limits<qint32>::min()};
+    const auto addRaw = [&](qsizetype from, qsizetype to) {
+        const auto [low, high] = store.valueRange(channel, from, to);
+        result = merged(result, {low, high});
+    };
+    // The raw samples up to the first block boundary, in one pass along the store's column.
     qsizetype index = begin;
-    while (index < end) {
+    const qsizetype aligned = std::min(end, (begin + kBaseSize - 1) / kBaseSize * kBaseSize);
+    if (index < aligned) {
+        addRaw(index, aligned);
+        index = aligned;
+    }
+    // Greedy from there: each step takes the largest block aligned at `index` that ends by
+    // `end`; block sizes climb to the coarsest that fits and fall again towards the end, at
+    // most two blocks a level; fewer than kBaseSize raw samples are left at the end.
+    while (end - index >= kBaseSize) {
         const int alignment = index == 0 ? 63 : std::countr_zero(quint64(index));
         const int fits = 63 - std::countl_zero(quint64(end - index));
         const int shift = std::min(alignment, fits);
-        if (shift < kBaseShift) {
-            const qint32 value = store.value(index, channel);
-            result = merged(result, {value, value});
-            ++index;
-            continue;
-        }
         const int level = std::min<int>(shift - kBaseShift, int(levels.size()) - 1);
         result = merged(result, levels[level][index >> (kBaseShift + level)]);
         index += qsizetype(1) << (kBaseShift + level);
     }
+    if (index < end)
+        addRaw(index, end);
     return result;
 }
 

@@ -1,5 +1,8 @@
 #include "SampleStore.h"
 
+#include <algorithm>
+#include <limits>
+
 namespace DriveDesk {
 
 // Columns rather than an array of ScopeSample: the struct pads to 24 bytes, the columns take 20.
@@ -65,6 +68,39 @@ qint32 SampleStore::value(qsizetype index, int channel) const
     const Chunk &chunk = *m_chunks[index / kChunkSize];
     const qsizetype offset = index % kChunkSize;
     return channel < 2 ? chunk.wide[channel][offset] : chunk.narrow[channel - 2][offset];
+}
+
+namespace {
+
+template<typename T>
+void widen(const T *values, qsizetype count, qint32 &low, qint32 &high)
+{
+    for (qsizetype i = 0; i < count; ++i) {
+        low = std::min<qint32>(low, values[i]);
+        high = std::max<qint32>(high, values[i]);
+    }
+}
+
+} // namespace
+
+std::pair<qint32, qint32> SampleStore::valueRange(int channel, qsizetype begin,
+                                                  qsizetype end) const
+{
+    Q_ASSERT(begin >= 0 && begin < end && end <= m_count);
+    Q_ASSERT(channel >= 0 && channel < ScopeSample::kChannelCount);
+    qint32 low = std::numeric_limits<qint32>::max();
+    qint32 high = std::numeric_limits<qint32>::min();
+    while (begin < end) {
+        const Chunk &chunk = *m_chunks[begin / kChunkSize];
+        const qsizetype offset = begin % kChunkSize;
+        const qsizetype count = std::min(end - begin, kChunkSize - offset);
+        if (channel < 2)
+            widen(chunk.wide[channel].data() + offset, count, low, high);
+        else
+            widen(chunk.narrow[channel - 2].data() + offset, count, low, high);
+        begin += count;
+    }
+    return {low, high};
 }
 
 qsizetype SampleStore::lowerBound(qint64 ms) const

@@ -3,6 +3,7 @@
 #include "ScopeSample.h"
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace DriveDesk {
@@ -45,6 +46,10 @@ public:
     ScopeSample at(qsizetype index) const;
     qint64 time(qsizetype index) const;
     qint32 value(qsizetype index, int channel) const;
+    // The lowest and highest raw value of a channel over [begin, end) (not empty), read along
+    // the chunks' columns: a tight loop over contiguous values instead of a chunk lookup per
+    // sample (the ends of each pixel column, MinMaxPyramid::minMax()).
+    std::pair<qint32, qint32> valueRange(int channel, qsizetype begin, qsizetype end) const;
 
     // The samples with from <= time <= to, by binary search: O(log count()).
     IndexRange indexRange(qint64 fromMs, qint64 toMs) const;

@@ -10,6 +10,11 @@ bool ScopeBuffer::append(const ScopeSample &sample)
     return true;
 }
 
+bool ScopeBuffer::repeatsLast(const ScopeSample &sample) const
+{
+    return !m_samples.isEmpty() && m_samples.at(m_samples.count() - 1) == sample;
+}
+
 void ScopeBuffer::clear()
 {
     m_samples.clear();

@@ -13,6 +13,10 @@ public:
     // False if the sample is earlier than the last one (e.g. a ScopeClock Backward tick):
     // nothing is stored.
     bool append(const ScopeSample &sample);
+    // An answer with the time and the values of the last sample is that sample again (polled
+    // twice within one of the drive's milliseconds): recorders store it once, and rates count
+    // it once.
+    bool repeatsLast(const ScopeSample &sample) const;
     void clear();
 
     const SampleStore &samples() const { return m_samples; }

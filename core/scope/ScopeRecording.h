@@ -6,6 +6,8 @@
 #include <QDateTime>
 #include <QString>
 
+#include <memory>
+
 namespace DriveDesk {
 
 // One scope recording: its samples with their min/max levels, what each channel carries, and
@@ -26,6 +28,10 @@ struct ScopeRecording
     // The channels worth showing and exporting: those the drive delivers, or all four where it
     // delivers none (offline records taken under an assignment that has changed since).
     QList<int> recordedChannels() const;
+    // The samples from fromMs to toMs, both included, as a recording of their own: the same
+    // channels and source, `started` moved on by the time left out before them. A single shot
+    // keeps its window of the wait for the trigger this way.
+    std::unique_ptr<ScopeRecording> excerpt(qint64 fromMs, qint64 toMs) const;
     // The display number of sample `index` on `channel`.
     double displayValue(qsizetype index, int channel) const
     {

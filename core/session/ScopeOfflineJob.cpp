@@ -1,5 +1,7 @@
 #include "ScopeOfflineJob.h"
 
+#include "link/ConnectionSettings.h"
+#include "protocol/Codec.h"
 #include "scope/ScopeRecording.h"
 
 #include <QCoreApplication>
@@ -43,6 +45,12 @@ std::unique_ptr<ScopeRecording> offlineRecording(const ScopeOfflineRecords &reco
 ScopeOfflineJob::ScopeOfflineJob(qint64 periodMs)
     : m_periodMs(std::max<qint64>(1, periodMs))
 {
+}
+
+bool ScopeOfflineJob::isCarriedBy(const ConnectionSettings &settings)
+{
+    return makeCodec(settings.protocol, CodecOptions{settings.hsp5Extensions})
+        ->supports(Service::ScopeRecord, Access::Read);
 }
 
 void ScopeOfflineJob::start()

@@ -11,6 +11,8 @@
 
 namespace DriveDesk {
 
+struct ConnectionSettings;
+
 // The drive's offline scope records as read.
 struct ScopeOfflineRecords
 {
@@ -40,6 +42,10 @@ class ScopeOfflineJob : public RequestJob<ScopeOfflineRecords>
 {
 public:
     explicit ScopeOfflineJob(qint64 periodMs = 1);
+
+    // Whether the connection carries service 21, so that reading the records is worth
+    // offering: the codec the client speaks with decides, as it does when the job runs.
+    static bool isCarriedBy(const ConnectionSettings &settings);
 
 private:
     void start() override;

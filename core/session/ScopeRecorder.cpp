@@ -69,7 +69,10 @@ void ScopeRecorder::takeSamples()
             durationReached = true;
             break;
         }
-        if (!buffer.append(ScopeSample{tick.time, poll.wide, poll.narrow}))
+        const ScopeSample sample{tick.time, poll.wide, poll.narrow};
+        if (buffer.repeatsLast(sample))
+            ++m_status.repeated;
+        else if (!buffer.append(sample))
             ++m_status.discarded;
     }
     const qsizetype added = buffer.count() - first;

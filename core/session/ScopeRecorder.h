@@ -29,10 +29,12 @@ struct ScopeRecorderOptions
 struct ScopeRecorderStatus
 {
     qint64 samples = 0;
+    // Distinct samples: a repeated answer (ScopeBuffer::repeatsLast()) counts once.
     double rateHz = 0;    // samples a second over about the last second
     double averageHz = 0; // over the whole recording, by the drive's clock
     ScopePollCounts counts;
     qint64 discarded = 0; // answers whose timestamp went back: not stored
+    qint64 repeated = 0;  // answers that repeated the sample before: stored once
     // Why recording to the file stopped (the recording in memory goes on); empty while it
     // works or when there is no file.
     QString fileError;

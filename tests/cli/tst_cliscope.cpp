@@ -3,6 +3,7 @@
 #include <QFile>
 #include <QTemporaryDir>
 
+#include <cmath>
 #include <csignal>
 
 using namespace DriveDesk::CliTest;
@@ -45,6 +46,15 @@ private slots:
         QCOMPARE(lines.first(), QStringLiteral("Time [ms],op.11 Maximum speed forward [1/min],"
                                                "ru.09 Output voltage [V],"
                                                "dr.04 Rated motor voltage [V]"));
+        // An answer repeating the sample before (the same drive millisecond, the same values)
+        // is one row, and the rate counts the rows there are.
+        for (qsizetype i = 2; i < lines.size(); ++i)
+            QVERIFY2(lines.at(i) != lines.at(i - 1), qPrintable(lines.at(i)));
+        const double spanMs = lines.constLast().section(QLatin1Char(','), 0, 0).toDouble();
+        QVERIFY(spanMs > 0);
+        QVERIFY2(std::abs(rate.captured(1).toDouble() - double(lines.size() - 2) * 1000.0 / spanMs)
+                     < 0.11,
+                 qPrintable(run.out));
         qint64 previous = -1;
         for (const QString &line : lines.mid(1)) {
             const QStringList fields = line.split(QLatin1Char(','));

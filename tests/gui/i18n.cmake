@@ -5,3 +5,7 @@ drivedesk_add_test(NAME tst_translations LABELS gui
 target_compile_definitions(tst_translations PRIVATE
     DRIVEDESK_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     DRIVEDESK_TRANSLATIONS_DIR="${PROJECT_SOURCE_DIR}/translations")
+# Alt+letter reaches one thing in each place: menus, the window with its docks, every dialog the
+# menus open, in English and German.
+drivedesk_add_test(NAME tst_mnemonics LABELS gui
+    SOURCES gui/tst_mnemonics.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui drivedesk_translations)

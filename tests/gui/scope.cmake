@@ -5,4 +5,5 @@ drivedesk_add_test(NAME tst_scopechart LABELS gui
 # The scope dock in the window: channels chosen in the panel and read back, recording, cursors,
 # CSV of all and of the visible range, a recording file viewed with no drive, remembered settings.
 drivedesk_add_test(NAME tst_scopedock LABELS gui
-    SOURCES gui/tst_scopedock.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui)
+    SOURCES gui/tst_scopedock.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui
+    drivedesk_translations)

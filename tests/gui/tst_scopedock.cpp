@@ -5,15 +5,21 @@
 #include "scope/ScopeFileReader.h"
 #include "scope/ScopeRecording.h"
 #include "scope/ScopeChannelPanel.h"
+#include "scope/QCustomPlotInclude.h"
 #include "scope/ScopeChart.h"
 #include "scope/ScopeDock.h"
+#include "Translations.h"
 
 #include <QAction>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSpinBox>
 #include <QTemporaryDir>
+#include <QToolBar>
 
 using namespace DriveDesk;
 using namespace DriveDesk::MainWindowTest;
@@ -68,6 +74,42 @@ class TestScopeDock : public QObject
     Q_OBJECT
 private:
     IsolatedSettings m_settings;
+
+    // Opened while the telegram monitor is docked, at the window's first size: the chart keeps
+    // a height and a width to read, its axes do not run into each other, and the tool bars show
+    // every button (none behind the overflow arrow).
+    void checkTheChartsRoomBesideTheMonitor(Language language)
+    {
+        m_settings.clear();
+        MainWindow window(language);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(connectAndRead(window, simulated()));
+        window.findChild<QAction *>(QStringLiteral("monitorAction"))->trigger();
+        window.findChild<QAction *>(QStringLiteral("scopeViewAction"))->trigger();
+        auto *dock = window.findChild<ScopeDock *>();
+        QTRY_VERIFY(dock->isVisible());
+        QCustomPlot *plot = dock->chart()->plot();
+        QTest::qWait(50); // the docks' layout settles with the event loop
+        plot->replot();
+        QVERIFY2(plot->axisRect()->height() >= 150,
+                 qPrintable(QStringLiteral("the traces get %1 px high").arg(plot->axisRect()->height())));
+        QVERIFY2(plot->axisRect()->width() >= 250,
+                 qPrintable(QStringLiteral("the traces get %1 px wide").arg(plot->axisRect()->width())));
+        for (QToolBar *bar : dock->findChildren<QToolBar *>()) {
+            const auto *more = bar->findChild<QWidget *>(QStringLiteral("qt_toolbar_ext_button"));
+            QVERIFY2(!more || !more->isVisible(), qPrintable(bar->windowTitle()));
+        }
+        // The legend names every channel whole, above the traces.
+        for (int i = 0; i < plot->legend->itemCount(); ++i) {
+            QCPAbstractLegendItem *item = plot->legend->item(i);
+            if (!item)
+                continue; // an empty cell of the grid
+            QVERIFY2(item->outerRect().width() >= item->minimumOuterSizeHint().width(),
+                     qPrintable(QString::number(i)));
+            QVERIFY(!item->outerRect().intersects(plot->axisRect()->rect()));
+        }
+    }
 
 private slots:
     void recordsTheChannelsChosenInTheDock()
@@ -230,8 +272,24 @@ private slots:
         QTest::qWait(800); // 64 records, one each 10 ms
 
         QAction *offline = action(*dock, "scopeOfflineAction");
+        QVERIFY(offline->isVisible());
         QVERIFY(offline->isEnabled());
+        // The recording shown is in memory only: the dock asks before replacing it, without
+        // blocking, and a cancel keeps it.
+        const qsizetype recorded = dock->recording()->buffer.count();
         offline->trigger();
+        auto *question = dock->findChild<QMessageBox *>(QStringLiteral("scopeReplaceQuestion"));
+        QVERIFY(question);
+        QTRY_VERIFY(question->isVisible());
+        QVERIFY(!question->isModal() || question->windowModality() != Qt::ApplicationModal);
+        QVERIFY(offline->isEnabled()); // nothing read yet
+        question->button(QMessageBox::Cancel)->click();
+        QTRY_VERIFY(!dock->findChild<QMessageBox *>(QStringLiteral("scopeReplaceQuestion")));
+        QCOMPARE(dock->recording()->buffer.count(), recorded);
+        offline->trigger();
+        question = dock->findChild<QMessageBox *>(QStringLiteral("scopeReplaceQuestion"));
+        QVERIFY(question);
+        question->button(QMessageBox::Yes)->click();
         QVERIFY(!offline->isEnabled()); // while it reads
         QTRY_VERIFY_WITH_TIMEOUT(offline->isEnabled(), kWaitMs);
         QVERIFY2(status(*dock).startsWith(QStringLiteral("64 ")), qPrintable(status(*dock)));
@@ -240,6 +298,79 @@ private slots:
         QCOMPARE(recording.channels[0].id, QStringLiteral("ru.18"));
         QVERIFY(recording.source.contains(QStringLiteral("one a millisecond")));
         QVERIFY(recording.buffer.samples().value(0, 0) > 400); // a DC link's volts
+
+        // Read but not saved: asked again before another read replaces them.
+        offline->trigger();
+        QVERIFY(dock->findChild<QMessageBox *>(QStringLiteral("scopeReplaceQuestion")));
+    }
+
+    // HSP5 (seed 000) has no service 21: the offline records are not offered.
+    void offlineRecordsAreOfferedWhereTheProtocolHasThem()
+    {
+        m_settings.clear();
+        MainWindow window;
+        window.show();
+        QVERIFY(connectAndRead(window, simulated()));
+        auto *dock = window.findChild<ScopeDock *>();
+        QAction *offline = action(*dock, "scopeOfflineAction");
+        QVERIFY(!offline->isVisible());
+        QVERIFY(!offline->isEnabled());
+    }
+
+    // A single shot keeps the shot and its pre-trigger time, not the wait before it: what is
+    // saved and exported is the shot, the chart marks where it fired, and the cursors are in it.
+    void aSingleShotKeepsTheShot()
+    {
+        m_settings.clear();
+        MainWindow window;
+        window.resize(1400, 900);
+        window.show();
+        QVERIFY(connectAndRead(window, simulated()));
+        auto *dock = window.findChild<ScopeDock *>();
+        chooseSource(*dock, 0, kDcLinkVoltage);
+        QAction *record = action(*dock, "scopeRecordAction");
+        record->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(dock->recording()->buffer.count() >= 300, kWaitMs);
+        ScopeChart *chart = dock->chart();
+        const qint64 waitStart = dock->recording()->firstTime();
+        chart->setCursorTime(0, double(waitStart));
+        chart->setCursorTime(1, double(waitStart + 5));
+
+        // A level the DC link's ripple crosses every few ms; a shot of 200 ms, 20 % before.
+        const ScopeRecording &waited = *dock->recording();
+        const double level = waited.displayValue(waited.buffer.count() - 1, 0);
+        dock->findChild<QDoubleSpinBox *>(QStringLiteral("scopeTriggerLevel"))->setValue(level);
+        dock->findChild<QSpinBox *>(QStringLiteral("scopeTriggerPre"))->setValue(20);
+        dock->findChild<QDoubleSpinBox *>(QStringLiteral("scopeTriggerWindow"))->setValue(0.2);
+        action(*dock, "scopeTriggerAction")->trigger(); // armed while recording: from now on
+        QTRY_VERIFY_WITH_TIMEOUT(!dock->isRecording(), kWaitMs);
+
+        const ScopeRecording &shot = *dock->recording();
+        const std::optional<qint64> trigger = chart->triggerTime();
+        QVERIFY(trigger);
+        QVERIFY2(shot.firstTime() >= *trigger - 40 && shot.firstTime() < *trigger,
+                 qPrintable(QStringLiteral("%1 .. %2, trigger %3")
+                                .arg(shot.firstTime()).arg(shot.lastTime()).arg(*trigger)));
+        QVERIFY2(shot.lastTime() <= *trigger + 160 && shot.lastTime() > *trigger + 100,
+                 qPrintable(QStringLiteral("%1 .. %2, trigger %3")
+                                .arg(shot.firstTime()).arg(shot.lastTime()).arg(*trigger)));
+        QVERIFY(shot.firstTime() > waitStart);
+        QCOMPARE(chart->cursorTime(0), std::optional<double>(double(*trigger)));
+        QCOMPARE(chart->cursorTime(1), std::optional<double>(double(shot.lastTime())));
+        const ScopeTimeRange visible = chart->visibleTimeRange();
+        QVERIFY(visible.fromMs <= shot.firstTime() && visible.toMs >= shot.lastTime());
+        QVERIFY2(status(*dock).contains(QStringLiteral("Shot")), qPrintable(status(*dock)));
+
+        QTemporaryDir dir;
+        const QString csv = dir.filePath(QStringLiteral("shot.csv"));
+        QString error;
+        QVERIFY2(dock->exportCsv(csv, false, &error), qPrintable(error));
+        QCOMPARE(csvLines(csv).size(), shot.buffer.count() + 1);
+        const QString saved = dir.filePath(QStringLiteral("shot.ddscope"));
+        QVERIFY2(dock->saveRecording(saved, &error), qPrintable(error));
+        ScopeRecording reread;
+        QVERIFY2(readScopeFile(saved, reread, &error), qPrintable(error));
+        QCOMPARE(reread.buffer.count(), shot.buffer.count());
     }
 
     void theSourcesAndLooksAreRemembered()
@@ -294,6 +425,18 @@ private slots:
         shot->trigger(); // called off: the recording stops, what it has stays
         QTRY_VERIFY_WITH_TIMEOUT(!dock->isRecording(), kWaitMs);
         QVERIFY(dock->recording()->buffer.count() > 0);
+    }
+
+    void theChartKeepsItsRoomBesideTheMonitor()
+    {
+        checkTheChartsRoomBesideTheMonitor(Language::English);
+    }
+
+    // Last: the German catalogue stays installed for the rest of the program.
+    void theChartKeepsItsRoomBesideTheMonitorInGerman()
+    {
+        QVERIFY(installTranslations(QStringLiteral("de")));
+        checkTheChartsRoomBesideTheMonitor(Language::German);
     }
 };
 

@@ -478,6 +478,21 @@ private slots:
         QCOMPARE(shown.rowCount(), 0);
         m_monitor->setFilterText(QStringLiteral("op.11"));
         QCOMPARE(shown.rowCount(), 4);
+
+        // A parameter file opened (the session closed) or another drive scanned: the telegrams
+        // captured before keep the names of their time, those captured from now on have none.
+        m_monitor->setFilterText({});
+        const QStringList before = meaningsOf(shown, QStringLiteral("← drive"));
+        m_monitor->setDrive(nullptr);
+        QCOMPARE(meaningsOf(shown, QStringLiteral("← drive")), before);
+        for (const QString &answer : before)
+            QVERIFY2(!answer.contains(QStringLiteral("030Bh")), qPrintable(answer));
+        QVERIFY(finished(client.readValue(kMaxSpeedForward, 0x01)));
+        QTRY_COMPARE(meaningsOf(shown, QStringLiteral("← drive")).size(), before.size() + 1);
+        QVERIFY2(meaningsOf(shown, QStringLiteral("← drive")).constLast().startsWith(
+                     QStringLiteral("030Bh")),
+                 qPrintable(meaningsOf(shown, QStringLiteral("← drive")).constLast()));
+        QCOMPARE(meaningsOf(shown, QStringLiteral("← drive")).mid(0, before.size()), before);
     }
 
     // A drive that stops answering: every attempt that timed out is an error row, naming the

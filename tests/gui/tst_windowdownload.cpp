@@ -8,7 +8,9 @@
 #include <QAction>
 #include <QCheckBox>
 #include <QFile>
+#include <QHeaderView>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QStatusBar>
@@ -22,6 +24,7 @@ using namespace DriveDesk::MainWindowTest;
 namespace {
 
 constexpr quint16 kSoftwareVersion = 0x0E06; // In.06
+constexpr quint16 kEnergySaving = 0x0506;    // uF.06, plaintexts in three bit fields
 
 void setValue(DriveDescription &drive, quint16 address, int set, qint32 raw)
 {
@@ -211,6 +214,63 @@ private slots:
         // A folder that is not there: a message, and no file.
         QVERIFY(!m_window->findChild<ExportFeature *>()->exportCsv(m_dir.filePath(QStringLiteral("none/x.csv"))));
         QVERIFY(m_window->statusBar()->currentMessage().contains(QStringLiteral("Not exported")));
+        // ... and a box titled by what the user did, not by another command.
+        auto *box = m_window->findChild<QMessageBox *>(QStringLiteral("fileProblem"));
+        QVERIFY(box);
+        QTRY_VERIFY(box->isVisible());
+        QCOMPARE(box->windowTitle(), QStringLiteral("Export as CSV"));
+        QVERIFY(box->text().contains(QStringLiteral("Not exported")));
+        box->close();
+    }
+
+    // A German window exports as a German spreadsheet reads it: ';' between the fields, the
+    // decimal comma unquoted. (The command line keeps ',' and '.', tst_cliread.)
+    void aGermanExportIsForAGermanSpreadsheet()
+    {
+        const QLocale before;
+        QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+        const QString path = m_dir.filePath(QStringLiteral("drive-de.csv"));
+        const bool exported = m_window->findChild<ExportFeature *>()->exportCsv(path);
+        QLocale::setDefault(before);
+        QVERIFY(exported);
+        QFile csv(path);
+        QVERIFY(csv.open(QIODevice::ReadOnly));
+        const QStringList lines = QString::fromUtf8(csv.readAll()).split(QStringLiteral("\r\n"), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 1 + kSimulatedParameters);
+        QCOMPARE(lines.first().count(QLatin1Char(';')), 10);
+        QVERIFY(!lines.first().contains(QLatin1Char(',')));
+        QVERIFY2(lines.contains(QStringLiteral("op.05;Demo cycle period;s;20,0;;;;;;;")),
+                 qPrintable(lines.filter(QStringLiteral("op.05")).join(QLatin1Char('\n'))));
+    }
+
+    // Long plaintexts on both sides: "To write" stays in view, the texts whole in tool tips.
+    void longPlaintextsLeaveToWriteInView()
+    {
+        const QString file = fileWith(QStringLiteral("energy.json"), [](DriveDescription &d) {
+            setValue(d, kEnergySaving, 0, 0x92); // at actual = set value, ramp / 2, shown
+        });
+        QVERIFY(!file.isEmpty());
+        feature()->downloadFile(file);
+        QVERIFY(planned());
+        QCOMPARE(part<QLabel>("downloadIntro")->text(),
+                 QStringLiteral("Writes the values of %1 to the drive, each read back.")
+                     .arg(QDir::toNativeSeparators(file)));
+        auto *list = part<QTreeWidget>("downloadList");
+        QTRY_VERIFY(list->isVisible());
+        const QTreeWidgetItem *energy = nullptr;
+        for (int i = 0; i < list->topLevelItemCount(); ++i) {
+            if (list->topLevelItem(i)->text(0) == QStringLiteral("uF.06"))
+                energy = list->topLevelItem(i);
+        }
+        QVERIFY2(energy, qPrintable(rows().join(QLatin1Char('\n'))));
+        QCOMPARE(energy->toolTip(4), energy->text(4));
+        QHeaderView *header = list->header();
+        const int right = header->sectionViewportPosition(4) + header->sectionSize(4);
+        QVERIFY2(right <= list->viewport()->width(),
+                 qPrintable(QStringLiteral("'To write' ends at %1 of %2 px; '%3' -> '%4'")
+                                .arg(right)
+                                .arg(list->viewport()->width())
+                                .arg(energy->text(3), energy->text(4))));
     }
 
     void aCorruptFileIsNamedAndNothingStarts()
@@ -225,6 +285,13 @@ private slots:
         const QString message = m_window->statusBar()->currentMessage();
         QVERIFY2(message.contains(QStringLiteral("broken.json")) && message.contains(QStringLiteral("line")),
                  qPrintable(message));
+        // Shown in a box as File > Open shows it, not only in the status bar.
+        auto *box = m_window->findChild<QMessageBox *>(QStringLiteral("fileProblem"));
+        QVERIFY(box);
+        QTRY_VERIFY(box->isVisible());
+        QCOMPARE(box->windowTitle(), QStringLiteral("Download File to Drive"));
+        QCOMPARE(box->text(), message);
+        box->close();
     }
 };
 

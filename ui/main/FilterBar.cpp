@@ -29,12 +29,12 @@ FilterBar::FilterBar(QWidget *parent)
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_search, 1);
 
-    m_differsAction = addFilter(tr("&Differs from default"), tr("&Differs from Default"),
+    m_differsAction = addFilter(tr("D&iffers from default"), tr("&Differs from Default"),
                                 tr("Only settings whose value differs from the default (not read-only or live values)"));
     m_favouritesAction = addFilter(tr("F&avourites"), tr("F&avourites Only"),
                                    tr("Only the parameters marked with a star"));
     m_hideAboveLevelAction = addFilter(
-        tr("&Hide above password level"), tr("&Hide Parameters above Password Level"),
+        tr("Hide above &password level"), tr("&Hide Parameters above Password Level"),
         tr("Hide parameters the password level in force does not open; otherwise they are "
            "greyed out"));
     m_rawAction = addFilter(tr("Ra&w values"), tr("Show &Raw Values"),

@@ -81,7 +81,7 @@ void MainWindow::createActions()
     });
 
     m_driveInfoAction = new QAction(themedIcon("help-about", QStyle::SP_MessageBoxInformation),
-                                    tr("Drive &Information..."), this);
+                                    tr("Drive Inf&ormation..."), this);
     m_driveInfoAction->setObjectName(QStringLiteral("driveInfoAction"));
     m_driveInfoAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
     connect(m_driveInfoAction, &QAction::triggered, this, &MainWindow::showDriveInformation);

@@ -121,7 +121,7 @@ QStringList TrafficFormat::fields(const TrafficEntry &entry, Clock clock)
     result.reserve(FieldCount);
     result << time(entry.record.msecsSinceEpoch, clock) << direction(entry.record.kind)
            << hex(entry.record.bytes) << characters(entry)
-           << flattened(entry.described ? entry.meaning : meaning(entry, nullptr));
+           << flattened(entry.described ? entry.meaning : meaning(entry, entry.drive.get()));
     return result;
 }
 

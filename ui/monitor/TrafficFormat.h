@@ -6,6 +6,8 @@
 #include <QCoreApplication>
 #include <QStringList>
 
+#include <memory>
+
 namespace DriveDesk {
 
 // One telegram as the monitor keeps it: the client's record and the protocol it was spoken in.
@@ -13,6 +15,9 @@ struct TrafficEntry
 {
     TrafficRecord record;
     Protocol protocol = Protocol::Hsp5;
+    // The parameters known when the telegram was captured: its meaning names them, whatever
+    // drive or file comes later (null: ids from the address, raw values).
+    std::shared_ptr<const DriveDescription> drive;
     // What the meaning column shows, once TrafficModel made it (on first use: a row never shown
     // costs nothing).
     QString meaning;
@@ -46,7 +51,7 @@ public:
     // client's note, and the request it is about. `drive` names the parameters; it may be null.
     static QString meaning(const TrafficEntry &entry, const DriveDescription *drive);
     // Every field of an entry, in Field order; line breaks in the meaning become spaces. The
-    // meaning is the entry's own where the model made it, otherwise made without a drive.
+    // meaning is the entry's own where the model made it, otherwise made with its drive.
     static QStringList fields(const TrafficEntry &entry, Clock clock);
     // The visible fields joined by tabs: one line of a copy or a text file.
     static QString tabSeparated(const QStringList &fields);

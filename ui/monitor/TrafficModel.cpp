@@ -54,19 +54,13 @@ void TrafficModel::setCapacity(int capacity)
 void TrafficModel::setDrive(std::shared_ptr<const DriveDescription> drive)
 {
     m_drive = std::move(drive);
-    for (TrafficEntry &row : m_rows) {
-        row.described = false;
-        row.meaning.clear();
-    }
-    if (!m_rows.empty())
-        emit dataChanged(index(0, MeaningColumn), index(rowCount() - 1, MeaningColumn));
 }
 
 const QString &TrafficModel::meaning(int row) const
 {
     TrafficEntry &item = m_rows[std::size_t(row)];
     if (!item.described) {
-        item.meaning = TrafficFormat::meaning(item, m_drive.get());
+        item.meaning = TrafficFormat::meaning(item, item.drive.get());
         item.described = true;
     }
     return item.meaning;
@@ -79,7 +73,7 @@ void TrafficModel::append(const TrafficRecord &record)
 
 void TrafficModel::append(const TrafficRecord &record, Protocol protocol)
 {
-    m_waiting.push_back({ record, protocol, {}, false });
+    m_waiting.push_back({ record, protocol, m_drive, {}, false });
     ++m_received;
     // More waiting than the rows can hold: the oldest would be pushed out on arrival anyway.
     if (m_waiting.size() > std::size_t(m_capacity)) {

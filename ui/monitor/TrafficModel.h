@@ -57,8 +57,9 @@ public:
     // Forgets every row, every waiting record and the counts.
     void clear();
 
-    // The drive whose parameters the meanings name (by id, name and value as shown); null
-    // before a scan: ids from the address and raw values. Every meaning is made again.
+    // The drive whose parameters the meanings of the telegrams captured from now on name (by id,
+    // name and value as shown); null before a scan: ids from the address and raw values. Rows
+    // already captured keep the drive of their time.
     void setDrive(std::shared_ptr<const DriveDescription> drive);
     const DriveDescription *drive() const { return m_drive.get(); }
 

@@ -32,9 +32,16 @@ ScopeChart::ScopeChart(QWidget *parent)
     m_plot->xAxis->setLabel(tr("Time [s]"));
     m_plot->xAxis->setRange(0, m_rollSeconds);
     m_plot->yAxis->setRange(0, 1);
+    // The legend names the channels in a row of its own above the traces, never over them.
     m_plot->legend->setVisible(true);
-    m_plot->legend->setBrush(QColor(255, 255, 255, 220));
-    m_plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
+    m_plot->axisRect()->insetLayout()->take(m_plot->legend);
+    m_plot->axisRect()->insetLayout()->simplify();
+    m_plot->plotLayout()->insertRow(0);
+    m_plot->plotLayout()->addElement(0, 0, m_plot->legend);
+    m_plot->plotLayout()->setRowStretchFactor(0, 0.001);
+    m_plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    m_plot->legend->setBorderPen(Qt::NoPen);
+    m_plot->legend->setMargins(QMargins(4, 2, 4, 0));
     m_plot->setMouseTracking(true);
     m_plot->setFocusPolicy(Qt::StrongFocus);
     m_plot->setToolTip(helpText());
@@ -42,6 +49,15 @@ ScopeChart::ScopeChart(QWidget *parent)
 
     m_traces = std::make_unique<ScopeTraces>(m_plot);
     m_cursors = new ScopeCursors(m_plot);
+    m_triggerLine = new QCPItemStraightLine(m_plot);
+    m_triggerLine->setPen(QPen(Qt::darkRed, 1, Qt::DashLine));
+    m_triggerLine->setVisible(false);
+    m_triggerLabel = new QCPItemText(m_plot);
+    m_triggerLabel->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
+    m_triggerLabel->setPositionAlignment(Qt::AlignTop | Qt::AlignLeft);
+    m_triggerLabel->setColor(Qt::darkRed);
+    m_triggerLabel->setText(tr("Trigger"));
+    m_triggerLabel->setVisible(false);
     m_cursorTable = new ScopeCursorTable(this);
 
     auto *layout = new QVBoxLayout(this);
@@ -78,6 +94,7 @@ ScopeChart::~ScopeChart() = default;
 void ScopeChart::setRecording(const ScopeRecording *recording)
 {
     m_recording = recording;
+    m_triggerMs.reset();
     if (m_frozenCount)
         m_frozenCount = recording ? recording->buffer.count() : 0;
     reread(true);
@@ -206,6 +223,25 @@ std::optional<double> ScopeChart::cursorTime(int which) const
     return m_cursors->time(which);
 }
 
+void ScopeChart::setTriggerTime(std::optional<qint64> timeMs)
+{
+    m_triggerMs = timeMs;
+    placeTriggerMark();
+    replotSoon();
+}
+
+void ScopeChart::placeTriggerMark()
+{
+    m_triggerLine->setVisible(m_triggerMs.has_value());
+    m_triggerLabel->setVisible(m_triggerMs.has_value());
+    if (!m_triggerMs)
+        return;
+    const double seconds = double(*m_triggerMs - m_originMs) / 1000.0;
+    m_triggerLine->point1->setCoords(seconds, 0);
+    m_triggerLine->point2->setCoords(seconds, 1);
+    m_triggerLabel->position->setCoords(seconds, 0);
+}
+
 QCPGraph *ScopeChart::graph(int channel) const
 {
     return m_traces->graph(channel);
@@ -234,6 +270,7 @@ void ScopeChart::followOrigin()
         return;
     m_originMs = origin;
     m_cursors->setOriginMs(origin);
+    placeTriggerMark();
 }
 
 void ScopeChart::refreshData()
@@ -265,8 +302,27 @@ void ScopeChart::refreshData()
     updateReadout();
 }
 
+void ScopeChart::fitLegend()
+{
+    // The names in one row while they fit, in two otherwise: never cut.
+    QCPLegend *legend = m_plot->legend;
+    int needed = legend->margins().left() + legend->margins().right();
+    for (int i = 0; i < legend->itemCount(); ++i) {
+        // A cell of the grid may be empty.
+        if (const QCPAbstractLegendItem *item = legend->item(i))
+            needed += item->minimumOuterSizeHint().width() + legend->columnSpacing();
+    }
+    const int wrap = needed <= m_plot->width() ? 0 : 2;
+    if (wrap == legend->wrap())
+        return;
+    legend->setWrap(wrap);
+    legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
+    replotSoon();
+}
+
 void ScopeChart::layoutDone()
 {
+    fitLegend();
     // The axis rect changed width (a resize, wider tick labels): one column a pixel again.
     if (m_recording && m_plot->axisRect()->width() != m_filledColumns) {
         m_dataStale = true;

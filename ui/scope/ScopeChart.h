@@ -12,6 +12,8 @@
 
 class QCPAxis;
 class QCPGraph;
+class QCPItemStraightLine;
+class QCPItemText;
 class QCustomPlot;
 class QMouseEvent;
 class QWheelEvent;
@@ -117,6 +119,10 @@ public:
     void setCursorTime(int which, std::optional<double> timeMs);
     std::optional<double> cursorTime(int which) const;
     ScopeCursorReadout cursorReadout() const { return m_readout; }
+    // Where a single shot fired, marked on the chart (nullopt: no mark). A new recording
+    // clears it.
+    void setTriggerTime(std::optional<qint64> timeMs);
+    std::optional<qint64> triggerTime() const { return m_triggerMs; }
 
     // The chart as it is shown, as a PNG image or a PDF page. False, with a message naming
     // the file in *error, when it cannot be written.
@@ -163,6 +169,8 @@ private:
     void replotSoon(); // with the next pass of the event loop
     void fitValueAxes();
     void updateReadout();
+    void placeTriggerMark();
+    void fitLegend();
     qsizetype shownSampleCount() const;
     bool checkWritable(const QString &path, QString *error) const;
 
@@ -171,6 +179,9 @@ private:
     std::unique_ptr<ScopeTraces> m_traces;
     ScopeCursors *m_cursors = nullptr;
     ScopeCursorTable *m_cursorTable = nullptr;
+    QCPItemStraightLine *m_triggerLine = nullptr;
+    QCPItemText *m_triggerLabel = nullptr;
+    std::optional<qint64> m_triggerMs;
     int m_refreshHz = kDefaultRefreshHz;
     QTimer m_refreshTimer;
     QTimer m_soonTimer;

@@ -9,6 +9,7 @@
 #include "scope/ScopeCsv.h"
 #include "scope/ScopeFileReader.h"
 #include "scope/ScopeRecording.h"
+#include "session/ScopeOfflineJob.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -21,6 +22,8 @@
 #include <QSplitter>
 #include <QToolBar>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace DriveDesk {
 
@@ -44,14 +47,24 @@ ScopeDock::ScopeDock(WindowFrame &frame, QWidget *parent)
     m_chart = new ScopeChart(content);
     m_chart->setObjectName(QStringLiteral("scopeChart"));
     m_chart->setRecording(m_recording.get());
-    m_chart->setMinimumHeight(240); // a chart to read, not a strip
+    // A chart to read, not a strip: beside another dock (the telegram monitor) the splitter
+    // and the window give room to it rather than squeeze it to a few pixels.
+    m_chart->setMinimumSize(320, 280);
     m_panel = new ScopeChannelPanel(content);
     m_panel->setObjectName(QStringLiteral("scopeChannels"));
     buildToolBars();
-    for (QToolBar *bar : content->findChildren<QToolBar *>(Qt::FindDirectChildrenOnly))
+    // The tool bars whole, none of their buttons behind an overflow arrow: the dock asks the
+    // window for their width (German texts are longer).
+    int barsWidth = 0;
+    for (QToolBar *bar : content->findChildren<QToolBar *>(Qt::FindDirectChildrenOnly)) {
         layout->addWidget(bar);
+        barsWidth = std::max(barsWidth, bar->sizeHint().width());
+    }
+    content->setMinimumWidth(barsWidth + layout->contentsMargins().left()
+                             + layout->contentsMargins().right());
 
     auto *splitter = new QSplitter(Qt::Horizontal, content);
+    splitter->setChildrenCollapsible(false);
     auto *side = new QWidget(splitter);
     auto *sideLayout = new QVBoxLayout(side);
     sideLayout->setContentsMargins(0, 0, 0, 0);
@@ -149,7 +162,11 @@ void ScopeDock::updateActions()
     const bool busy = isRecording() || m_assigning || m_readingOffline;
     m_recordAction->setEnabled(connected && m_hasDrive && !m_readingOffline);
     m_recordAction->setChecked(isRecording() || m_assigning);
-    m_offlineAction->setEnabled(connected && m_hasDrive && !busy);
+    // Offered only where the connection carries service 21 (DIN66019II; HSP5 only with
+    // DriveDesk's extensions).
+    const bool offlineCarried = !m_client || ScopeOfflineJob::isCarriedBy(m_client->settings());
+    m_offlineAction->setVisible(offlineCarried);
+    m_offlineAction->setEnabled(connected && m_hasDrive && !busy && offlineCarried);
     m_triggerAction->setEnabled(connected && m_hasDrive && !m_readingOffline);
     m_toFileAction->setEnabled(!busy);
     m_panel->setSourcesEditable(!busy);
@@ -173,6 +190,7 @@ bool ScopeDock::openRecording(const QString &path, QString *error)
     if (!readScopeFile(path, *recording, error, &warnings))
         return false;
     replaceRecording(std::move(recording));
+    m_unsaved = false;
     m_chart->showAll();
     showStatus(warnings.isEmpty()
                    ? tr("%1: %n sample(s)", nullptr, int(m_recording->buffer.count())).arg(path)

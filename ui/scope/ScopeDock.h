@@ -8,6 +8,7 @@
 #include <QDockWidget>
 #include <QPointer>
 
+#include <functional>
 #include <memory>
 
 class QAction;
@@ -85,7 +86,9 @@ private:
     void armTrigger(bool on);
     ScopeTriggerSettings triggerSettings() const;
     void triggerChannelChanged();
+    void keepShot();
     void readOfflineRecords();
+    void readOfflineRecordsNow();
     void readOfflineRecordsOf(const ScopeChannels &channels);
     void offlineRecordsRead(const ScopeOfflineRecords &records, const ScopeChannels &channels);
     void replaceRecording(std::unique_ptr<ScopeRecording> recording);
@@ -96,6 +99,9 @@ private:
     void chooseRecordingToSave();
     void chooseCsv(bool visibleOnly);
     void chooseImage(bool pdf);
+    // Asks, without blocking, before an unsaved recording is replaced; `proceed` on yes.
+    void confirmReplacing(const QString &title, const QString &text,
+                          const std::function<void()> &proceed);
 
     WindowFrame &m_frame;
     QPointer<DriveClient> m_client;
@@ -106,6 +112,7 @@ private:
     ScopeTrigger m_trigger;
     bool m_assigning = false;
     bool m_readingOffline = false;
+    bool m_unsaved = false; // the recording shown is in memory only
     QString m_recordFile; // where the next recording also goes; empty: memory only
 
     ScopeChart *m_chart = nullptr;

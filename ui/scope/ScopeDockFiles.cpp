@@ -11,6 +11,8 @@
 #include <QAction>
 #include <QDateTime>
 #include <QFile>
+#include <QMessageBox>
+#include <QPushButton>
 
 #include <filesystem>
 
@@ -74,6 +76,7 @@ void ScopeDock::chooseRecordingToSave()
                                   QString error;
                                   if (!saveRecording(path, &error))
                                       return showStatus(error, true);
+                                  m_unsaved = false;
                                   showStatus(tr("Saved to %1.").arg(path));
                               });
 }
@@ -118,6 +121,22 @@ void ScopeDock::chooseCsv(bool visibleOnly)
                                       return showStatus(error, true);
                                   showStatus(tr("Exported to %1.").arg(path));
                               });
+}
+
+void ScopeDock::confirmReplacing(const QString &title, const QString &text,
+                                 const std::function<void()> &proceed)
+{
+    auto *box = new QMessageBox(QMessageBox::Question, title, text,
+                                QMessageBox::Yes | QMessageBox::Cancel, this);
+    box->setObjectName(QStringLiteral("scopeReplaceQuestion"));
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->button(QMessageBox::Yes)->setText(tr("&Replace"));
+    box->setDefaultButton(QMessageBox::Cancel);
+    connect(box, &QMessageBox::finished, this, [box, proceed] {
+        if (box->standardButton(box->clickedButton()) == QMessageBox::Yes)
+            proceed();
+    });
+    box->open();
 }
 
 void ScopeDock::chooseImage(bool pdf)

@@ -115,8 +115,9 @@ void ScopeDock::samplesAppended()
     if (now == ScopeTrigger::State::Triggered && before != now)
         showStatus(tr("Triggered; recording the rest of the shot..."));
     if (now == ScopeTrigger::State::Complete) {
+        // The shot is cut out of the recording once the polls on their way are in
+        // (recordingFinished()).
         m_triggerAction->setChecked(false);
-        m_chart->showTimeRange(m_trigger.shotStart(), m_trigger.shotEnd());
         stopRecording();
     }
 }
@@ -144,6 +145,11 @@ void ScopeDock::recordingFinished(const ScopePollEnd &end)
 {
     const ScopeRecorderStatus status = m_recorder->status();
     recorderStatus(status);
+    m_unsaved = m_recordFile.isEmpty() || !status.fileError.isEmpty();
+    if (m_trigger.state() == ScopeTrigger::State::Complete) {
+        keepShot();
+        return updateActions();
+    }
     if (m_triggerAction->isChecked()) {
         m_triggerAction->setChecked(false);
         m_trigger.disarm();
@@ -161,6 +167,34 @@ void ScopeDock::recordingFinished(const ScopePollEnd &end)
                        .arg(end.counts.failed));
     }
     updateActions();
+}
+
+void ScopeDock::keepShot()
+{
+    // The shot and its pre-trigger time, not the wait before it nor what came after.
+    const qint64 triggerMs = m_trigger.triggerTime();
+    const qint64 preMs = m_trigger.settings().preTriggerMs();
+    const qint64 postMs = m_trigger.settings().postTriggerMs();
+    replaceRecording(m_recording->excerpt(m_trigger.shotStart(), m_trigger.shotEnd()));
+    m_trigger.disarm();
+    m_chart->setTriggerTime(triggerMs);
+    m_chart->showTimeRange(triggerMs - preMs, triggerMs + postMs);
+    // Cursors left in the wait would read nothing: the first goes to the trigger, the second
+    // to the shot's end.
+    if (m_chart->cursorTime(0))
+        m_chart->setCursorTime(0, double(triggerMs));
+    if (m_chart->cursorTime(1))
+        m_chart->setCursorTime(1, double(m_recording->lastTime()));
+    QString text = tr("Shot of %n sample(s) around the trigger.", nullptr,
+                      int(m_recording->buffer.count()));
+    if (!m_recordFile.isEmpty()) {
+        QString error;
+        if (!saveRecording(m_recordFile, &error))
+            return showStatus(tr("%1 %2").arg(text, error), true);
+        m_unsaved = false;
+        text = tr("%1 Saved to %2.").arg(text, m_recordFile);
+    }
+    showStatus(text);
 }
 
 void ScopeDock::armTrigger(bool on)
@@ -207,6 +241,19 @@ void ScopeDock::readOfflineRecords()
 {
     if (!m_client || isRecording() || m_readingOffline)
         return;
+    if (m_unsaved && m_recording->buffer.count() > 0) {
+        return confirmReplacing(tr("Read Offline Records"),
+                                tr("The recording shown is not saved. The offline records "
+                                   "replace it."),
+                                [this] { readOfflineRecordsNow(); });
+    }
+    readOfflineRecordsNow();
+}
+
+void ScopeDock::readOfflineRecordsNow()
+{
+    if (!m_client || isRecording() || m_readingOffline)
+        return;
     m_readingOffline = true;
     updateActions();
     showStatus(tr("Reading the offline records..."));
@@ -244,6 +291,7 @@ void ScopeDock::offlineRecordsRead(const ScopeOfflineRecords &records,
     if (!records.samples.isEmpty()) {
         replaceRecording(offlineRecording(
             records, channels, m_client ? m_client->settings().displayName() : QString()));
+        m_unsaved = true;
         m_chart->showAll();
     }
     m_readingOffline = false;

@@ -95,15 +95,17 @@ void ScopeDock::buildToolBars()
         ->setObjectName(QStringLiteral("scopeCsvVisibleAction"));
     fileMenu->addAction(tr("Export Chart as PNG..."), this, [this] { chooseImage(false); });
     fileMenu->addAction(tr("Export Chart as PDF..."), this, [this] { chooseImage(true); });
-    auto *fileButton = new QToolButton(bar);
-    fileButton->setText(tr("Recording"));
-    fileButton->setMenu(fileMenu);
-    fileButton->setPopupMode(QToolButton::InstantPopup);
-    bar->addWidget(fileButton);
 
     auto *triggerBar = new QToolBar(tr("Trigger"), m_chart->parentWidget());
     triggerBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
     buildTriggerBar(triggerBar);
+    // The files at the end of the second row: the two rows are about as long.
+    triggerBar->addSeparator();
+    auto *fileButton = new QToolButton(triggerBar);
+    fileButton->setText(tr("Recording"));
+    fileButton->setMenu(fileMenu);
+    fileButton->setPopupMode(QToolButton::InstantPopup);
+    triggerBar->addWidget(fileButton);
 }
 
 void ScopeDock::buildTriggerBar(QToolBar *bar)
@@ -116,7 +118,10 @@ void ScopeDock::buildTriggerBar(QToolBar *bar)
     bar->addWidget(new QLabel(tr("Channel"), bar));
     m_triggerChannel = new QComboBox(bar);
     m_triggerChannel->setObjectName(QStringLiteral("scopeTriggerChannel"));
-    m_triggerChannel->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    // A width of its own, not its titles': the tool bar's width, which the dock asks the
+    // window for, stays what it was when the dock was made. Long titles are cut.
+    m_triggerChannel->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_triggerChannel->setMinimumContentsLength(12);
     for (int channel = 0; channel < ScopeChart::kChannels; ++channel)
         m_triggerChannel->addItem(QString::number(channel + 1));
     connect(m_triggerChannel, &QComboBox::currentIndexChanged, this,

@@ -246,14 +246,22 @@ void ScopeTraces::updateStyle(int channel)
 
 void ScopeTraces::updateLabels()
 {
-    QStringList shared;
+    // The shared axis names the units of its channels; the legend names the channels. Their
+    // names joined would not fit the axis' height.
+    QStringList units;
     for (int channel = 0; channel < kChannels; ++channel) {
-        if (m_traces[channel].ownAxis)
+        if (m_traces[channel].ownAxis) {
             m_traces[channel].ownAxis->setLabel(label(channel));
-        else if (isDrawn(channel))
-            shared.append(label(channel));
+            continue;
+        }
+        const QString unit = m_channels.at(channel).unit();
+        if (isDrawn(channel) && !unit.isEmpty() && !units.contains(unit))
+            units.append(unit);
     }
-    m_plot->yAxis->setLabel(shared.join(QStringLiteral("; ")));
+    m_plot->yAxis->setLabel(units.isEmpty()
+                                ? QString()
+                                : tr("Value [%1]", "the units of the channels on the shared axis")
+                                      .arg(units.join(QStringLiteral(", "))));
 }
 
 QString ScopeTraces::label(int channel) const

@@ -9,6 +9,7 @@
 #include <QPlainTextEdit>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QResizeEvent>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
@@ -28,7 +29,8 @@ DownloadDialog::DownloadDialog(DownloadRun *run, const QString &source, QWidget 
     setObjectName(QStringLiteral("downloadDialog"));
     setWindowTitle(tr("Download to the Drive"));
     auto *layout = new QVBoxLayout(this);
-    auto *title = new QLabel(tr("Writes the values of %1 to the drive, each read back.").arg(source));
+    auto *title = new QLabel(tr("Writes %1 to the drive, each read back.").arg(source));
+    title->setObjectName(QStringLiteral("downloadIntro"));
     title->setWordWrap(true);
     layout->addWidget(title);
 
@@ -45,7 +47,7 @@ DownloadDialog::DownloadDialog(DownloadRun *run, const QString &source, QWidget 
     m_problems->setTextFormat(Qt::RichText);
     m_problems->hide();
     layout->addWidget(m_problems);
-    m_force = new QCheckBox(tr("&Write all the same (the checks above are overruled)"));
+    m_force = new QCheckBox(tr("Write all the same (the checks above are &overruled)"));
     m_force->setObjectName(QStringLiteral("downloadForce"));
     m_force->hide();
     connect(m_force, &QCheckBox::toggled, this, &DownloadDialog::changeOptions);
@@ -72,7 +74,14 @@ DownloadDialog::DownloadDialog(DownloadRun *run, const QString &source, QWidget 
     m_list->setAlternatingRowColors(true);
     m_list->setHeaderLabels({ tr("Parameter"), tr("Name"), tr("Sets"), tr("Drive now"),
                               tr("To write"), tr("Note") });
-    m_list->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    // Long plaintexts must not push "To write" out of the dialog: the name takes the room
+    // there is, the values and notes a capped width (fitValueColumns()), cut in the middle
+    // and whole in their tool tips.
+    QHeaderView *header = m_list->header();
+    header->setStretchLastSection(false);
+    header->setSectionResizeMode(QHeaderView::ResizeToContents);
+    header->setSectionResizeMode(Name, QHeaderView::Stretch);
+    m_list->setTextElideMode(Qt::ElideMiddle);
     m_list->hide();
     layout->addWidget(m_list, 1);
     m_summary = new QLabel;
@@ -122,14 +131,18 @@ void DownloadDialog::showPlan(const DownloadPlan &plan)
                                                       line.then,
                                                       line.always ? tr("always written")
                                                                   : QString() });
+        for (int column = 0; column < Columns; ++column)
+            item->setToolTip(column, item->text(column));
         m_list->addTopLevelItem(item);
     }
     for (const DownloadSkip &skip : plan.skipped) {
         auto *item = new QTreeWidgetItem(
             QStringList{ skip.id, skip.name, QString(), QString(), QString(),
                          tr("left: %1").arg(skip.reason) });
-        for (int column = 0; column < Columns; ++column)
+        for (int column = 0; column < Columns; ++column) {
             item->setForeground(column, palette().brush(QPalette::Disabled, QPalette::Text));
+            item->setToolTip(column, item->text(column));
+        }
         m_list->addTopLevelItem(item);
     }
     QStringList problems;
@@ -139,6 +152,8 @@ void DownloadDialog::showPlan(const DownloadPlan &plan)
     m_problems->setText(tr("<b>The file does not fit the drive:</b><ul>%1</ul>")
                             .arg(problems.join(QString())));
     m_force->setVisible(!plan.problems.isEmpty());
+
+    fitValueColumns();
 
     const int values = plan.valueCount();
     m_summary->setText(plan.summary() + QLatin1Char('.'));
@@ -151,6 +166,26 @@ void DownloadDialog::showPlan(const DownloadPlan &plan)
     if (m_write->isEnabled())
         m_write->setDefault(true);
     layout()->activate(); // the button's new text takes its room at once
+}
+
+void DownloadDialog::fitValueColumns()
+{
+    // Each column as wide as its widest text, the values and notes at most a fifth of the
+    // dialog, so that every column stays in view.
+    QHeaderView *header = m_list->header();
+    const int cap = std::max(100, width() / 5);
+    for (const int column : { Now, Then, Note }) {
+        header->setSectionResizeMode(column, QHeaderView::Interactive);
+        m_list->resizeColumnToContents(column);
+        header->resizeSection(column, std::min(cap, header->sectionSize(column)));
+    }
+}
+
+void DownloadDialog::resizeEvent(QResizeEvent *event)
+{
+    QDialog::resizeEvent(event);
+    if (m_list->isVisible())
+        fitValueColumns();
 }
 
 void DownloadDialog::changeOptions()

@@ -24,7 +24,8 @@ class DownloadDialog : public QDialog
 {
     Q_OBJECT
 public:
-    // `run` becomes the dialog's; `source` names the file for the user.
+    // `run` becomes the dialog's; `source` names what is written for the user ("the values
+    // of FILE", "the values chosen in the compare window").
     DownloadDialog(DownloadRun *run, const QString &source, QWidget *parent = nullptr);
 
     DownloadRun *run() const { return m_run; }
@@ -43,6 +44,12 @@ private:
     void showReport(const DownloadReport &report);
     void changeOptions();
     void write();
+    void fitValueColumns();
+
+protected:
+    void resizeEvent(QResizeEvent *event) override;
+
+private:
 
     DownloadRun *const m_run;
     QLabel *m_status = nullptr;

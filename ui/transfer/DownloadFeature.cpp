@@ -1,6 +1,7 @@
 #include "DownloadFeature.h"
 
 #include "DownloadDialog.h"
+#include "FileProblem.h"
 
 #include "edit/EditController.h"
 #include "main/DriveSession.h"
@@ -17,7 +18,7 @@ DownloadFeature::DownloadFeature(WindowFrame &frame, QObject *parent)
     : WindowFeature(frame, parent)
 {
     m_action = new QAction(themedIcon("document-send", QStyle::SP_ArrowUp),
-                           tr("&Download File to Drive..."), this);
+                           tr("Down&load File to Drive..."), this);
     m_action->setObjectName(QStringLiteral("downloadAction"));
     m_action->setToolTip(tr("Write a parameter file's values to the drive, after a last look "
                             "at what differs"));
@@ -57,10 +58,12 @@ void DownloadFeature::downloadFile(const QString &path)
     QString error;
     const std::optional<DriveDescription> file = ParameterDocument::load(path, &error);
     if (!file) {
-        frame().showMessage(tr("Nothing was written: %1").arg(error));
+        const QString text = tr("Nothing was written: %1").arg(error);
+        frame().showMessage(text);
+        showFileProblem(frame().frameWidget(), tr("Download File to Drive"), text);
         return;
     }
-    download(*file, {}, QDir::toNativeSeparators(path));
+    download(*file, {}, tr("the values of %1").arg(QDir::toNativeSeparators(path)));
 }
 
 void DownloadFeature::downloadSelection(const DriveDescription &selection, const QString &source)
@@ -68,7 +71,8 @@ void DownloadFeature::downloadSelection(const DriveDescription &selection, const
     DownloadOptions options;
     options.selection = true;
     download(selection, options,
-             source.isEmpty() ? tr("the values chosen in the compare window") : source);
+             source.isEmpty() ? tr("the values chosen in the compare window")
+                              : tr("the values chosen from %1").arg(source));
 }
 
 void DownloadFeature::download(const DriveDescription &file, const DownloadOptions &options,

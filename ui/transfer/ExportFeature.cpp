@@ -1,5 +1,7 @@
 #include "ExportFeature.h"
 
+#include "FileProblem.h"
+
 #include "model/ParameterModel.h"
 #include "parameters/ParameterCsv.h"
 
@@ -37,8 +39,11 @@ bool ExportFeature::exportCsv(const QString &path)
 {
     const DriveDescription shown = frame().model()->description();
     QString error;
-    if (!saveParametersAsCsv(path, shown, &error)) {
-        frame().showMessage(tr("Not exported: %1. The file on disk is as it was.").arg(error));
+    // As the user's spreadsheet reads it: a German one wants ';' between decimal commas.
+    if (!saveParametersAsCsv(path, shown, &error, CsvStyle::forSpreadsheet())) {
+        const QString text = tr("Not exported: %1. The file on disk is as it was.").arg(error);
+        frame().showMessage(text);
+        showFileProblem(frame().frameWidget(), tr("Export as CSV"), text);
         return false;
     }
     frame().showMessage(tr("Exported %n parameter(s) to %1.", nullptr, shown.parameterCount())
