@@ -4,7 +4,6 @@
 #include "SimulatedBus.h"
 
 #include <QStringList>
-#include <QTimer>
 
 namespace DriveDesk {
 
@@ -13,21 +12,7 @@ SimulatedLink::SimulatedLink(const ConnectionSettings &settings, QObject *parent
     , m_bus(std::make_unique<SimulatedBus>(settings.protocol, settings.simulation))
     , m_clock(new BusClock(m_bus.get(), this))
 {
-    connect(m_clock, &BusClock::transmit, this,
-            [this](const QByteArray &bytes, const QList<qsizetype> &lineErrors) {
-                qsizetype from = 0;
-                for (qsizetype at : lineErrors) {
-                    if (!m_open)
-                        return;
-                    if (at > from)
-                        emit received(bytes.mid(from, at - from));
-                    from = at;
-                    if (m_open)
-                        emit lineError(tr("parity error on a received character"));
-                }
-                if (m_open && from < bytes.size())
-                    emit received(bytes.mid(from));
-            });
+    connect(m_clock, &BusClock::transmit, this, &SimulatedLink::handOnWithLineErrors);
 }
 
 SimulatedLink::~SimulatedLink()
@@ -36,38 +21,33 @@ SimulatedLink::~SimulatedLink()
     delete m_clock;
 }
 
-void SimulatedLink::open()
+void SimulatedLink::openTransport()
 {
-    close();
-    const quint64 attempt = ++m_attempt;
-    QTimer::singleShot(0, this, [this, attempt] {
-        if (attempt != m_attempt)
-            return;
-        m_open = true;
-        emit opened();
-    });
+    reportOutcomeLater();
 }
 
-void SimulatedLink::close()
+void SimulatedLink::closeTransport()
 {
-    ++m_attempt;
-    m_open = false;
     m_clock->resetLine();
 }
 
-bool SimulatedLink::isOpen() const
+void SimulatedLink::transmit(const QByteArray &bytes)
 {
-    return m_open;
+    m_clock->receive(bytes);
 }
 
-void SimulatedLink::send(const QByteArray &bytes)
+// lineErrors: the indices before which the line flagged a character.
+void SimulatedLink::handOnWithLineErrors(const QByteArray &bytes,
+                                         const QList<qsizetype> &lineErrors)
 {
-    if (!m_open) {
-        qWarning("DriveDesk: %d bytes not sent: %s is not open", int(bytes.size()),
-                 qPrintable(description()));
-        return;
+    qsizetype from = 0;
+    for (qsizetype at : lineErrors) {
+        if (at > from)
+            handOn(bytes.mid(from, at - from));
+        from = at;
+        handOnLineError(tr("parity error on a received character"));
     }
-    m_clock->receive(bytes);
+    handOn(bytes.mid(from));
 }
 
 QString SimulatedLink::description() const

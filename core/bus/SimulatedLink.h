@@ -19,20 +19,19 @@ public:
     explicit SimulatedLink(const ConnectionSettings &settings, QObject *parent = nullptr);
     ~SimulatedLink() override;
 
-    void open() override;
-    void close() override;
-    bool isOpen() const override;
-    void send(const QByteArray &bytes) override;
     QString description() const override;
 
     // The drives behind the link, with their counters (for tests and benchmarks).
     SimulatedBus &bus() { return *m_bus; }
 
 private:
+    void openTransport() override;
+    void closeTransport() override;
+    void transmit(const QByteArray &bytes) override;
+    void handOnWithLineErrors(const QByteArray &bytes, const QList<qsizetype> &lineErrors);
+
     std::unique_ptr<SimulatedBus> m_bus;
     BusClock *m_clock = nullptr;
-    quint64 m_attempt = 0; // a queued opened() of an abandoned open() is not reported
-    bool m_open = false;
 };
 
 } // namespace DriveDesk

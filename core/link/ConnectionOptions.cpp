@@ -14,12 +14,12 @@ bool ConnectionOptions::hasTargetDetails(const QCommandLineParser &parser) const
 }
 
 bool ConnectionOptions::integer(const QCommandLineParser &parser, const QCommandLineOption &option,
-                                int low, int high, int *value, QString *error)
+                                qint64 low, qint64 high, qint64 *value, QString *error)
 {
     if (!parser.isSet(option))
         return true;
     bool ok = false;
-    const int n = parser.value(option).toInt(&ok);
+    const qint64 n = parser.value(option).toLongLong(&ok);
     if (!ok || n < low || n > high) {
         *error = tr("--%1 %2: expected a number from %3 to %4")
                      .arg(option.names().constFirst(), parser.value(option))
@@ -28,6 +28,16 @@ bool ConnectionOptions::integer(const QCommandLineParser &parser, const QCommand
         return false;
     }
     *value = n;
+    return true;
+}
+
+bool ConnectionOptions::integer(const QCommandLineParser &parser, const QCommandLineOption &option,
+                                int low, int high, int *value, QString *error)
+{
+    qint64 n = *value;
+    if (!integer(parser, option, qint64(low), qint64(high), &n, error))
+        return false;
+    *value = int(n);
     return true;
 }
 
@@ -65,10 +75,18 @@ bool ConnectionOptions::settings(const QCommandLineParser &parser, ConnectionSet
         result.protocol = *protocol;
     }
     int baudRate = result.baudRate;
-    if (!integer(parser, m_address, 0, 239, &result.driveAddress, error)
-        || !integer(parser, m_baud, 50, 4000000, &baudRate, error))
+    // A serial line finds its rate unless told one; elsewhere the rate is the simulated
+    // drive's or the device server's business.
+    const bool automatic = !parser.isSet(m_baud)
+                           || parser.value(m_baud).compare(QLatin1String("auto"), Qt::CaseInsensitive) == 0;
+    if (!integer(parser, m_address, 0, ConnectionSettings::kMaxDriveAddress, &result.driveAddress,
+                 error)
+        || (!automatic
+            && !integer(parser, m_baud, ConnectionSettings::kMinimumBaudRate,
+                        ConnectionSettings::kMaximumBaudRate, &baudRate, error)))
         return false;
     result.baudRate = baudRate;
+    result.automaticBaudRate = automatic && result.kind == ConnectionSettings::Kind::Serial;
     if (parser.isSet(m_hsp5Extensions)) {
         if (result.protocol != Protocol::Hsp5) {
             *error = tr("--hsp5-extensions needs --protocol hsp5");

@@ -33,6 +33,8 @@ public:
 
     // An integer option within low..high; true and *value untouched when it is absent.
     static bool integer(const QCommandLineParser &parser, const QCommandLineOption &option,
+                        qint64 low, qint64 high, qint64 *value, QString *error);
+    static bool integer(const QCommandLineParser &parser, const QCommandLineOption &option,
                         int low, int high, int *value, QString *error);
 
 private:

@@ -1,7 +1,5 @@
 #include "SerialLink.h"
 
-#include <QTimer>
-
 namespace DriveDesk {
 
 namespace {
@@ -63,20 +61,11 @@ SerialLink::SerialLink(const ConnectionSettings &settings, QObject *parent)
     , m_port(new QSerialPort(this))
 {
     connect(m_port, &QSerialPort::errorOccurred, this, &SerialLink::onErrorOccurred);
-    connect(m_port, &QSerialPort::readyRead, this, &SerialLink::onReadyRead);
+    handOnReceived(m_port);
 }
 
-SerialLink::~SerialLink()
+void SerialLink::openTransport()
 {
-    m_open = false;
-    m_port->disconnect(this);
-    m_port->close();
-}
-
-void SerialLink::open()
-{
-    close();
-    const quint64 attempt = ++m_attempt;
     m_port->setPortName(m_settings.device);
     m_port->setBaudRate(m_settings.baudRate);
     m_port->setDataBits(m_settings.effectiveDataBits());
@@ -88,48 +77,23 @@ void SerialLink::open()
     if (m_settings.device.isEmpty())
         reason = tr("no serial device given");
     else if (!m_port->open(QIODevice::ReadWrite))
-        reason = explain(m_port->error()) + QStringLiteral(" (%1)").arg(m_port->errorString());
+        reason = reasonFor(m_port->error());
     else
         m_port->clear();
-
-    // The outcome is reported from the event loop, as for the links that open asynchronously.
-    QTimer::singleShot(0, this, [this, attempt, reason] {
-        if (attempt != m_attempt)
-            return;
-        if (!reason.isEmpty()) {
-            fail(reason);
-            return;
-        }
-        if (m_port->isOpen()) {
-            m_open = true;
-            emit opened();
-        }
-    });
+    reportOutcomeLater(reason);
 }
 
-void SerialLink::close()
+void SerialLink::closeTransport()
 {
-    ++m_attempt;
-    m_open = false;
     if (m_port->isOpen())
         m_port->close();
     m_port->clearError();
 }
 
-bool SerialLink::isOpen() const
+void SerialLink::transmit(const QByteArray &bytes)
 {
-    return m_open;
-}
-
-void SerialLink::send(const QByteArray &bytes)
-{
-    if (!m_open) {
-        qWarning("DriveDesk: %d bytes not sent: %s is not open", int(bytes.size()),
-                 qPrintable(description()));
-        return;
-    }
     if (m_port->write(bytes) != bytes.size())
-        fail(explain(QSerialPort::WriteError) + QStringLiteral(" (%1)").arg(m_port->errorString()));
+        fail(reasonFor(QSerialPort::WriteError));
 }
 
 QString SerialLink::description() const
@@ -141,28 +105,19 @@ QString SerialLink::description() const
                                  m_settings.effectiveStopBits()));
 }
 
+QString SerialLink::reasonFor(QSerialPort::SerialPortError error) const
+{
+    return explain(error) + QStringLiteral(" (%1)").arg(m_port->errorString());
+}
+
 void SerialLink::onErrorOccurred(QSerialPort::SerialPortError error)
 {
     if (error == QSerialPort::NoError || error == QSerialPort::TimeoutError)
         return;
-    // Errors while opening are reported by open() itself.
-    if (!m_open)
+    // Errors while opening are reported by openTransport() itself.
+    if (state() != State::Open)
         return;
-    fail(explain(error) + QStringLiteral(" (%1)").arg(m_port->errorString()));
-}
-
-void SerialLink::onReadyRead()
-{
-    const QByteArray bytes = m_port->readAll();
-    if (m_open && !bytes.isEmpty())
-        emit received(bytes);
-}
-
-void SerialLink::fail(const QString &reason)
-{
-    const QString message = QStringLiteral("%1: %2").arg(description(), reason);
-    close();
-    emit failed(message);
+    fail(reasonFor(error));
 }
 
 } // namespace DriveDesk

@@ -14,24 +14,19 @@ class SerialLink : public Link
     Q_OBJECT
 public:
     explicit SerialLink(const ConnectionSettings &settings, QObject *parent = nullptr);
-    ~SerialLink() override;
 
-    void open() override;
-    void close() override;
-    bool isOpen() const override;
-    void send(const QByteArray &bytes) override;
     QString description() const override;
 
 private:
+    void openTransport() override;
+    void closeTransport() override;
+    void transmit(const QByteArray &bytes) override;
     void onErrorOccurred(QSerialPort::SerialPortError error);
-    void onReadyRead();
-    void fail(const QString &reason);
+    // In words, with the system's own text.
+    QString reasonFor(QSerialPort::SerialPortError error) const;
 
     ConnectionSettings m_settings;
     QSerialPort *m_port = nullptr;
-    // Counts open() calls, so that a queued outcome of an abandoned attempt is not reported.
-    quint64 m_attempt = 0;
-    bool m_open = false;
 };
 
 // "8E1", "7E1", "8N2": data bits, parity letter, stop bits.

@@ -17,12 +17,7 @@ class TcpLink : public Link
     Q_OBJECT
 public:
     explicit TcpLink(const ConnectionSettings &settings, QObject *parent = nullptr);
-    ~TcpLink() override;
 
-    void open() override;
-    void close() override;
-    bool isOpen() const override;
-    void send(const QByteArray &bytes) override;
     QString description() const override;
 
     // How long open() waits for the device server before giving up.
@@ -30,19 +25,15 @@ public:
     int connectTimeoutMs() const { return m_connectTimeout.interval(); }
 
 private:
-    enum class State : quint8 { Closed, Connecting, Open };
-
+    void openTransport() override;
+    void closeTransport() override;
+    void transmit(const QByteArray &bytes) override;
     void onConnected();
-    void onDisconnected();
     void onErrorOccurred(QAbstractSocket::SocketError error);
-    void onReadyRead();
-    void fail(const QString &reason);
 
     ConnectionSettings m_settings;
     QTcpSocket *m_socket = nullptr;
     QTimer m_connectTimeout;
-    State m_state = State::Closed;
-    quint64 m_attempt = 0; // a queued outcome of an abandoned open() is not reported
 };
 
 } // namespace DriveDesk

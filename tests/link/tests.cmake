@@ -8,3 +8,6 @@ drivedesk_add_test(NAME tst_tcplink LABELS unit integration
 # The links against drivedesk's own simulator (TCP and its pseudo-terminal).
 drivedesk_add_test(NAME tst_linktosimulator LABELS unit integration
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_linktosimulator.cpp LIBS drivedesk_bus)
+# Unix signals into the event loop, as the command-line programs take Ctrl+C.
+drivedesk_add_test(NAME tst_signalnotifier LABELS unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_signalnotifier.cpp LIBS drivedesk_link)
