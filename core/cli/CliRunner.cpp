@@ -237,7 +237,7 @@ void CliRunner::lookUpParameter(
 void CliRunner::runRead()
 {
     lookUpParameter([this](const GroupDescription &group, const ParameterDescription &parameter) {
-        const QString id = parameterId(group.id, parameter.number());
+        const QString id = parameterId(group, parameter);
         QFuture<Reply> reply = m_request.set
                                    ? m_client->readValue(parameter.address, quint8(1u << *m_request.set))
                                    : m_client->readValueStandard(parameter.address, 0);

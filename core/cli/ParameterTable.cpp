@@ -90,7 +90,7 @@ QString scan(const DriveDescription &drive, bool withValues)
         rows << header;
         for (const ParameterDescription &p : group.parameters) {
             const DisplayScaling scaling(p.scaling);
-            QStringList row{QStringLiteral("  ") + parameterId(group.id, p.number()), p.name};
+            QStringList row{QStringLiteral("  ") + parameterId(group, p), p.name};
             if (withValues)
                 row << valuesText(p);
             row << scaling.format(p.minimum, false) << scaling.format(p.maximum, false)

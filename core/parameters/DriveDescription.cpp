@@ -1,5 +1,7 @@
 #include "DriveDescription.h"
 
+#include "ParameterId.h"
+
 namespace DriveDesk {
 
 int DriveDescription::parameterCount() const
@@ -38,6 +40,11 @@ const GroupDescription *DriveDescription::findGroup(const QString &id) const
 QString parameterId(const QString &groupId, quint8 number)
 {
     return QStringLiteral("%1.%2").arg(groupId).arg(number, 2, 10, QLatin1Char('0'));
+}
+
+QString parameterId(const GroupDescription &group, const ParameterDescription &parameter)
+{
+    return ParameterId::format(parameter.address, GroupAddress { group.id, group.address });
 }
 
 } // namespace DriveDesk

@@ -104,5 +104,9 @@ struct DriveDescription {
 
 // "ru.03" for address 0203h, given the group's id.
 QString parameterId(const QString &groupId, quint8 number);
+// The id a parameter of the group is named by, in every message and table: its number counts
+// from the group's first address (ParameterId::format), so a half-page group at 0280h has its
+// 09 at 0289h.
+QString parameterId(const GroupDescription &group, const ParameterDescription &parameter);
 
 } // namespace DriveDesk

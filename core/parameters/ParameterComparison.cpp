@@ -25,7 +25,7 @@ QMap<quint16, Located> byAddress(const DriveDescription &drive)
     for (const GroupDescription &group : drive.groups) {
         for (const ParameterDescription &parameter : group.parameters)
             parameters.insert(parameter.address,
-                              { &parameter, parameterId(group.id, parameter.number()), group.id });
+                              { &parameter, parameterId(group, parameter), group.id });
     }
     return parameters;
 }

@@ -63,7 +63,7 @@ QByteArray parametersAsCsv(const DriveDescription &drive, const CsvStyle &style)
     for (const GroupDescription &group : drive.groups) {
         for (const ParameterDescription &parameter : group.parameters) {
             const ParameterFormat format(parameter);
-            QStringList row { parameterId(group.id, parameter.number()), parameter.name,
+            QStringList row { parameterId(group, parameter), parameter.name,
                               format.scaling().unitSymbol() };
             const int sets = parameter.isSetProgrammable() ? kParameterSets : 1;
             for (int set = 0; set < kParameterSets; ++set) {

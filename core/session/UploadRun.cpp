@@ -72,7 +72,7 @@ UploadResult checkUpload(const DriveDescription &read)
             // What a list does not read holds its default (ParameterList::fromScan).
             if (!ParameterList::isReadByUpload(parameter))
                 continue;
-            const QString id = parameterId(group.id, parameter.number());
+            const QString id = parameterId(group, parameter);
             if (!parameter.error.isEmpty()) {
                 result.missing << UploadGap { id, parameter.name, parameter.error };
                 continue;

@@ -114,6 +114,25 @@ private slots:
         }
     }
 
+    // Tables, files and messages name a group's parameter by one rule: counted from the group's
+    // first address, also where a group starts half way through a page.
+    void namesAParameterOfItsGroup()
+    {
+        GroupDescription ru;
+        ru.id = QStringLiteral("ru");
+        ru.address = 0x0200;
+        ParameterDescription actual;
+        actual.address = 0x0203;
+        QCOMPARE(parameterId(ru, actual), QStringLiteral("ru.03"));
+
+        GroupDescription half;
+        half.id = QStringLiteral("Fb");
+        half.address = 0x0280;
+        ParameterDescription ninth;
+        ninth.address = 0x0289;
+        QCOMPARE(parameterId(half, ninth), QStringLiteral("Fb.09"));
+    }
+
     void worksFromADriveDescription()
     {
         DriveDescription drive;
