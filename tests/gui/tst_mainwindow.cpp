@@ -516,6 +516,70 @@ private slots:
                                   kSimulatedParameters, 60000);
     }
 
+    // A read stopped halfway never passes for the drive: a reconnect after a first scan read in
+    // part reads the drive anew, and a re-read stopped halfway leaves the table as it was, its
+    // metadata complete, also after a reconnect.
+    void stoppedReadsNeverPassForTheDrive()
+    {
+        ConnectionSettings settings = simulated();
+        settings.simulation.replyLatencyUs = 3000; // slow enough to cancel halfway
+        m_window->connectTo(settings);
+        auto *progress
+            = m_window->noticeBar()->findChild<QProgressBar *>(QStringLiteral("noticeProgress"));
+        auto *cancel
+            = m_window->noticeBar()->findChild<QPushButton *>(QStringLiteral("noticeCancel"));
+        auto *reconnect
+            = m_window->noticeBar()->findChild<QPushButton *>(QStringLiteral("noticeReconnect"));
+        QTRY_VERIFY_WITH_TIMEOUT(progress->maximum() == 1000 && progress->value() > 400, 60000);
+        QTest::mouseClick(cancel, Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->noticeBar()->kind(), NoticeBar::Kind::Problem,
+                                  kWaitMs);
+        QVERIFY(m_window->browser()->shownParameterCount() < kSimulatedParameters);
+
+        // Reconnect: the part read is not refreshed as if it were the drive; the drive is read.
+        QVERIFY(reconnect->isVisible());
+        QSignalSpy reconnected(m_window->session(), &DriveSession::connected);
+        QTest::mouseClick(reconnect, Qt::LeftButton);
+        // The notice bar shows the reading until its result is in the table.
+        QTRY_VERIFY_WITH_TIMEOUT(reconnected.count() == 1 && m_window->isReady()
+                                     && !m_window->noticeBar()->isVisible(),
+                                 60000);
+        QCOMPARE(m_window->browser()->shownParameterCount(), kSimulatedParameters);
+        QVERIFY(m_window->session()->incompleteReason().isEmpty());
+        const QList<GroupDescription> complete = metadataOf(m_window->model()->description());
+        const auto shownSpeed = [this] {
+            return m_window->model()->valueIndex(kFixedSpeed1, 3).data().toString();
+        };
+        QCOMPARE(shownSpeed(), QStringLiteral("100 1/min"));
+
+        // Read Metadata Again, stopped at about 40 %: the table keeps the complete reading.
+        QSignalSpy described(m_window->session(), &DriveSession::described);
+        m_window->findChild<QAction *>(QStringLiteral("readMetadataAction"))->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(progress->maximum() == 1000 && progress->value() > 400, 60000);
+        QTest::mouseClick(cancel, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->isReady()
+                                     && m_window->noticeBar()->kind() != NoticeBar::Kind::Progress,
+                                 kWaitMs);
+        QCOMPARE(m_window->noticeBar()->kind(), NoticeBar::Kind::Information);
+        QVERIFY2(m_window->noticeBar()->text().contains(QStringLiteral("stopped (cancelled)")),
+                 qPrintable(m_window->noticeBar()->text()));
+        QCOMPARE(described.count(), 0);
+        QCOMPARE(m_window->browser()->shownParameterCount(), kSimulatedParameters);
+        QCOMPARE(metadataOf(m_window->model()->description()), complete);
+        QCOMPARE(shownSpeed(), QStringLiteral("100 1/min"));
+        QVERIFY(m_window->model()->isEditable(kFixedSpeed1));
+
+        // And after a reconnect: the values read again into the same complete table.
+        QSignalSpy connected(m_window->session(), &DriveSession::connected);
+        m_window->session()->reconnect();
+        QTRY_VERIFY_WITH_TIMEOUT(connected.count() == 1 && m_window->isReady(), kWaitMs);
+        QVERIFY(!m_window->session()->isScanning());
+        QCOMPARE(m_window->browser()->shownParameterCount(), kSimulatedParameters);
+        QCOMPARE(metadataOf(m_window->model()->description()), complete);
+        QCOMPARE(shownSpeed(), QStringLiteral("100 1/min"));
+        QVERIFY(m_window->model()->isEditable(kFixedSpeed1));
+    }
+
     void layoutAndFiltersAreRemembered()
     {
         QVERIFY(connectAndRead(*m_window, simulated()));

@@ -204,7 +204,6 @@ private slots:
         QCOMPARE(m_window->model()->value(kFixedSpeed1, 1), 100);
         QCOMPARE(viewIndex(*m_window, kFixedSpeed1, 2).data().toString(),
                  QStringLiteral("250 1/min"));
-        QCOMPARE(m_window->model()->editState(kFixedSpeed1, 2), EditState::None);
         QCOMPARE(stack->count(), 1);
         QVERIFY(m_window->isWindowModified());
         QVERIFY(m_window->hasUnsavedChanges());
@@ -242,6 +241,69 @@ private slots:
         QVERIFY(!m_window->isWindowModified());
         QCOMPARE(ParameterDocument::load(other), m_driveDocument);
         QCOMPARE(ParameterDocument::load(file), withValue(m_driveDocument, kFixedSpeed1, 2, 250));
+    }
+
+    // An edited cell is marked as a written one is for a drive, until the file holds its value:
+    // undone back to it, typed back to it, or saved.
+    void editedCellsAreMarkedUntilSaved()
+    {
+        const QString file = openCopy(QStringLiteral("marked.json"));
+        QVERIFY(!file.isEmpty());
+        ParameterModel *model = m_window->model();
+        const auto state = [model](int set) { return model->editState(kFixedSpeed1, set); };
+        const QModelIndex cell = model->valueIndex(kFixedSpeed1, 2);
+        const QModelIndex neighbour = model->valueIndex(kFixedSpeed1, 1);
+
+        typeValue(kFixedSpeed1, 2, QStringLiteral("250"));
+        QTRY_COMPARE(model->value(kFixedSpeed1, 2), 250);
+        QCOMPARE(state(2), EditState::Changed);
+        QCOMPARE(state(1), EditState::None);
+        // The written cell's look: its ground and icon, and a tip that says what is unsaved.
+        QCOMPARE(cell.data(Qt::BackgroundRole).value<QColor>(),
+                 CellDecoration().background(EditState::Written));
+        QVERIFY(!cell.data(Qt::DecorationRole).value<QIcon>().isNull());
+        QVERIFY2(cell.data(Qt::ToolTipRole).toString().contains(QStringLiteral("save")),
+                 qPrintable(cell.data(Qt::ToolTipRole).toString()));
+        QVERIFY(!neighbour.data(Qt::BackgroundRole).isValid());
+
+        // A second change of the cell, undone: still not what the file holds.
+        QVERIFY(model->requestWrite(kFixedSpeed1, 0x04, 300));
+        QCOMPARE(state(2), EditState::Changed);
+        m_window->undoStack()->undo();
+        QCOMPARE(model->value(kFixedSpeed1, 2), 250);
+        QCOMPARE(state(2), EditState::Changed);
+        // Undone back to the file's value: unmarked; redone: marked again.
+        m_window->undoStack()->undo();
+        QCOMPARE(model->value(kFixedSpeed1, 2), 100);
+        QCOMPARE(state(2), EditState::None);
+        QVERIFY(!cell.data(Qt::BackgroundRole).isValid());
+        m_window->undoStack()->redo();
+        QCOMPARE(state(2), EditState::Changed);
+        // Typed back to the file's value: unmarked too.
+        QVERIFY(model->requestWrite(kFixedSpeed1, 0x04, 100));
+        QCOMPARE(state(2), EditState::None);
+        m_window->undoStack()->undo();
+        QCOMPARE(state(2), EditState::Changed);
+
+        // Saved: the file holds it, nothing is marked. Undone after: unlike the file again.
+        action("saveFileAction")->trigger();
+        QVERIFY(!m_window->isWindowModified());
+        QCOMPARE(state(2), EditState::None);
+        QVERIFY(!cell.data(Qt::BackgroundRole).isValid());
+        m_window->undoStack()->undo();
+        QCOMPARE(model->value(kFixedSpeed1, 2), 100);
+        QCOMPARE(state(2), EditState::Changed);
+        m_window->undoStack()->redo();
+        QCOMPARE(state(2), EditState::None);
+
+        // A set copied: every cell it changed is marked, and unmarked by its undo.
+        ParameterEditing *editing = m_window->editing();
+        editing->copySet(2, 6);
+        QCOMPARE(model->value(kFixedSpeed1, 6), 250);
+        QCOMPARE(state(6), EditState::Changed);
+        QCOMPARE(state(2), EditState::None);
+        m_window->undoStack()->undo();
+        QCOMPARE(state(6), EditState::None);
     }
 
     void resetAndCopySetAreUndoable()

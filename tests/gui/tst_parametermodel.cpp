@@ -317,6 +317,34 @@ private slots:
         QVERIFY(!model.valueIndex(kMaxFrequency, 2).data(Qt::BackgroundRole).isValid());
     }
 
+    // A parameter file's changed cell: marked as a written one, with a tip of its own, never
+    // taken for a write to a drive, and unmarked when its value is put back.
+    void changedFileCellsLookWrittenAndSaySo()
+    {
+        ParameterModel model;
+        model.setDescription(drive());
+        QVERIFY(model.putValue(kMaxFrequency, 1, 7000));
+        QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
+        model.markChanged(kMaxFrequency, 0x02);
+        QCOMPARE(changed.size(), 1);
+        const QModelIndex cell = model.valueIndex(kMaxFrequency, 1);
+        QCOMPARE(cell.data(ParameterModel::EditStateRole).value<EditState>(), EditState::Changed);
+        QCOMPARE(cell.data(Qt::BackgroundRole).value<QColor>(),
+                 CellDecoration().background(EditState::Written));
+        QVERIFY(!cell.data(Qt::DecorationRole).value<QIcon>().isNull());
+        QCOMPARE(cell.data(Qt::ToolTipRole).toString(),
+                 QStringLiteral("Changed in the file: 70.00 Hz; save to keep it"));
+        QCOMPARE(cell.data().toString(), QStringLiteral("70.00 Hz"));
+        // Nothing was asked of a drive: a stray "written" leaves the cell as it is.
+        model.markWritten(kMaxFrequency, 0x02);
+        QCOMPARE(model.editState(kMaxFrequency, 1), EditState::Changed);
+        QCOMPARE(model.value(kMaxFrequency, 1), 7000);
+
+        QVERIFY(model.putValue(kMaxFrequency, 1, 5000));
+        QCOMPARE(model.editState(kMaxFrequency, 1), EditState::None);
+        QVERIFY(!cell.data(Qt::BackgroundRole).isValid());
+    }
+
     void editStateColoursKeepTheThemesLightness()
     {
         ParameterModel model;

@@ -19,11 +19,61 @@ DocumentEditor::DocumentEditor(ParameterModel *model, QUndoStack *undoStack, QOb
     , m_undoStack(undoStack)
 {
     connect(m_model, &ParameterModel::valueEdited, this, &DocumentEditor::write);
+    // Both come after the command's redo() or undo() has put its values into the model.
+    connect(m_undoStack, &QUndoStack::indexChanged, this, &DocumentEditor::markChanges);
+    connect(m_undoStack, &QUndoStack::cleanChanged, this, &DocumentEditor::onCleanChanged);
+}
+
+void DocumentEditor::rememberSaved(quint16 address)
+{
+    if (m_saved.contains(address))
+        return;
+    DocumentValueCommand::Values values {};
+    for (int set = 0; set < kParameterSets; ++set)
+        values[std::size_t(set)] = m_model->value(address, set);
+    m_saved.insert(address, values);
+}
+
+void DocumentEditor::markChanges()
+{
+    for (auto it = m_saved.cbegin(); it != m_saved.cend(); ++it) {
+        const quint16 address = it.key();
+        const ParameterDescription *parameter = m_model->parameter(address);
+        if (!parameter)
+            continue;
+        const int cells = parameter->isSetProgrammable() ? kParameterSets : 1;
+        quint8 changed = 0;
+        quint8 unchanged = 0;
+        for (int set = 0; set < cells; ++set) {
+            const bool differs = m_model->value(address, set) != it.value()[std::size_t(set)];
+            const bool marked = m_model->editState(address, set) == EditState::Changed;
+            if (differs && !marked)
+                changed |= quint8(1u << set);
+            else if (!differs && marked)
+                unchanged |= quint8(1u << set);
+        }
+        if (changed)
+            m_model->markChanged(address, changed);
+        if (unchanged)
+            m_model->clearEditState(address, unchanged);
+    }
+}
+
+void DocumentEditor::onCleanChanged(bool clean)
+{
+    if (!clean)
+        return;
+    // Saved (or undone back to what was saved): the model is what the file holds on disk.
+    for (auto it = m_saved.begin(); it != m_saved.end(); ++it) {
+        for (int set = 0; set < kParameterSets; ++set)
+            it.value()[std::size_t(set)] = m_model->value(it.key(), set);
+    }
+    markChanges();
 }
 
 QUndoCommand *DocumentEditor::makeChange(quint16 address, quint8 *setMask, qint32 raw,
                                          const QString &text, QString *refusal,
-                                         QUndoCommand *parent) const
+                                         QUndoCommand *parent)
 {
     const ParameterDescription *parameter = m_model->parameter(address);
     if (!parameter) {
@@ -58,6 +108,7 @@ QUndoCommand *DocumentEditor::makeChange(quint16 address, quint8 *setMask, qint3
         refusal->clear(); // nothing to do, and nothing wrong
         return nullptr;
     }
+    rememberSaved(address);
     return new DocumentValueCommand(m_model, address, *setMask, before, after, text, parent);
 }
 

@@ -1,7 +1,9 @@
 #pragma once
 
+#include "DocumentValueCommand.h"
 #include "ParameterEditing.h"
 
+#include <QHash>
 #include <QObject>
 
 class QUndoCommand;
@@ -15,7 +17,9 @@ class ParameterModel;
 // typed into the table, a reset to default, a copied set, each an undoable command on the
 // window's undo stack that changes the model and nothing else. The rules are a drive's: the
 // model's (read-only, limits) and core's ParameterFormat. Nothing is ever sent to a drive.
-// Lives in the GUI thread; the model and the undo stack outlive it.
+// A cell whose value is no longer the one the file holds on disk is marked changed
+// (EditState::Changed) until an undo brings that value back or the file is saved (the undo
+// stack made clean). Lives in the GUI thread; the model and the undo stack outlive it.
 class DocumentEditor : public QObject, public ParameterEditing
 {
     Q_OBJECT
@@ -38,10 +42,19 @@ private:
     // parameter, not editable, outside the limits. `setMask` comes back as applied (set 0 for
     // a parameter without sets).
     QUndoCommand *makeChange(quint16 address, quint8 *setMask, qint32 raw, const QString &text,
-                             QString *refusal, QUndoCommand *parent = nullptr) const;
+                             QString *refusal, QUndoCommand *parent = nullptr);
+
+    // Keeps the value on disk of a parameter about to change for the first time.
+    void rememberSaved(quint16 address);
+    // Marks the cells of the remembered parameters that differ from the file on disk, and
+    // clears the others' marks.
+    void markChanges();
+    void onCleanChanged(bool clean);
 
     ParameterModel *m_model = nullptr;
     QUndoStack *m_undoStack = nullptr;
+    // The values on disk of the parameters changed here since the file was opened.
+    QHash<quint16, DocumentValueCommand::Values> m_saved;
 };
 
 } // namespace DriveDesk

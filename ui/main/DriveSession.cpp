@@ -125,6 +125,12 @@ void DriveSession::onConnected()
     // scratch: what was written to the old one is not there to undo.
     if (settings().kind == ConnectionSettings::Kind::Simulated)
         m_edit->forgetWrites();
+    // A table read only in part holds parameters whose metadata never came (no limits, no
+    // scaling, no properties): refreshing their values would pass them off as the drive's.
+    if (!m_incompleteReason.isEmpty()) {
+        rescan();
+        return;
+    }
     afterRead();
     m_edit->refresh();
 }
@@ -133,11 +139,19 @@ void DriveSession::onScanFinished()
 {
     const QFuture<DriveDescription> future = m_scan.future();
     if (future.isCanceled() || future.resultCount() == 0) {
-        emit scanFinished(tr("the scan was cancelled"));
+        if (m_described && m_incompleteReason.isEmpty())
+            emit scanDiscarded(tr("the scan was cancelled"));
+        else
+            emit scanFinished(tr("the scan was cancelled"));
         applyPolling();
         return;
     }
     const DriveDescription drive = future.result();
+    if (!drive.incompleteReason.isEmpty() && m_described && m_incompleteReason.isEmpty()) {
+        emit scanDiscarded(drive.incompleteReason);
+        applyPolling();
+        return;
+    }
     m_activeSet.reset();
     m_setPointer.reset();
     if (const GroupDescription *sets = drive.findGroup(kSetGroup)) {
@@ -150,6 +164,7 @@ void DriveSession::onScanFinished()
     }
     m_model->setDescription(drive);
     m_described = true;
+    m_incompleteReason = drive.incompleteReason;
     emit described(drive);
     afterRead();
     emit scanFinished(drive.incompleteReason);

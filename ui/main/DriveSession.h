@@ -18,7 +18,9 @@ class PollingController;
 
 // One connection to one drive and the way from connecting over the scan to a filled model:
 // the client (working in its own thread) and the edit, polling and access controllers that
-// work through it. A lost link leaves the model as it is; reconnecting re-reads the values.
+// work through it. A lost link leaves the model as it is; reconnecting re-reads the values, or
+// the whole drive where the model holds it only in part. A scan that stops early never replaces
+// a complete description: the model keeps the metadata and values read before.
 // Lives in the GUI thread.
 class DriveSession : public QObject
 {
@@ -37,7 +39,8 @@ public:
     // Connected, but the drive does not answer (DriveClient::isDriveSilent()).
     bool isDriveSilent() const { return m_client->isDriveSilent(); }
 
-    // Connects; the first time the drive is scanned into the model, later its values re-read.
+    // Connects; the first time the drive is scanned into the model, later its values re-read
+    // (the whole drive again while the model holds it only in part).
     void start();
     // Closes the link where it is open, waits until it is closed, and connects again.
     void reconnect();
@@ -49,6 +52,9 @@ public:
     bool isScanning() const { return m_scan.isRunning(); }
     // A scan filled the model: there is something to edit and to refresh.
     bool hasDescription() const { return m_described; }
+    // Why the description in the model is incomplete (the scan that filled it stopped early or
+    // missed something); empty when it is complete or there is none.
+    QString incompleteReason() const { return m_incompleteReason; }
 
     // Polling of the live values runs while this is on and the drive is connected and read.
     void setPollingWanted(bool on);
@@ -73,6 +79,9 @@ signals:
     void described(const DriveDesk::DriveDescription &drive);
     // Empty when the scan read everything; otherwise why it stopped or what it missed.
     void scanFinished(const QString &problem);
+    // A re-read stopped early (`reason`): what it read is dropped, the model keeps the complete
+    // description it held. Comes instead of described() and scanFinished().
+    void scanDiscarded(const QString &reason);
     void message(const QString &text);
 
 private:
@@ -91,6 +100,7 @@ private:
     std::optional<quint16> m_activeSet;
     std::optional<quint16> m_setPointer;
     bool m_described = false;
+    QString m_incompleteReason; // of the description in the model
     bool m_pollingWanted = false;
     bool m_reconnecting = false; // reconnect(): connect once the old link is closed
 };

@@ -219,8 +219,14 @@ void MainWindow::openNextSession()
             m_notice->showProgress(tr("Connected. Reading the drive..."), 0, 0);
             return;
         }
-        // Back after a lost link: the table stays, its values are read again.
         m_notice->hide();
+        if (!session->incompleteReason().isEmpty()) {
+            // The session reads the drive anew; its progress takes the notice bar.
+            showMessage(tr("Reconnected to %1; the drive was read only in part: reading it again.")
+                            .arg(RecentConnections::describe(session->settings())));
+            return;
+        }
+        // Back after a lost link: the table stays, its values are read again.
         showMessage(tr("Reconnected to %1; reading the values again.")
                         .arg(RecentConnections::describe(session->settings())));
     });
@@ -235,6 +241,17 @@ void MainWindow::openNextSession()
     connect(session, &DriveSession::scanProgress, this, &MainWindow::onScanProgress);
     connect(session, &DriveSession::described, this, &MainWindow::onDescribed);
     connect(session, &DriveSession::scanFinished, this, &MainWindow::onScanFinished);
+    connect(session, &DriveSession::scanDiscarded, this, [this, session](const QString &reason) {
+        // What the re-read found so far is dropped: the table keeps the complete reading before.
+        // A re-read stopped by a lost link still offers Reconnect.
+        m_notice->showInformation(
+            tr("Reading the drive again stopped (%1). The table keeps what was read before: "
+               "every parameter with its limits, units and texts, and the values as last read.")
+                .arg(reason),
+            session->state() != DriveClient::State::Connected);
+        showMessage(tr("Reading the drive again stopped: %1").arg(reason));
+        updateActions();
+    });
     connect(session, &DriveSession::message, this, &MainWindow::showMessage);
     for (WindowFeature *feature : std::as_const(m_features))
         feature->attach(session);

@@ -57,6 +57,7 @@ QColor CellDecoration::background(EditState state) const
     case EditState::Pending:
         return blend(base, QColor(255, 176, 0), 0.35);
     case EditState::Written:
+    case EditState::Changed: // a file's edit is done as soon as it is made
         return blend(base, QColor(0, 170, 60), 0.30);
     case EditState::Failed:
         return blend(base, QColor(230, 0, 0), 0.35);
@@ -75,6 +76,7 @@ QIcon CellDecoration::icon(EditState state) const
     case EditState::Pending:
         return style->standardIcon(QStyle::SP_BrowserReload);
     case EditState::Written:
+    case EditState::Changed:
         return style->standardIcon(QStyle::SP_DialogApplyButton);
     case EditState::Failed:
         return style->standardIcon(QStyle::SP_MessageBoxCritical);

@@ -291,6 +291,11 @@ void ParameterModel::markFailed(quint16 address, quint8 setMask, const QString &
                 [&reason](ParameterRow &row, int cell) { row.markFailed(cell, reason); });
 }
 
+void ParameterModel::markChanged(quint16 address, quint8 setMask)
+{
+    changeCells(address, setMask, [](ParameterRow &row, int cell) { row.markChanged(cell); });
+}
+
 void ParameterModel::confirmReadBack(quint16 address, int set, qint32 raw)
 {
     if (set < 0 || set >= kParameterSets)

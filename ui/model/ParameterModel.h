@@ -100,6 +100,8 @@ public:
     void markPending(quint16 address, quint8 setMask, qint32 raw);
     void markWritten(quint16 address, quint8 setMask);
     void markFailed(quint16 address, quint8 setMask, const QString &reason);
+    // An open parameter file's cells whose values differ from what the file holds on disk.
+    void markChanged(quint16 address, quint8 setMask);
     // A value read back after a write: stored, and the cell written when it equals what was
     // asked for, failed (saying what the drive holds) when it does not. A parameter whose
     // read-back may differ by its nature (readBackMayDiffer) is written whatever it reads.

@@ -183,6 +183,8 @@ QVariant ParameterModel::toolTip(const ParameterRow &row, int column) const
         case EditState::Failed:
             return tr("Writing %1 failed: %2")
                 .arg(valueText(row, *row.requestedValue(set)), row.failure(set));
+        case EditState::Changed:
+            return tr("Changed in the file: %1; save to keep it").arg(shown);
         case EditState::None:
             break;
         }

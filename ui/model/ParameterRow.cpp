@@ -44,7 +44,9 @@ bool ParameterRow::setValue(int cell, std::optional<qint32> raw)
 
 std::optional<qint32> ParameterRow::requestedValue(int cell) const
 {
-    if (m_states[std::size_t(cell)] == EditState::None)
+    // A changed file cell asked nothing of a drive.
+    const EditState state = m_states[std::size_t(cell)];
+    if (state == EditState::None || state == EditState::Changed)
         return std::nullopt;
     return m_requested[std::size_t(cell)];
 }
@@ -75,6 +77,13 @@ void ParameterRow::markFailed(int cell, const QString &reason)
 {
     m_states[std::size_t(cell)] = EditState::Failed;
     m_failures[std::size_t(cell)] = reason;
+    invalidate(cell);
+}
+
+void ParameterRow::markChanged(int cell)
+{
+    m_states[std::size_t(cell)] = EditState::Changed;
+    m_failures[std::size_t(cell)].clear();
     invalidate(cell);
 }
 

@@ -18,6 +18,7 @@ enum class EditState : quint8 {
     Pending, // the write was sent; the cell shows the value asked for
     Written, // the drive holds what was written
     Failed, // the drive refused or holds something else; the reason is kept
+    Changed, // an open parameter file's value, changed here and not saved (no drive involved)
 };
 
 // One parameter of the ParameterModel: its description with the drive's values, the edit state
@@ -57,6 +58,7 @@ public:
     // Written, and the drive holds `held`: a parameter that changes what was written to it.
     void markWritten(int cell, qint32 held);
     void markFailed(int cell, const QString &reason);
+    void markChanged(int cell);
     bool clearEditState(int cell);
 
     // The shown value as text, scaled or as plaintext, or the raw integer; empty when unknown.
