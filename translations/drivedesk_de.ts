@@ -101,6 +101,10 @@
         <source>read-only</source>
         <translation>schreibgeschützt</translation>
     </message>
+    <message>
+        <source>not a setting</source>
+        <translation>keine Einstellung</translation>
+    </message>
 </context>
 <context>
     <name>ConnectionOptions</name>
@@ -174,6 +178,10 @@
     <message>
         <source>%1 drive %2</source>
         <translation>%1 Umrichter %2</translation>
+    </message>
+    <message>
+        <source>auto</source>
+        <translation>automatisch</translation>
     </message>
 </context>
 <context>
@@ -368,22 +376,6 @@
         <translation>nicht gesendet: %1</translation>
     </message>
     <message>
-        <source>%1 holds %2</source>
-        <translation>%1 enthält %2</translation>
-    </message>
-    <message>
-        <source>%1 could not be read back (%2)</source>
-        <translation>%1 konnte nicht zurückgelesen werden (%2)</translation>
-    </message>
-    <message>
-        <source>%1: no answer, so whether the drive took the value is unknown (%2)</source>
-        <translation>%1: keine Antwort, ob der Umrichter den Wert übernommen hat, ist unbekannt (%2)</translation>
-    </message>
-    <message>
-        <source>written %1, but %2</source>
-        <translation>geschrieben %1, aber %2</translation>
-    </message>
-    <message>
         <source>%1 not sent: %2</source>
         <translation>%1 nicht gesendet: %2</translation>
     </message>
@@ -449,12 +441,51 @@
         <source>Not written:</source>
         <translation>Nicht geschrieben:</translation>
     </message>
+    <message>
+        <source>written %1, but %2 holds %3</source>
+        <translation>%1 geschrieben, aber %2 enthält %3</translation>
+    </message>
+    <message>
+        <source>%1: no answer, so whether the drive took %2 is unknown (%3)</source>
+        <translation>%1: keine Antwort, daher ist unbekannt, ob der Umrichter %2 übernommen hat (%3)</translation>
+    </message>
+    <message>
+        <source>%1: the drive acknowledged %2, but it could not be read back (%3)</source>
+        <translation>%1: der Umrichter hat %2 quittiert, aber es konnte nicht zurückgelesen werden (%3)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n unknown</source>
+        <translation>
+            <numerusform>%n unbekannt</numerusform>
+            <numerusform>%n unbekannt</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Unknown (sent, no answer):</source>
+        <translation>Unbekannt (gesendet, keine Antwort):</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk</name>
     <message>
         <source>offline records of %1, one a millisecond assumed</source>
         <translation>Offline-Aufzeichnung von %1, eine je Millisekunde angenommen</translation>
+    </message>
+    <message>
+        <source>id</source>
+        <translation>Kennung</translation>
+    </message>
+    <message>
+        <source>name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>set %1</source>
+        <translation>Satz %1</translation>
     </message>
 </context>
 <context>
@@ -508,6 +539,21 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::BaudRateSearch</name>
+    <message>
+        <source>%1: no drive answered at %2 Bd</source>
+        <translation>%1: bei %2 Bd hat kein Umrichter geantwortet</translation>
+    </message>
+    <message>
+        <source>%1: this program cannot open such a connection</source>
+        <translation>%1: dieses Programm kann eine solche Verbindung nicht öffnen</translation>
+    </message>
+    <message>
+        <source>looking for the drive at %1 Bd</source>
+        <translation>suche den Umrichter bei %1 Bd</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::BitFieldEditor</name>
     <message>
         <source>Definition %1</source>
@@ -527,18 +573,87 @@
     </message>
 </context>
 <context>
-    <name>DriveDesk::CliRunner</name>
+    <name>DriveDesk::CliPlant</name>
     <message>
-        <source>all sets</source>
-        <translation>alle Sätze</translation>
+        <source>cannot make the directory %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the directory %1 does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stopping every link after the value on its way...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the addresses found written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no link answered</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>gave no identification</source>
+        <translation type="unfinished">keine Kennung erhalten</translation>
+    </message>
+    <message>
+        <source>%1: no drive answered</source>
+        <translation type="unfinished"></translation>
     </message>
     <message numerus="yes">
-        <source>set(s) %1</source>
-        <translation>
-            <numerusform>Satz %1</numerusform>
-            <numerusform>Sätze %1</numerusform>
+        <source>%1: saved %2, %n parameter(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
         </translation>
     </message>
+    <message>
+        <source>%1: not saved: %2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n difference(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>set %1</source>
+        <translation type="unfinished">Satz %1</translation>
+    </message>
+    <message>
+        <source>file %1  drive %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>only in the file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>only on the drive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n drive(s) %2</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::CliRunner</name>
     <message>
         <source>cannot connect to %1: %2</source>
         <translation>keine Verbindung zu %1 möglich: %2</translation>
@@ -554,10 +669,6 @@
     <message>
         <source>&apos;%1&apos; is not a raw 16-bit value (DIN66019 writes raw values)</source>
         <translation>„%1“ ist kein 16-Bit-Rohwert (DIN66019 schreibt Rohwerte)</translation>
-    </message>
-    <message>
-        <source>%1: written, but reading it back failed: %2</source>
-        <translation>%1: geschrieben, aber das Zurücklesen ist fehlgeschlagen: %2</translation>
     </message>
     <message>
         <source>metadata from the cache of this kind of drive (%1); --no-cache reads it from the drive</source>
@@ -596,22 +707,6 @@
         <translation>%1: %2; nichts wurde geschrieben</translation>
     </message>
     <message>
-        <source>the active set holds %1</source>
-        <translation>der aktive Satz enthält %1</translation>
-    </message>
-    <message>
-        <source>set %1 holds %2</source>
-        <translation>Satz %1 enthält %2</translation>
-    </message>
-    <message>
-        <source>%1: not written to %2: %3</source>
-        <translation>%1: %2 nicht geschrieben: %3</translation>
-    </message>
-    <message>
-        <source>%1: written %2, but %3</source>
-        <translation>%1: %2 geschrieben, aber %3</translation>
-    </message>
-    <message>
         <source>password not accepted: %1</source>
         <translation>Passwort nicht angenommen: %1</translation>
     </message>
@@ -630,10 +725,6 @@
     <message>
         <source>stopping after the value on its way...</source>
         <translation>Abbruch nach dem Wert, der gerade unterwegs ist …</translation>
-    </message>
-    <message>
-        <source>the drive could not be read to the end (%1); no file was written</source>
-        <translation>der Umrichter konnte nicht vollständig gelesen werden (%1); es wurde keine Datei geschrieben</translation>
     </message>
     <message numerus="yes">
         <source>%1: %n parameter(s)</source>
@@ -654,13 +745,6 @@
         <translation>
             <numerusform>%n nur schreibbarer mit dem Vorgabewert</numerusform>
             <numerusform>%n nur schreibbare mit dem Vorgabewert</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%n parameter(s) could not be read and have no value in the file: %1</source>
-        <translation>
-            <numerusform>%n Parameter konnte nicht gelesen werden und hat keinen Wert in der Datei: %1</numerusform>
-            <numerusform>%n Parameter konnten nicht gelesen werden und haben keinen Wert in der Datei: %1</numerusform>
         </translation>
     </message>
     <message>
@@ -747,6 +831,33 @@
     <message>
         <source>&apos;%1&apos;: the set after @ is 0..7, e.g. op.11@2</source>
         <translation>„%1“: der Satz nach @ ist 0..7, z. B. op.11@2</translation>
+    </message>
+    <message>
+        <source>found the drive at %1 Bd</source>
+        <translation>Umrichter bei %1 Bd gefunden</translation>
+    </message>
+    <message>
+        <source>scan</source>
+        <translation>Einlesen</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 stopped after %2 of %n parameter(s)</source>
+        <translation>
+            <numerusform>%1 nach %2 von %n Parameter angehalten</numerusform>
+            <numerusform>%1 nach %2 von %n Parametern angehalten</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>no answer</source>
+        <translation>keine Antwort</translation>
+    </message>
+    <message>
+        <source>the drive stopped answering (%1): %2</source>
+        <translation>der Umrichter antwortet nicht mehr (%1): %2</translation>
+    </message>
+    <message>
+        <source>not read: %1</source>
+        <translation>nicht gelesen: %1</translation>
     </message>
 </context>
 <context>
@@ -892,6 +1003,21 @@
         <source>the drive has gone silent: a request was given up after every attempt and nothing came from the drive since</source>
         <translation>der Umrichter schweigt: eine Anfrage wurde nach allen Versuchen aufgegeben, und seitdem kam nichts vom Umrichter</translation>
     </message>
+    <message>
+        <source>the drive answers again: requests are sent as before</source>
+        <translation>der Umrichter antwortet wieder: Anfragen werden wie zuvor gesendet</translation>
+    </message>
+    <message numerus="yes">
+        <source>no answer to %n request(s) in %1 s</source>
+        <translation>
+            <numerusform>keine Antwort auf %n Anfrage in %1 s</numerusform>
+            <numerusform>keine Antwort auf %n Anfragen in %1 s</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the drive stopped answering (%1): the requests queued fail, and one request at a time is sent once until the drive answers again</source>
+        <translation>der Umrichter antwortet nicht mehr (%1): die wartenden Anfragen schlagen fehl, und bis er wieder antwortet, wird jeweils eine Anfrage einmal gesendet</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::CompareFeature</name>
@@ -1006,10 +1132,6 @@
         <translation>Su&amp;chen:</translation>
     </message>
     <message>
-        <source>C&amp;hosen only</source>
-        <translation>Nur &amp;gewählte</translation>
-    </message>
-    <message>
         <source>Show only the rows ticked to be written: a last look</source>
         <translation>Nur die zum Schreiben angekreuzten Zeilen zeigen: ein letzter Blick</translation>
     </message>
@@ -1078,7 +1200,7 @@
     </message>
     <message>
         <source>&amp;Different (%1)</source>
-        <translation>&amp;Verschieden (%1)</translation>
+        <translation>Verschie&amp;den (%1)</translation>
     </message>
     <message>
         <source>Only in A (%1)</source>
@@ -1090,7 +1212,7 @@
     </message>
     <message>
         <source>Read-&amp;only (%1)</source>
-        <translation>Schreib&amp;geschützt (%1)</translation>
+        <translation>Schreibgeschü&amp;tzt (%1)</translation>
     </message>
     <message numerus="yes">
         <source>%1 of %n value(s) shown, %2 chosen.</source>
@@ -1169,6 +1291,18 @@
             <numerusform>%n Werte in %1 geschrieben.</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Live and read-only values and parameters a parameter list leaves out: never counted as a difference</source>
+        <translation>Istwerte, schreibgeschützte Werte und Parameter, die eine Parameterliste auslässt: zählen nie als Unterschied</translation>
+    </message>
+    <message>
+        <source>&amp;Not settings (%1)</source>
+        <translation>&amp;Keine Einstellungen (%1)</translation>
+    </message>
+    <message>
+        <source>Chosen onl&amp;y</source>
+        <translation>N&amp;ur gewählte</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ComparisonModel</name>
@@ -1235,6 +1369,26 @@
     <message>
         <source>State</source>
         <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>not a setting, only in A</source>
+        <translation>keine Einstellung, nur in A</translation>
+    </message>
+    <message>
+        <source>not a setting, only in B</source>
+        <translation>keine Einstellung, nur in B</translation>
+    </message>
+    <message>
+        <source>not a setting, different</source>
+        <translation>keine Einstellung, verschieden</translation>
+    </message>
+    <message>
+        <source>not a setting, equal</source>
+        <translation>keine Einstellung, gleich</translation>
+    </message>
+    <message>
+        <source>A live or read-only value, or one a parameter list leaves out: shown, never counted as a difference.</source>
+        <translation>Ein Istwert, ein schreibgeschützter Wert oder einer, den eine Parameterliste auslässt: angezeigt, aber nie als Unterschied gezählt.</translation>
     </message>
 </context>
 <context>
@@ -1348,10 +1502,6 @@
         <translation>Die serielle Schnittstelle wählen, an der der Umrichter angeschlossen ist.</translation>
     </message>
     <message>
-        <source>&quot;%1&quot; is not a baud rate: enter a number such as 38400.</source>
-        <translation>„%1“ ist keine Baudrate: eine Zahl wie 38400 eingeben.</translation>
-    </message>
-    <message>
         <source>Enter the host name or IP address of the serial device server.</source>
         <translation>Hostnamen oder IP-Adresse des seriellen Geräteservers eingeben.</translation>
     </message>
@@ -1370,6 +1520,18 @@
     <message>
         <source>Services 13, 14, 19-21 and 51-53, which the HSP5 specification does not define. Only for a drive known to have them: a drive without them cannot tell where such a request ends and loses the requests that follow it.</source>
         <translation>Die Dienste 13, 14, 19-21 und 51-53, die die HSP5-Spezifikation nicht festlegt. Nur für einen Umrichter, der sie sicher kennt: ein Umrichter ohne sie erkennt nicht, wo eine solche Anfrage endet, und verliert die folgenden Anfragen.</translation>
+    </message>
+    <message>
+        <source>Automatic tries 38400, 19200, 9600, 57600 and 115200 Bd and takes the rate the drive answers at</source>
+        <translation>Automatisch probiert 38400, 19200, 9600, 57600 und 115200 Bd und nimmt die Baudrate, bei der der Umrichter antwortet</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automatisch</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a baud rate: enter a number such as 38400, or choose Automatic.</source>
+        <translation>„%1“ ist keine Baudrate: eine Zahl wie 38400 eingeben oder Automatisch wählen.</translation>
     </message>
 </context>
 <context>
@@ -1466,14 +1628,6 @@
         <translation>Download zum Umrichter</translation>
     </message>
     <message>
-        <source>Writes the values of %1 to the drive, each read back.</source>
-        <translation>Schreibt die Werte von %1 in den Umrichter, jeden mit Rücklesen.</translation>
-    </message>
-    <message>
-        <source>&amp;Write all the same (the checks above are overruled)</source>
-        <translation>&amp;Trotzdem schreiben (die Prüfungen oben werden übergangen)</translation>
-    </message>
-    <message>
         <source>Sets to write:</source>
         <translation>Zu schreibende Sätze:</translation>
     </message>
@@ -1568,13 +1722,17 @@
         <source>Stopping after the value on its way...</source>
         <translation>Anhalten nach dem Wert, der gerade unterwegs ist …</translation>
     </message>
+    <message>
+        <source>Writes %1 to the drive, each read back.</source>
+        <translation>Schreibt %1 in den Umrichter und liest jeden zurück.</translation>
+    </message>
+    <message>
+        <source>Write all the same (the checks above are &amp;overruled)</source>
+        <translation>Trotzdem schreiben (die Prüfungen oben werden &amp;übergangen)</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::DownloadFeature</name>
-    <message>
-        <source>&amp;Download File to Drive...</source>
-        <translation>Datei zum Umrichter &amp;herunterladen …</translation>
-    </message>
     <message>
         <source>Write a parameter file&apos;s values to the drive, after a last look at what differs</source>
         <translation>Die Werte einer Parameterdatei in den Umrichter schreiben, nach einem letzten Blick auf die Unterschiede</translation>
@@ -1602,6 +1760,18 @@
     <message>
         <source>the values chosen in the compare window</source>
         <translation>die im Vergleichsfenster gewählten Werte</translation>
+    </message>
+    <message>
+        <source>Down&amp;load File to Drive...</source>
+        <translation>Datei in Umrichter la&amp;den …</translation>
+    </message>
+    <message>
+        <source>the values of %1</source>
+        <translation>die Werte von %1</translation>
+    </message>
+    <message>
+        <source>the values chosen from %1</source>
+        <translation>die aus %1 gewählten Werte</translation>
     </message>
 </context>
 <context>
@@ -1775,6 +1945,34 @@
         <source>values of sets %1</source>
         <translation>Werte der Sätze %1</translation>
     </message>
+    <message>
+        <source>%1: not confirmed when read again on a line with errors</source>
+        <translation>%1: auf einer Leitung mit Fehlern beim erneuten Lesen nicht bestätigt</translation>
+    </message>
+    <message>
+        <source>the answers did not agree</source>
+        <translation>die Antworten stimmten nicht überein</translation>
+    </message>
+    <message>
+        <source>implausible answer: %1</source>
+        <translation>unplausible Antwort: %1</translation>
+    </message>
+    <message>
+        <source>default value: %1</source>
+        <translation>Vorgabewert: %1</translation>
+    </message>
+    <message>
+        <source>value of set %1: %2</source>
+        <translation>Wert von Satz %1: %2</translation>
+    </message>
+    <message>
+        <source>group %1: %2 of %3 parameters found</source>
+        <translation>Gruppe %1: %2 von %3 Parametern gefunden</translation>
+    </message>
+    <message>
+        <source>group %1: %2 of %3 parameters found; no answer for %4 (%5)</source>
+        <translation>Gruppe %1: %2 von %3 Parametern gefunden; keine Antwort für %4 (%5)</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::DriveSession</name>
@@ -1802,36 +2000,12 @@
         <translation>%1 nicht zurückgesetzt: kein Satz gewählt</translation>
     </message>
     <message>
-        <source>%1 not reset%2: %3</source>
-        <translation>%1%2 nicht zurückgesetzt: %3</translation>
-    </message>
-    <message>
-        <source>%1 = %2 not written%3: %4</source>
-        <translation>%1 = %2%3 nicht geschrieben: %4</translation>
-    </message>
-    <message>
         <source>Reset %1 to its default%2</source>
         <translation>%1%2 auf den Vorgabewert zurücksetzen</translation>
     </message>
     <message>
         <source>Write %1 = %2%3</source>
         <translation>%1 = %2%3 schreiben</translation>
-    </message>
-    <message>
-        <source>%1 reset to its default%2</source>
-        <translation>%1%2 auf den Vorgabewert zurückgesetzt</translation>
-    </message>
-    <message>
-        <source>%1 = %2 written%3</source>
-        <translation>%1 = %2%3 geschrieben</translation>
-    </message>
-    <message>
-        <source>; not%1: %2</source>
-        <translation>; nicht%1: %2</translation>
-    </message>
-    <message>
-        <source>; reading it back failed: %1</source>
-        <translation>; Rücklesen fehlgeschlagen: %1</translation>
     </message>
     <message>
         <source>%1%2: the value before the change is not known, so it stays as it is</source>
@@ -1852,10 +2026,6 @@
     <message>
         <source>Redo failed: %1: %2</source>
         <translation>Wiederherstellen fehlgeschlagen: %1: %2</translation>
-    </message>
-    <message>
-        <source>the drive holds %1%2</source>
-        <translation>der Umrichter enthält %1%2</translation>
     </message>
     <message>
         <source>Still copying set %1 to set %2</source>
@@ -1948,6 +2118,10 @@
     <message>
         <source>; the drive changes this value itself, so the write cannot be undone</source>
         <translation>; der Umrichter ändert diesen Wert selbst, daher kann das Schreiben nicht rückgängig gemacht werden</translation>
+    </message>
+    <message>
+        <source>this drive has no parameter %1</source>
+        <translation>dieser Umrichter hat keinen Parameter %1</translation>
     </message>
 </context>
 <context>
@@ -2097,10 +2271,6 @@
         <translation>Alle Gruppen während der Eingabe nach Kennung (ru.3), Name oder Wert durchsuchen (%1)</translation>
     </message>
     <message>
-        <source>&amp;Differs from default</source>
-        <translation>Abweichend vom &amp;Vorgabewert</translation>
-    </message>
-    <message>
         <source>&amp;Differs from Default</source>
         <translation>&amp;Abweichend vom Vorgabewert</translation>
     </message>
@@ -2115,10 +2285,6 @@
     <message>
         <source>Only the parameters marked with a star</source>
         <translation>Nur die mit einem Stern markierten Parameter</translation>
-    </message>
-    <message>
-        <source>&amp;Hide above password level</source>
-        <translation>Über der &amp;Passwortebene ausblenden</translation>
     </message>
     <message>
         <source>&amp;Hide Parameters above Password Level</source>
@@ -2143,6 +2309,14 @@
     <message>
         <source>Only settings whose value differs from the default (not read-only or live values)</source>
         <translation>Nur Einstellungen, deren Wert vom Vorgabewert abweicht (keine schreibgeschützten oder laufend gemessenen Werte)</translation>
+    </message>
+    <message>
+        <source>D&amp;iffers from default</source>
+        <translation>Vom Vorgabewert ab&amp;weichend</translation>
+    </message>
+    <message>
+        <source>Hide above &amp;password level</source>
+        <translation>Über der &amp;Passwortebene ausblenden</translation>
     </message>
 </context>
 <context>
@@ -2387,10 +2561,6 @@
         <translation>Alle Werte erneut vom Umrichter lesen</translation>
     </message>
     <message>
-        <source>Drive &amp;Information...</source>
-        <translation>&amp;Umrichterinformationen …</translation>
-    </message>
-    <message>
         <source>&amp;Quit</source>
         <translation>&amp;Beenden</translation>
     </message>
@@ -2474,7 +2644,7 @@
     </message>
     <message>
         <source>&amp;Language (from the next start)</source>
-        <translation>&amp;Sprache (ab dem nächsten Start)</translation>
+        <translation>S&amp;prache (ab dem nächsten Start)</translation>
     </message>
     <message>
         <source>Takes effect when DriveDesk starts again</source>
@@ -2545,11 +2715,7 @@
     </message>
     <message>
         <source>Save &amp;Drive to File...</source>
-        <translation>&amp;Umrichter in Datei sichern …</translation>
-    </message>
-    <message>
-        <source>Save the parameters read from the drive to a parameter file; the window goes on with the drive</source>
-        <translation>Die vom Umrichter gelesenen Parameter in einer Parameterdatei sichern; das Fenster arbeitet weiter mit dem Umrichter</translation>
+        <translation>Umrichter in &amp;Datei sichern …</translation>
     </message>
     <message>
         <source>&amp;File</source>
@@ -2644,6 +2810,53 @@
     <message>
         <source>Save Parameter File As</source>
         <translation>Parameterdatei speichern unter</translation>
+    </message>
+    <message>
+        <source>Reconnected to %1; the drive was read only in part: reading it again.</source>
+        <translation>Wieder mit %1 verbunden; der Umrichter war nur teilweise gelesen: er wird erneut gelesen.</translation>
+    </message>
+    <message>
+        <source>Reading the drive again stopped (%1). The table keeps what was read before: every parameter with its limits, units and texts, and the values as last read.</source>
+        <translation>Das erneute Lesen des Umrichters wurde beendet (%1). Die Tabelle behält, was vorher gelesen wurde: jeden Parameter mit Grenzwerten, Einheiten und Texten und die zuletzt gelesenen Werte.</translation>
+    </message>
+    <message>
+        <source>Reading the drive again stopped: %1</source>
+        <translation>Das erneute Lesen des Umrichters wurde beendet: %1</translation>
+    </message>
+    <message>
+        <source>Read the drive afresh and save it to a parameter file once every value was read; the window goes on with the drive</source>
+        <translation>Den Umrichter neu lesen und in einer Parameterdatei sichern, sobald jeder Wert gelesen ist; das Fenster bleibt beim Umrichter</translation>
+    </message>
+    <message>
+        <source>Drive Inf&amp;ormation...</source>
+        <translation>Umrichter-Inf&amp;ormationen …</translation>
+    </message>
+    <message>
+        <source>Saving the drive to %1: %2</source>
+        <translation>Sichere den Umrichter in %1: %2</translation>
+    </message>
+    <message>
+        <source>Saving the drive to %1: reading the drive...</source>
+        <translation>Sichere den Umrichter in %1: lese den Umrichter …</translation>
+    </message>
+    <message>
+        <source>Save Drive to File cancelled: nothing was saved to %1.</source>
+        <translation>Umrichter in Datei sichern abgebrochen: nichts wurde in %1 gesichert.</translation>
+    </message>
+    <message>
+        <source>The drive was not saved to %1: %2.</source>
+        <translation>Der Umrichter wurde nicht in %1 gesichert: %2.</translation>
+    </message>
+    <message>
+        <source>Not read:</source>
+        <translation>Nicht gelesen:</translation>
+    </message>
+    <message numerus="yes">
+        <source>... and %n more (Show Details...)</source>
+        <translation>
+            <numerusform>… und %n weiterer (Details anzeigen …)</numerusform>
+            <numerusform>… und %n weitere (Details anzeigen …)</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2850,6 +3063,10 @@
         <source>Last read %1; the drive is not answering</source>
         <translation>Zuletzt gelesen %1; der Umrichter antwortet nicht</translation>
     </message>
+    <message>
+        <source>Changed in the file: %1; save to keep it</source>
+        <translation>In der Datei geändert: %1; speichern, um es zu behalten</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::PasswordDialog</name>
@@ -2891,6 +3108,41 @@
     <message>
         <source>no text chosen</source>
         <translation>kein Text gewählt</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::PlantRun</name>
+    <message>
+        <source>cannot connect: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>searching</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the search stopped: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stopped before it was read</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stopped before the drive was read whole; nothing saved</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file is of %1, the drive %2</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -3106,6 +3358,10 @@ Ziehen: Zeit verschieben; Strg+Ziehen: Werte verschieben
 Umschalt+Klick: Cursor 1 setzen; Umschalt+Rechtsklick: Cursor 2 setzen; einen Cursor ziehen, um ihn zu verschieben
 + und -: Zeit zoomen (mit Strg: die Werte); Links und Rechts: Zeit verschieben; Auf und Ab: Werte verschieben
 Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte einpassen; Leertaste: anhalten oder weiter; Esc: Cursor entfernen</translation>
+    </message>
+    <message>
+        <source>Trigger</source>
+        <translation>Trigger</translation>
     </message>
 </context>
 <context>
@@ -3454,6 +3710,29 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
         <source>Cannot save %1: %2</source>
         <translation>%1 kann nicht gespeichert werden: %2</translation>
     </message>
+    <message>
+        <source>&amp;Replace</source>
+        <translation>&amp;Ersetzen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Shot of %n sample(s) around the trigger.</source>
+        <translation>
+            <numerusform>Aufnahme von %n Abtastwert um den Trigger.</numerusform>
+            <numerusform>Aufnahme von %n Abtastwerten um den Trigger.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>%1 Saved to %2.</source>
+        <translation>%1 In %2 gesichert.</translation>
+    </message>
+    <message>
+        <source>The recording shown is not saved. The offline records replace it.</source>
+        <translation>Die angezeigte Aufzeichnung ist nicht gesichert. Die Offline-Aufzeichnungen ersetzen sie.</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ScopeFeature</name>
@@ -3607,6 +3886,10 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
         <translation>--protocol, --address und --baud gehören zu --connect: tcp:HOST:PORT, serial:GERÄT oder sim angeben</translation>
     </message>
     <message>
+        <source>--open shows a parameter file with no drive: leave out --connect, --protocol, --address and --baud</source>
+        <translation>--open zeigt eine Parameterdatei ohne Umrichter: --connect, --protocol, --address und --baud weglassen</translation>
+    </message>
+    <message>
         <source>Usage: drivedesk [--connect TARGET | --open FILE] [options]
 
 The DriveDesk parameter editor. Without --connect or --open it opens the connection
@@ -3616,7 +3899,8 @@ dialog.
   --open FILE          show and edit a parameter file with no drive
   --protocol NAME      hsp5 (default), din66019ii or din66019
   --address N          drive address on a DIN66019(II) bus, 0..239 (default 1)
-  --baud N             baud rate (default 38400)
+  --baud N|auto        baud rate; auto (the default on a serial line) finds the rate
+                       the drive answers at
   --language en|de     language of the window and of the drive&apos;s texts
 </source>
         <translation>Aufruf: drivedesk [--connect ZIEL | --open DATEI] [Optionen]
@@ -3628,13 +3912,10 @@ Verbindungsdialog.
   --open DATEI         eine Parameterdatei ohne Umrichter anzeigen und bearbeiten
   --protocol NAME      hsp5 (Vorgabe), din66019ii oder din66019
   --address N          Umrichteradresse an einem DIN66019(II)-Bus, 0..239 (Vorgabe 1)
-  --baud N             Baudrate (Vorgabe 38400)
+  --baud N|auto        Baudrate; auto (die Vorgabe an einer seriellen Leitung) findet die
+                       Baudrate, bei der der Umrichter antwortet
   --language en|de     Sprache des Fensters und der Texte des Umrichters
 </translation>
-    </message>
-    <message>
-        <source>--open shows a parameter file with no drive: leave out --connect, --protocol, --address and --baud</source>
-        <translation>--open zeigt eine Parameterdatei ohne Umrichter: --connect, --protocol, --address und --baud weglassen</translation>
     </message>
 </context>
 <context>
@@ -3761,11 +4042,26 @@ Verbindungsdialog.
     </message>
 </context>
 <context>
-    <name>DriveDesk::ValueWriter</name>
+    <name>DriveDesk::UploadRun</name>
     <message>
-        <source>this drive has no parameter %1</source>
-        <translation>dieser Umrichter hat keinen Parameter %1</translation>
+        <source>no drive is connected</source>
+        <translation>kein Umrichter verbunden</translation>
     </message>
+    <message>
+        <source>the drive stopped answering during the read (no answer after every attempt)</source>
+        <translation>der Umrichter antwortete während des Lesens nicht mehr (keine Antwort nach allen Versuchen)</translation>
+    </message>
+    <message>
+        <source>the read ended without a result</source>
+        <translation>das Lesen endete ohne Ergebnis</translation>
+    </message>
+    <message>
+        <source>the connection was closed</source>
+        <translation>die Verbindung wurde geschlossen</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ValueEdits</name>
     <message>
         <source>the connection to the drive was closed</source>
         <translation>die Verbindung zum Umrichter wurde geschlossen</translation>
@@ -3800,6 +4096,37 @@ Verbindungsdialog.
     <message>
         <source>Type %1, software %2, serial number %3</source>
         <translation>Typ %1, Software %2, Seriennummer %3</translation>
+    </message>
+</context>
+<context>
+    <name>EditText</name>
+    <message>
+        <source>%1 not reset%2: %3</source>
+        <translation>%1 nicht zurückgesetzt%2: %3</translation>
+    </message>
+    <message>
+        <source>%1 = %2 not written%3: %4</source>
+        <translation>%1 = %2 nicht geschrieben%3: %4</translation>
+    </message>
+    <message>
+        <source>%1 reset to its default%2</source>
+        <translation>%1 auf den Vorgabewert zurückgesetzt%2</translation>
+    </message>
+    <message>
+        <source>%1 = %2 written%3</source>
+        <translation>%1 = %2 geschrieben%3</translation>
+    </message>
+    <message>
+        <source>; not%1: %2</source>
+        <translation>; nicht%1: %2</translation>
+    </message>
+    <message>
+        <source>; reading it back failed: %1</source>
+        <translation>; das Zurücklesen schlug fehl: %1</translation>
+    </message>
+    <message>
+        <source>the drive holds %1%2</source>
+        <translation>der Umrichter enthält %1%2</translation>
     </message>
 </context>
 <context>
@@ -3895,12 +4222,12 @@ Verbindungsdialog.
         <translation>der Metadaten-Cache-Ordner „%1“ kann nicht angelegt werden</translation>
     </message>
     <message>
-        <source>cannot write the metadata cache file &apos;%1&apos;: %2</source>
-        <translation>die Metadaten-Cache-Datei „%1“ kann nicht geschrieben werden: %2</translation>
-    </message>
-    <message>
         <source>cannot remove &apos;%1&apos;</source>
         <translation>„%1“ kann nicht entfernt werden</translation>
+    </message>
+    <message>
+        <source>cannot write the metadata cache: %1</source>
+        <translation>der Metadaten-Cache kann nicht geschrieben werden: %1</translation>
     </message>
 </context>
 <context>
@@ -4043,6 +4370,30 @@ Verbindungsdialog.
     <message>
         <source>version: %1 is a newer format than this DriveDesk reads (version %2); a newer DriveDesk reads it</source>
         <translation>version: %1 ist ein neueres Format, als dieses DriveDesk liest (Version %2); ein neueres DriveDesk liest es</translation>
+    </message>
+    <message>
+        <source>%1 is below min %2</source>
+        <translation>%1 liegt unter min %2</translation>
+    </message>
+    <message>
+        <source>%1 is outside min..max (%2..%3), and properties1 says default and limits are constant</source>
+        <translation>%1 liegt außerhalb von min..max (%2..%3), und properties1 sagt, dass Vorgabewert und Grenzen fest sind</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; cannot stand in a parameter id: %2</source>
+        <translation>„%1“ kann nicht in einer Parameterkennung stehen: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; names another address</source>
+        <translation>„%1“ bezeichnet eine andere Adresse</translation>
+    </message>
+    <message>
+        <source>%1 (line %2, column %3)</source>
+        <translation>%1 (Zeile %2, Spalte %3)</translation>
+    </message>
+    <message>
+        <source>%1: appears twice in one object (line %2, column %3)</source>
+        <translation>%1: kommt in einem Objekt zweimal vor (Zeile %2, Spalte %3)</translation>
     </message>
 </context>
 <context>
@@ -4521,6 +4872,128 @@ Verbindungsdialog.
     </message>
 </context>
 <context>
+    <name>PlantDrive</name>
+    <message>
+        <source>found</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>saved</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>equal</source>
+        <translation type="unfinished">gleich</translation>
+    </message>
+    <message>
+        <source>different</source>
+        <translation type="unfinished">verschieden</translation>
+    </message>
+    <message>
+        <source>another kind of drive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unreachable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>PlantFile</name>
+    <message>
+        <source>an HSP5 link reaches one drive: addresses are for a DIN66019 bus, leave them out</source>
+        <translation>eine HSP5-Verbindung erreicht einen Umrichter: Adressen gelten für einen DIN66019-Bus, weglassen</translation>
+    </message>
+    <message>
+        <source>empty: leave addresses out to search the bus for drives</source>
+        <translation>leer: addresses weglassen, um den Bus nach Umrichtern zu durchsuchen</translation>
+    </message>
+    <message>
+        <source>drive address %1 appears twice</source>
+        <translation>Umrichteradresse %1 kommt zweimal vor</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is also the name of links[%2]: each link needs a name of its own</source>
+        <translation>„%1“ ist auch der Name von links[%2]: jede Verbindung braucht einen eigenen Namen</translation>
+    </message>
+    <message>
+        <source>unknown protocol &apos;%1&apos;: use hsp5, din66019ii or din66019</source>
+        <translation>unbekanntes Protokoll „%1“: hsp5, din66019ii oder din66019 angeben</translation>
+    </message>
+    <message>
+        <source>%1, expected &apos;%2&apos;: not a DriveDesk plant file</source>
+        <translation>%1, erwartet „%2“: keine DriveDesk-Anlagendatei</translation>
+    </message>
+    <message>
+        <source>not a string</source>
+        <translation>keine Zeichenkette</translation>
+    </message>
+    <message>
+        <source>%1 is a newer format than this DriveDesk reads (version %2); a newer DriveDesk reads it</source>
+        <translation>%1 ist ein neueres Format, als dieses DriveDesk liest (Version %2); ein neueres DriveDesk liest es</translation>
+    </message>
+    <message>
+        <source>empty: a link needs a name</source>
+        <translation>leer: eine Verbindung braucht einen Namen</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is longer than %2 characters</source>
+        <translation>„%1“ ist länger als %2 Zeichen</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; cannot be part of a file name: use letters a-z, digits, &apos;-&apos;, &apos;_&apos; and &apos;.&apos;, starting with a letter or digit</source>
+        <translation>„%1“ kann nicht Teil eines Dateinamens sein: Buchstaben a-z, Ziffern, „-“, „_“ und „.“ verwenden, beginnend mit einem Buchstaben oder einer Ziffer</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; names a device on Windows: choose another name</source>
+        <translation>„%1“ bezeichnet unter Windows ein Gerät: einen anderen Namen wählen</translation>
+    </message>
+    <message>
+        <source>%1 (line %2, column %3)</source>
+        <translation>%1 (Zeile %2, Spalte %3)</translation>
+    </message>
+    <message>
+        <source>not valid JSON: %1</source>
+        <translation>kein gültiges JSON: %1</translation>
+    </message>
+    <message>
+        <source>not a DriveDesk plant file: the document is not a JSON object</source>
+        <translation>keine DriveDesk-Anlagendatei: das Dokument ist kein JSON-Objekt</translation>
+    </message>
+    <message>
+        <source>%1: appears twice in one object</source>
+        <translation>%1: kommt in einem Objekt zweimal vor</translation>
+    </message>
+    <message>
+        <source>empty: give the machine a name</source>
+        <translation>leer: der Maschine einen Namen geben</translation>
+    </message>
+    <message>
+        <source>empty: a plant has at least one link</source>
+        <translation>leer: eine Anlage hat mindestens eine Verbindung</translation>
+    </message>
+    <message>
+        <source>cannot read &apos;%1&apos;: %2</source>
+        <translation>„%1“ kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is too large for a plant file (%2 bytes, at most %3)</source>
+        <translation>„%1“ ist zu groß für eine Anlagendatei (%2 Bytes, höchstens %3)</translation>
+    </message>
+</context>
+<context>
     <name>Reply</name>
     <message>
         <source>OK</source>
@@ -4567,6 +5040,37 @@ Verbindungsdialog.
     <message>
         <source>sent to a group of drives or to all drives, which never answer: carried out, not confirmed</source>
         <translation>an eine Gruppe oder an alle Umrichter gesendet, die nie antworten: ausgeführt, nicht bestätigt</translation>
+    </message>
+    <message>
+        <source>the drive stopped answering</source>
+        <translation>der Umrichter antwortet nicht mehr</translation>
+    </message>
+    <message>
+        <source>the drive stopped answering: %1</source>
+        <translation>der Umrichter antwortet nicht mehr: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ReplyCheck</name>
+    <message>
+        <source>a text with the control character %1h</source>
+        <translation>ein Text mit dem Steuerzeichen %1h</translation>
+    </message>
+    <message>
+        <source>limits %1 .. %2: the minimum lies above the maximum</source>
+        <translation>Grenzen %1 .. %2: das Minimum liegt über dem Maximum</translation>
+    </message>
+    <message>
+        <source>a display scaling that cannot be computed (%1)</source>
+        <translation>eine Anzeigenormierung, die nicht berechnet werden kann (%1)</translation>
+    </message>
+    <message>
+        <source>a group of %1 parameters numbered 0 to %2</source>
+        <translation>eine Gruppe von %1 Parametern, nummeriert von 0 bis %2</translation>
+    </message>
+    <message>
+        <source>%1 lies outside the limits %2 .. %3</source>
+        <translation>%1 liegt außerhalb der Grenzen %2 .. %3</translation>
     </message>
 </context>
 <context>
@@ -4707,6 +5211,11 @@ Verbindungsdialog.
         <source>%1 [%2]</source>
         <comment>channel title and unit</comment>
         <translation>%1 [%2]</translation>
+    </message>
+    <message>
+        <source>Value [%1]</source>
+        <comment>the units of the channels on the shared axis</comment>
+        <translation>Wert [%1]</translation>
     </message>
 </context>
 <context>
@@ -5094,6 +5603,43 @@ Verbindungsdialog.
     <message>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>UploadResult</name>
+    <message>
+        <source>the upload was cancelled; nothing was saved</source>
+        <translation>das Hochladen wurde abgebrochen; nichts wurde gesichert</translation>
+    </message>
+    <message>
+        <source>no answer</source>
+        <translation>keine Antwort</translation>
+    </message>
+    <message>
+        <source>the drive could not be read to the end (%1); nothing was saved</source>
+        <translation>der Umrichter konnte nicht bis zum Ende gelesen werden (%1); nichts wurde gesichert</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) of the drive could not be read; nothing was saved</source>
+        <translation>
+            <numerusform>%n Parameter des Umrichters konnte nicht gelesen werden; nichts wurde gesichert</numerusform>
+            <numerusform>%n Parameter des Umrichters konnten nicht gelesen werden; nichts wurde gesichert</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1 %2: %3</source>
+        <translation>%1 %2: %3</translation>
+    </message>
+    <message numerus="yes">
+        <source>no value read for set(s) %1</source>
+        <translation>
+            <numerusform>kein Wert für Satz %1 gelesen</numerusform>
+            <numerusform>kein Wert für die Sätze %1 gelesen</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

@@ -101,6 +101,10 @@
         <source>read-only</source>
         <translation>read-only</translation>
     </message>
+    <message>
+        <source>not a setting</source>
+        <translation>not a setting</translation>
+    </message>
 </context>
 <context>
     <name>ConnectionOptions</name>
@@ -174,6 +178,10 @@
     <message>
         <source>%1 drive %2</source>
         <translation>%1 drive %2</translation>
+    </message>
+    <message>
+        <source>auto</source>
+        <translation>auto</translation>
     </message>
 </context>
 <context>
@@ -368,22 +376,6 @@
         <translation>not sent: %1</translation>
     </message>
     <message>
-        <source>%1 holds %2</source>
-        <translation>%1 holds %2</translation>
-    </message>
-    <message>
-        <source>%1 could not be read back (%2)</source>
-        <translation>%1 could not be read back (%2)</translation>
-    </message>
-    <message>
-        <source>%1: no answer, so whether the drive took the value is unknown (%2)</source>
-        <translation>%1: no answer, so whether the drive took the value is unknown (%2)</translation>
-    </message>
-    <message>
-        <source>written %1, but %2</source>
-        <translation>written %1, but %2</translation>
-    </message>
-    <message>
         <source>%1 not sent: %2</source>
         <translation>%1 not sent: %2</translation>
     </message>
@@ -449,12 +441,51 @@
         <source>Not written:</source>
         <translation>Not written:</translation>
     </message>
+    <message>
+        <source>written %1, but %2 holds %3</source>
+        <translation>written %1, but %2 holds %3</translation>
+    </message>
+    <message>
+        <source>%1: no answer, so whether the drive took %2 is unknown (%3)</source>
+        <translation>%1: no answer, so whether the drive took %2 is unknown (%3)</translation>
+    </message>
+    <message>
+        <source>%1: the drive acknowledged %2, but it could not be read back (%3)</source>
+        <translation>%1: the drive acknowledged %2, but it could not be read back (%3)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n unknown</source>
+        <translation>
+            <numerusform>%n unknown</numerusform>
+            <numerusform>%n unknown</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Unknown (sent, no answer):</source>
+        <translation>Unknown (sent, no answer):</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk</name>
     <message>
         <source>offline records of %1, one a millisecond assumed</source>
         <translation>offline records of %1, one a millisecond assumed</translation>
+    </message>
+    <message>
+        <source>id</source>
+        <translation>id</translation>
+    </message>
+    <message>
+        <source>name</source>
+        <translation>name</translation>
+    </message>
+    <message>
+        <source>unit</source>
+        <translation>unit</translation>
+    </message>
+    <message>
+        <source>set %1</source>
+        <translation>set %1</translation>
     </message>
 </context>
 <context>
@@ -508,6 +539,21 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::BaudRateSearch</name>
+    <message>
+        <source>%1: no drive answered at %2 Bd</source>
+        <translation>%1: no drive answered at %2 Bd</translation>
+    </message>
+    <message>
+        <source>%1: this program cannot open such a connection</source>
+        <translation>%1: this program cannot open such a connection</translation>
+    </message>
+    <message>
+        <source>looking for the drive at %1 Bd</source>
+        <translation>looking for the drive at %1 Bd</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::BitFieldEditor</name>
     <message>
         <source>Definition %1</source>
@@ -527,18 +573,87 @@
     </message>
 </context>
 <context>
-    <name>DriveDesk::CliRunner</name>
+    <name>DriveDesk::CliPlant</name>
     <message>
-        <source>all sets</source>
-        <translation>all sets</translation>
+        <source>cannot make the directory %1</source>
+        <translation>cannot make the directory %1</translation>
+    </message>
+    <message>
+        <source>the directory %1 does not exist</source>
+        <translation>the directory %1 does not exist</translation>
+    </message>
+    <message>
+        <source>stopping every link after the value on its way...</source>
+        <translation>stopping every link after the value on its way...</translation>
+    </message>
+    <message>
+        <source>reading</source>
+        <translation>reading</translation>
+    </message>
+    <message>
+        <source>%1: the addresses found written</source>
+        <translation>%1: the addresses found written</translation>
+    </message>
+    <message>
+        <source>no link answered</source>
+        <translation>no link answered</translation>
+    </message>
+    <message>
+        <source>gave no identification</source>
+        <translation>gave no identification</translation>
+    </message>
+    <message>
+        <source>%1: no drive answered</source>
+        <translation>%1: no drive answered</translation>
     </message>
     <message numerus="yes">
-        <source>set(s) %1</source>
+        <source>%1: saved %2, %n parameter(s)</source>
         <translation>
-            <numerusform>set %1</numerusform>
-            <numerusform>sets %1</numerusform>
+            <numerusform>%1: saved %2, %n parameter</numerusform>
+            <numerusform>%1: saved %2, %n parameters</numerusform>
         </translation>
     </message>
+    <message>
+        <source>%1: not saved: %2: %3</source>
+        <translation>%1: not saved: %2: %3</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n difference(s)</source>
+        <translation>
+            <numerusform>%1: %n difference</numerusform>
+            <numerusform>%1: %n differences</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>set %1</source>
+        <translation>set %1</translation>
+    </message>
+    <message>
+        <source>file %1  drive %2</source>
+        <translation>file %1  drive %2</translation>
+    </message>
+    <message>
+        <source>only in the file</source>
+        <translation>only in the file</translation>
+    </message>
+    <message>
+        <source>only on the drive</source>
+        <translation>only on the drive</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n drive(s) %2</source>
+        <translation>
+            <numerusform>%1 of %n drive %2</numerusform>
+            <numerusform>%1 of %n drives %2</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not: %1</source>
+        <translation>not: %1</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::CliRunner</name>
     <message>
         <source>cannot connect to %1: %2</source>
         <translation>cannot connect to %1: %2</translation>
@@ -554,10 +669,6 @@
     <message>
         <source>&apos;%1&apos; is not a raw 16-bit value (DIN66019 writes raw values)</source>
         <translation>&apos;%1&apos; is not a raw 16-bit value (DIN66019 writes raw values)</translation>
-    </message>
-    <message>
-        <source>%1: written, but reading it back failed: %2</source>
-        <translation>%1: written, but reading it back failed: %2</translation>
     </message>
     <message>
         <source>metadata from the cache of this kind of drive (%1); --no-cache reads it from the drive</source>
@@ -596,22 +707,6 @@
         <translation>%1: %2; nothing was written</translation>
     </message>
     <message>
-        <source>the active set holds %1</source>
-        <translation>the active set holds %1</translation>
-    </message>
-    <message>
-        <source>set %1 holds %2</source>
-        <translation>set %1 holds %2</translation>
-    </message>
-    <message>
-        <source>%1: not written to %2: %3</source>
-        <translation>%1: not written to %2: %3</translation>
-    </message>
-    <message>
-        <source>%1: written %2, but %3</source>
-        <translation>%1: written %2, but %3</translation>
-    </message>
-    <message>
         <source>password not accepted: %1</source>
         <translation>password not accepted: %1</translation>
     </message>
@@ -630,10 +725,6 @@
     <message>
         <source>stopping after the value on its way...</source>
         <translation>stopping after the value on its way...</translation>
-    </message>
-    <message>
-        <source>the drive could not be read to the end (%1); no file was written</source>
-        <translation>the drive could not be read to the end (%1); no file was written</translation>
     </message>
     <message numerus="yes">
         <source>%1: %n parameter(s)</source>
@@ -654,13 +745,6 @@
         <translation>
             <numerusform>%n write-only with the default</numerusform>
             <numerusform>%n write-only with the default</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%n parameter(s) could not be read and have no value in the file: %1</source>
-        <translation>
-            <numerusform>%n parameter could not be read and has no value in the file: %1</numerusform>
-            <numerusform>%n parameters could not be read and have no value in the file: %1</numerusform>
         </translation>
     </message>
     <message>
@@ -747,6 +831,33 @@
     <message>
         <source>&apos;%1&apos;: the set after @ is 0..7, e.g. op.11@2</source>
         <translation>&apos;%1&apos;: the set after @ is 0..7, e.g. op.11@2</translation>
+    </message>
+    <message>
+        <source>found the drive at %1 Bd</source>
+        <translation>found the drive at %1 Bd</translation>
+    </message>
+    <message>
+        <source>scan</source>
+        <translation>scan</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 stopped after %2 of %n parameter(s)</source>
+        <translation>
+            <numerusform>%1 stopped after %2 of %n parameter</numerusform>
+            <numerusform>%1 stopped after %2 of %n parameters</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>no answer</source>
+        <translation>no answer</translation>
+    </message>
+    <message>
+        <source>the drive stopped answering (%1): %2</source>
+        <translation>the drive stopped answering (%1): %2</translation>
+    </message>
+    <message>
+        <source>not read: %1</source>
+        <translation>not read: %1</translation>
     </message>
 </context>
 <context>
@@ -892,6 +1003,21 @@
         <source>the drive has gone silent: a request was given up after every attempt and nothing came from the drive since</source>
         <translation>the drive has gone silent: a request was given up after every attempt and nothing came from the drive since</translation>
     </message>
+    <message>
+        <source>the drive answers again: requests are sent as before</source>
+        <translation>the drive answers again: requests are sent as before</translation>
+    </message>
+    <message numerus="yes">
+        <source>no answer to %n request(s) in %1 s</source>
+        <translation>
+            <numerusform>no answer to %n request in %1 s</numerusform>
+            <numerusform>no answer to %n requests in %1 s</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the drive stopped answering (%1): the requests queued fail, and one request at a time is sent once until the drive answers again</source>
+        <translation>the drive stopped answering (%1): the requests queued fail, and one request at a time is sent once until the drive answers again</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::CompareFeature</name>
@@ -1004,10 +1130,6 @@
     <message>
         <source>Sea&amp;rch:</source>
         <translation>Sea&amp;rch:</translation>
-    </message>
-    <message>
-        <source>C&amp;hosen only</source>
-        <translation>C&amp;hosen only</translation>
     </message>
     <message>
         <source>Show only the rows ticked to be written: a last look</source>
@@ -1169,6 +1291,18 @@
             <numerusform>%n values written into %1.</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Live and read-only values and parameters a parameter list leaves out: never counted as a difference</source>
+        <translation>Live and read-only values and parameters a parameter list leaves out: never counted as a difference</translation>
+    </message>
+    <message>
+        <source>&amp;Not settings (%1)</source>
+        <translation>&amp;Not settings (%1)</translation>
+    </message>
+    <message>
+        <source>Chosen onl&amp;y</source>
+        <translation>Chosen onl&amp;y</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ComparisonModel</name>
@@ -1235,6 +1369,26 @@
     <message>
         <source>State</source>
         <translation>State</translation>
+    </message>
+    <message>
+        <source>not a setting, only in A</source>
+        <translation>not a setting, only in A</translation>
+    </message>
+    <message>
+        <source>not a setting, only in B</source>
+        <translation>not a setting, only in B</translation>
+    </message>
+    <message>
+        <source>not a setting, different</source>
+        <translation>not a setting, different</translation>
+    </message>
+    <message>
+        <source>not a setting, equal</source>
+        <translation>not a setting, equal</translation>
+    </message>
+    <message>
+        <source>A live or read-only value, or one a parameter list leaves out: shown, never counted as a difference.</source>
+        <translation>A live or read-only value, or one a parameter list leaves out: shown, never counted as a difference.</translation>
     </message>
 </context>
 <context>
@@ -1348,10 +1502,6 @@
         <translation>Choose the serial port the drive is connected to.</translation>
     </message>
     <message>
-        <source>&quot;%1&quot; is not a baud rate: enter a number such as 38400.</source>
-        <translation>&quot;%1&quot; is not a baud rate: enter a number such as 38400.</translation>
-    </message>
-    <message>
         <source>Enter the host name or IP address of the serial device server.</source>
         <translation>Enter the host name or IP address of the serial device server.</translation>
     </message>
@@ -1370,6 +1520,18 @@
     <message>
         <source>Services 13, 14, 19-21 and 51-53, which the HSP5 specification does not define. Only for a drive known to have them: a drive without them cannot tell where such a request ends and loses the requests that follow it.</source>
         <translation>Services 13, 14, 19-21 and 51-53, which the HSP5 specification does not define. Only for a drive known to have them: a drive without them cannot tell where such a request ends and loses the requests that follow it.</translation>
+    </message>
+    <message>
+        <source>Automatic tries 38400, 19200, 9600, 57600 and 115200 Bd and takes the rate the drive answers at</source>
+        <translation>Automatic tries 38400, 19200, 9600, 57600 and 115200 Bd and takes the rate the drive answers at</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automatic</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a baud rate: enter a number such as 38400, or choose Automatic.</source>
+        <translation>&quot;%1&quot; is not a baud rate: enter a number such as 38400, or choose Automatic.</translation>
     </message>
 </context>
 <context>
@@ -1466,14 +1628,6 @@
         <translation>Download to the Drive</translation>
     </message>
     <message>
-        <source>Writes the values of %1 to the drive, each read back.</source>
-        <translation>Writes the values of %1 to the drive, each read back.</translation>
-    </message>
-    <message>
-        <source>&amp;Write all the same (the checks above are overruled)</source>
-        <translation>&amp;Write all the same (the checks above are overruled)</translation>
-    </message>
-    <message>
         <source>Sets to write:</source>
         <translation>Sets to write:</translation>
     </message>
@@ -1568,13 +1722,17 @@
         <source>Stopping after the value on its way...</source>
         <translation>Stopping after the value on its way...</translation>
     </message>
+    <message>
+        <source>Writes %1 to the drive, each read back.</source>
+        <translation>Writes %1 to the drive, each read back.</translation>
+    </message>
+    <message>
+        <source>Write all the same (the checks above are &amp;overruled)</source>
+        <translation>Write all the same (the checks above are &amp;overruled)</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::DownloadFeature</name>
-    <message>
-        <source>&amp;Download File to Drive...</source>
-        <translation>&amp;Download File to Drive...</translation>
-    </message>
     <message>
         <source>Write a parameter file&apos;s values to the drive, after a last look at what differs</source>
         <translation>Write a parameter file&apos;s values to the drive, after a last look at what differs</translation>
@@ -1602,6 +1760,18 @@
     <message>
         <source>the values chosen in the compare window</source>
         <translation>the values chosen in the compare window</translation>
+    </message>
+    <message>
+        <source>Down&amp;load File to Drive...</source>
+        <translation>Down&amp;load File to Drive...</translation>
+    </message>
+    <message>
+        <source>the values of %1</source>
+        <translation>the values of %1</translation>
+    </message>
+    <message>
+        <source>the values chosen from %1</source>
+        <translation>the values chosen from %1</translation>
     </message>
 </context>
 <context>
@@ -1775,6 +1945,34 @@
         <source>values of sets %1</source>
         <translation>values of sets %1</translation>
     </message>
+    <message>
+        <source>%1: not confirmed when read again on a line with errors</source>
+        <translation>%1: not confirmed when read again on a line with errors</translation>
+    </message>
+    <message>
+        <source>the answers did not agree</source>
+        <translation>the answers did not agree</translation>
+    </message>
+    <message>
+        <source>implausible answer: %1</source>
+        <translation>implausible answer: %1</translation>
+    </message>
+    <message>
+        <source>default value: %1</source>
+        <translation>default value: %1</translation>
+    </message>
+    <message>
+        <source>value of set %1: %2</source>
+        <translation>value of set %1: %2</translation>
+    </message>
+    <message>
+        <source>group %1: %2 of %3 parameters found</source>
+        <translation>group %1: %2 of %3 parameters found</translation>
+    </message>
+    <message>
+        <source>group %1: %2 of %3 parameters found; no answer for %4 (%5)</source>
+        <translation>group %1: %2 of %3 parameters found; no answer for %4 (%5)</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::DriveSession</name>
@@ -1802,36 +2000,12 @@
         <translation>%1 not reset: no set chosen</translation>
     </message>
     <message>
-        <source>%1 not reset%2: %3</source>
-        <translation>%1 not reset%2: %3</translation>
-    </message>
-    <message>
-        <source>%1 = %2 not written%3: %4</source>
-        <translation>%1 = %2 not written%3: %4</translation>
-    </message>
-    <message>
         <source>Reset %1 to its default%2</source>
         <translation>Reset %1 to its default%2</translation>
     </message>
     <message>
         <source>Write %1 = %2%3</source>
         <translation>Write %1 = %2%3</translation>
-    </message>
-    <message>
-        <source>%1 reset to its default%2</source>
-        <translation>%1 reset to its default%2</translation>
-    </message>
-    <message>
-        <source>%1 = %2 written%3</source>
-        <translation>%1 = %2 written%3</translation>
-    </message>
-    <message>
-        <source>; not%1: %2</source>
-        <translation>; not%1: %2</translation>
-    </message>
-    <message>
-        <source>; reading it back failed: %1</source>
-        <translation>; reading it back failed: %1</translation>
     </message>
     <message>
         <source>%1%2: the value before the change is not known, so it stays as it is</source>
@@ -1852,10 +2026,6 @@
     <message>
         <source>Redo failed: %1: %2</source>
         <translation>Redo failed: %1: %2</translation>
-    </message>
-    <message>
-        <source>the drive holds %1%2</source>
-        <translation>the drive holds %1%2</translation>
     </message>
     <message>
         <source>Still copying set %1 to set %2</source>
@@ -1948,6 +2118,10 @@
     <message>
         <source>; the drive changes this value itself, so the write cannot be undone</source>
         <translation>; the drive changes this value itself, so the write cannot be undone</translation>
+    </message>
+    <message>
+        <source>this drive has no parameter %1</source>
+        <translation>this drive has no parameter %1</translation>
     </message>
 </context>
 <context>
@@ -2097,10 +2271,6 @@
         <translation>Search every group by id (ru.3), name or value as you type (%1)</translation>
     </message>
     <message>
-        <source>&amp;Differs from default</source>
-        <translation>&amp;Differs from default</translation>
-    </message>
-    <message>
         <source>&amp;Differs from Default</source>
         <translation>&amp;Differs from Default</translation>
     </message>
@@ -2115,10 +2285,6 @@
     <message>
         <source>Only the parameters marked with a star</source>
         <translation>Only the parameters marked with a star</translation>
-    </message>
-    <message>
-        <source>&amp;Hide above password level</source>
-        <translation>&amp;Hide above password level</translation>
     </message>
     <message>
         <source>&amp;Hide Parameters above Password Level</source>
@@ -2143,6 +2309,14 @@
     <message>
         <source>Only settings whose value differs from the default (not read-only or live values)</source>
         <translation>Only settings whose value differs from the default (not read-only or live values)</translation>
+    </message>
+    <message>
+        <source>D&amp;iffers from default</source>
+        <translation>D&amp;iffers from default</translation>
+    </message>
+    <message>
+        <source>Hide above &amp;password level</source>
+        <translation>Hide above &amp;password level</translation>
     </message>
 </context>
 <context>
@@ -2387,10 +2561,6 @@
         <translation>Read every value from the drive again</translation>
     </message>
     <message>
-        <source>Drive &amp;Information...</source>
-        <translation>Drive &amp;Information...</translation>
-    </message>
-    <message>
         <source>&amp;Quit</source>
         <translation>&amp;Quit</translation>
     </message>
@@ -2548,10 +2718,6 @@
         <translation>Save &amp;Drive to File...</translation>
     </message>
     <message>
-        <source>Save the parameters read from the drive to a parameter file; the window goes on with the drive</source>
-        <translation>Save the parameters read from the drive to a parameter file; the window goes on with the drive</translation>
-    </message>
-    <message>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
@@ -2644,6 +2810,53 @@
     <message>
         <source>Save Parameter File As</source>
         <translation>Save Parameter File As</translation>
+    </message>
+    <message>
+        <source>Reconnected to %1; the drive was read only in part: reading it again.</source>
+        <translation>Reconnected to %1; the drive was read only in part: reading it again.</translation>
+    </message>
+    <message>
+        <source>Reading the drive again stopped (%1). The table keeps what was read before: every parameter with its limits, units and texts, and the values as last read.</source>
+        <translation>Reading the drive again stopped (%1). The table keeps what was read before: every parameter with its limits, units and texts, and the values as last read.</translation>
+    </message>
+    <message>
+        <source>Reading the drive again stopped: %1</source>
+        <translation>Reading the drive again stopped: %1</translation>
+    </message>
+    <message>
+        <source>Read the drive afresh and save it to a parameter file once every value was read; the window goes on with the drive</source>
+        <translation>Read the drive afresh and save it to a parameter file once every value was read; the window goes on with the drive</translation>
+    </message>
+    <message>
+        <source>Drive Inf&amp;ormation...</source>
+        <translation>Drive Inf&amp;ormation...</translation>
+    </message>
+    <message>
+        <source>Saving the drive to %1: %2</source>
+        <translation>Saving the drive to %1: %2</translation>
+    </message>
+    <message>
+        <source>Saving the drive to %1: reading the drive...</source>
+        <translation>Saving the drive to %1: reading the drive...</translation>
+    </message>
+    <message>
+        <source>Save Drive to File cancelled: nothing was saved to %1.</source>
+        <translation>Save Drive to File cancelled: nothing was saved to %1.</translation>
+    </message>
+    <message>
+        <source>The drive was not saved to %1: %2.</source>
+        <translation>The drive was not saved to %1: %2.</translation>
+    </message>
+    <message>
+        <source>Not read:</source>
+        <translation>Not read:</translation>
+    </message>
+    <message numerus="yes">
+        <source>... and %n more (Show Details...)</source>
+        <translation>
+            <numerusform>... and %n more (Show Details...)</numerusform>
+            <numerusform>... and %n more (Show Details...)</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2850,6 +3063,10 @@
         <source>Last read %1; the drive is not answering</source>
         <translation>Last read %1; the drive is not answering</translation>
     </message>
+    <message>
+        <source>Changed in the file: %1; save to keep it</source>
+        <translation>Changed in the file: %1; save to keep it</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::PasswordDialog</name>
@@ -2891,6 +3108,41 @@
     <message>
         <source>no text chosen</source>
         <translation>no text chosen</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::PlantRun</name>
+    <message>
+        <source>cannot connect: %1</source>
+        <translation>cannot connect: %1</translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation>connecting</translation>
+    </message>
+    <message>
+        <source>searching</source>
+        <translation>searching</translation>
+    </message>
+    <message>
+        <source>the search stopped: %1</source>
+        <translation>the search stopped: %1</translation>
+    </message>
+    <message>
+        <source>stopped before it was read</source>
+        <translation>stopped before it was read</translation>
+    </message>
+    <message>
+        <source>%1 does not exist</source>
+        <translation>%1 does not exist</translation>
+    </message>
+    <message>
+        <source>stopped before the drive was read whole; nothing saved</source>
+        <translation>stopped before the drive was read whole; nothing saved</translation>
+    </message>
+    <message>
+        <source>the file is of %1, the drive %2</source>
+        <translation>the file is of %1, the drive %2</translation>
     </message>
 </context>
 <context>
@@ -3106,6 +3358,10 @@ Drag: move the time; Ctrl+drag: move the values
 Shift+click: place cursor 1; Shift+right click: place cursor 2; drag a cursor to move it
 + and -: zoom the time (with Ctrl: the values); Left and Right: move the time; Up and Down: move the values
 Home: the whole recording; End: follow the newest samples; A: fit the values; Space: freeze or go on; Esc: remove the cursors</translation>
+    </message>
+    <message>
+        <source>Trigger</source>
+        <translation>Trigger</translation>
     </message>
 </context>
 <context>
@@ -3454,6 +3710,29 @@ Home: the whole recording; End: follow the newest samples; A: fit the values; Sp
         <source>Cannot save %1: %2</source>
         <translation>Cannot save %1: %2</translation>
     </message>
+    <message>
+        <source>&amp;Replace</source>
+        <translation>&amp;Replace</translation>
+    </message>
+    <message numerus="yes">
+        <source>Shot of %n sample(s) around the trigger.</source>
+        <translation>
+            <numerusform>Shot of %n sample around the trigger.</numerusform>
+            <numerusform>Shot of %n samples around the trigger.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>%1 Saved to %2.</source>
+        <translation>%1 Saved to %2.</translation>
+    </message>
+    <message>
+        <source>The recording shown is not saved. The offline records replace it.</source>
+        <translation>The recording shown is not saved. The offline records replace it.</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ScopeFeature</name>
@@ -3607,6 +3886,10 @@ Home: the whole recording; End: follow the newest samples; A: fit the values; Sp
         <translation>--protocol, --address and --baud belong to --connect: give tcp:HOST:PORT, serial:DEVICE or sim</translation>
     </message>
     <message>
+        <source>--open shows a parameter file with no drive: leave out --connect, --protocol, --address and --baud</source>
+        <translation>--open shows a parameter file with no drive: leave out --connect, --protocol, --address and --baud</translation>
+    </message>
+    <message>
         <source>Usage: drivedesk [--connect TARGET | --open FILE] [options]
 
 The DriveDesk parameter editor. Without --connect or --open it opens the connection
@@ -3616,7 +3899,8 @@ dialog.
   --open FILE          show and edit a parameter file with no drive
   --protocol NAME      hsp5 (default), din66019ii or din66019
   --address N          drive address on a DIN66019(II) bus, 0..239 (default 1)
-  --baud N             baud rate (default 38400)
+  --baud N|auto        baud rate; auto (the default on a serial line) finds the rate
+                       the drive answers at
   --language en|de     language of the window and of the drive&apos;s texts
 </source>
         <translation>Usage: drivedesk [--connect TARGET | --open FILE] [options]
@@ -3628,13 +3912,10 @@ dialog.
   --open FILE          show and edit a parameter file with no drive
   --protocol NAME      hsp5 (default), din66019ii or din66019
   --address N          drive address on a DIN66019(II) bus, 0..239 (default 1)
-  --baud N             baud rate (default 38400)
+  --baud N|auto        baud rate; auto (the default on a serial line) finds the rate
+                       the drive answers at
   --language en|de     language of the window and of the drive&apos;s texts
 </translation>
-    </message>
-    <message>
-        <source>--open shows a parameter file with no drive: leave out --connect, --protocol, --address and --baud</source>
-        <translation>--open shows a parameter file with no drive: leave out --connect, --protocol, --address and --baud</translation>
     </message>
 </context>
 <context>
@@ -3761,11 +4042,26 @@ dialog.
     </message>
 </context>
 <context>
-    <name>DriveDesk::ValueWriter</name>
+    <name>DriveDesk::UploadRun</name>
     <message>
-        <source>this drive has no parameter %1</source>
-        <translation>this drive has no parameter %1</translation>
+        <source>no drive is connected</source>
+        <translation>no drive is connected</translation>
     </message>
+    <message>
+        <source>the drive stopped answering during the read (no answer after every attempt)</source>
+        <translation>the drive stopped answering during the read (no answer after every attempt)</translation>
+    </message>
+    <message>
+        <source>the read ended without a result</source>
+        <translation>the read ended without a result</translation>
+    </message>
+    <message>
+        <source>the connection was closed</source>
+        <translation>the connection was closed</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ValueEdits</name>
     <message>
         <source>the connection to the drive was closed</source>
         <translation>the connection to the drive was closed</translation>
@@ -3800,6 +4096,37 @@ dialog.
     <message>
         <source>Type %1, software %2, serial number %3</source>
         <translation>Type %1, software %2, serial number %3</translation>
+    </message>
+</context>
+<context>
+    <name>EditText</name>
+    <message>
+        <source>%1 not reset%2: %3</source>
+        <translation>%1 not reset%2: %3</translation>
+    </message>
+    <message>
+        <source>%1 = %2 not written%3: %4</source>
+        <translation>%1 = %2 not written%3: %4</translation>
+    </message>
+    <message>
+        <source>%1 reset to its default%2</source>
+        <translation>%1 reset to its default%2</translation>
+    </message>
+    <message>
+        <source>%1 = %2 written%3</source>
+        <translation>%1 = %2 written%3</translation>
+    </message>
+    <message>
+        <source>; not%1: %2</source>
+        <translation>; not%1: %2</translation>
+    </message>
+    <message>
+        <source>; reading it back failed: %1</source>
+        <translation>; reading it back failed: %1</translation>
+    </message>
+    <message>
+        <source>the drive holds %1%2</source>
+        <translation>the drive holds %1%2</translation>
     </message>
 </context>
 <context>
@@ -3895,12 +4222,12 @@ dialog.
         <translation>cannot create the metadata cache folder &apos;%1&apos;</translation>
     </message>
     <message>
-        <source>cannot write the metadata cache file &apos;%1&apos;: %2</source>
-        <translation>cannot write the metadata cache file &apos;%1&apos;: %2</translation>
-    </message>
-    <message>
         <source>cannot remove &apos;%1&apos;</source>
         <translation>cannot remove &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>cannot write the metadata cache: %1</source>
+        <translation>cannot write the metadata cache: %1</translation>
     </message>
 </context>
 <context>
@@ -4043,6 +4370,30 @@ dialog.
     <message>
         <source>version: %1 is a newer format than this DriveDesk reads (version %2); a newer DriveDesk reads it</source>
         <translation>version: %1 is a newer format than this DriveDesk reads (version %2); a newer DriveDesk reads it</translation>
+    </message>
+    <message>
+        <source>%1 is below min %2</source>
+        <translation>%1 is below min %2</translation>
+    </message>
+    <message>
+        <source>%1 is outside min..max (%2..%3), and properties1 says default and limits are constant</source>
+        <translation>%1 is outside min..max (%2..%3), and properties1 says default and limits are constant</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; cannot stand in a parameter id: %2</source>
+        <translation>&apos;%1&apos; cannot stand in a parameter id: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; names another address</source>
+        <translation>&apos;%1&apos; names another address</translation>
+    </message>
+    <message>
+        <source>%1 (line %2, column %3)</source>
+        <translation>%1 (line %2, column %3)</translation>
+    </message>
+    <message>
+        <source>%1: appears twice in one object (line %2, column %3)</source>
+        <translation>%1: appears twice in one object (line %2, column %3)</translation>
     </message>
 </context>
 <context>
@@ -4521,6 +4872,128 @@ dialog.
     </message>
 </context>
 <context>
+    <name>PlantDrive</name>
+    <message>
+        <source>found</source>
+        <translation>found</translation>
+    </message>
+    <message>
+        <source>saved</source>
+        <translation>saved</translation>
+    </message>
+    <message>
+        <source>equal</source>
+        <translation>equal</translation>
+    </message>
+    <message>
+        <source>different</source>
+        <translation>different</translation>
+    </message>
+    <message>
+        <source>another kind of drive</source>
+        <translation>another kind of drive</translation>
+    </message>
+    <message>
+        <source>no file</source>
+        <translation>no file</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>failed</translation>
+    </message>
+    <message>
+        <source>unreachable</source>
+        <translation>unreachable</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>stopped</translation>
+    </message>
+</context>
+<context>
+    <name>PlantFile</name>
+    <message>
+        <source>an HSP5 link reaches one drive: addresses are for a DIN66019 bus, leave them out</source>
+        <translation>an HSP5 link reaches one drive: addresses are for a DIN66019 bus, leave them out</translation>
+    </message>
+    <message>
+        <source>empty: leave addresses out to search the bus for drives</source>
+        <translation>empty: leave addresses out to search the bus for drives</translation>
+    </message>
+    <message>
+        <source>drive address %1 appears twice</source>
+        <translation>drive address %1 appears twice</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is also the name of links[%2]: each link needs a name of its own</source>
+        <translation>&apos;%1&apos; is also the name of links[%2]: each link needs a name of its own</translation>
+    </message>
+    <message>
+        <source>unknown protocol &apos;%1&apos;: use hsp5, din66019ii or din66019</source>
+        <translation>unknown protocol &apos;%1&apos;: use hsp5, din66019ii or din66019</translation>
+    </message>
+    <message>
+        <source>%1, expected &apos;%2&apos;: not a DriveDesk plant file</source>
+        <translation>%1, expected &apos;%2&apos;: not a DriveDesk plant file</translation>
+    </message>
+    <message>
+        <source>not a string</source>
+        <translation>not a string</translation>
+    </message>
+    <message>
+        <source>%1 is a newer format than this DriveDesk reads (version %2); a newer DriveDesk reads it</source>
+        <translation>%1 is a newer format than this DriveDesk reads (version %2); a newer DriveDesk reads it</translation>
+    </message>
+    <message>
+        <source>empty: a link needs a name</source>
+        <translation>empty: a link needs a name</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is longer than %2 characters</source>
+        <translation>&apos;%1&apos; is longer than %2 characters</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; cannot be part of a file name: use letters a-z, digits, &apos;-&apos;, &apos;_&apos; and &apos;.&apos;, starting with a letter or digit</source>
+        <translation>&apos;%1&apos; cannot be part of a file name: use letters a-z, digits, &apos;-&apos;, &apos;_&apos; and &apos;.&apos;, starting with a letter or digit</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; names a device on Windows: choose another name</source>
+        <translation>&apos;%1&apos; names a device on Windows: choose another name</translation>
+    </message>
+    <message>
+        <source>%1 (line %2, column %3)</source>
+        <translation>%1 (line %2, column %3)</translation>
+    </message>
+    <message>
+        <source>not valid JSON: %1</source>
+        <translation>not valid JSON: %1</translation>
+    </message>
+    <message>
+        <source>not a DriveDesk plant file: the document is not a JSON object</source>
+        <translation>not a DriveDesk plant file: the document is not a JSON object</translation>
+    </message>
+    <message>
+        <source>%1: appears twice in one object</source>
+        <translation>%1: appears twice in one object</translation>
+    </message>
+    <message>
+        <source>empty: give the machine a name</source>
+        <translation>empty: give the machine a name</translation>
+    </message>
+    <message>
+        <source>empty: a plant has at least one link</source>
+        <translation>empty: a plant has at least one link</translation>
+    </message>
+    <message>
+        <source>cannot read &apos;%1&apos;: %2</source>
+        <translation>cannot read &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is too large for a plant file (%2 bytes, at most %3)</source>
+        <translation>&apos;%1&apos; is too large for a plant file (%2 bytes, at most %3)</translation>
+    </message>
+</context>
+<context>
     <name>Reply</name>
     <message>
         <source>OK</source>
@@ -4567,6 +5040,37 @@ dialog.
     <message>
         <source>sent to a group of drives or to all drives, which never answer: carried out, not confirmed</source>
         <translation>sent to a group of drives or to all drives, which never answer: carried out, not confirmed</translation>
+    </message>
+    <message>
+        <source>the drive stopped answering</source>
+        <translation>the drive stopped answering</translation>
+    </message>
+    <message>
+        <source>the drive stopped answering: %1</source>
+        <translation>the drive stopped answering: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ReplyCheck</name>
+    <message>
+        <source>a text with the control character %1h</source>
+        <translation>a text with the control character %1h</translation>
+    </message>
+    <message>
+        <source>limits %1 .. %2: the minimum lies above the maximum</source>
+        <translation>limits %1 .. %2: the minimum lies above the maximum</translation>
+    </message>
+    <message>
+        <source>a display scaling that cannot be computed (%1)</source>
+        <translation>a display scaling that cannot be computed (%1)</translation>
+    </message>
+    <message>
+        <source>a group of %1 parameters numbered 0 to %2</source>
+        <translation>a group of %1 parameters numbered 0 to %2</translation>
+    </message>
+    <message>
+        <source>%1 lies outside the limits %2 .. %3</source>
+        <translation>%1 lies outside the limits %2 .. %3</translation>
     </message>
 </context>
 <context>
@@ -4707,6 +5211,11 @@ dialog.
         <source>%1 [%2]</source>
         <comment>channel title and unit</comment>
         <translation>%1 [%2]</translation>
+    </message>
+    <message>
+        <source>Value [%1]</source>
+        <comment>the units of the channels on the shared axis</comment>
+        <translation>Value [%1]</translation>
     </message>
 </context>
 <context>
@@ -5094,6 +5603,43 @@ dialog.
     <message>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>UploadResult</name>
+    <message>
+        <source>the upload was cancelled; nothing was saved</source>
+        <translation>the upload was cancelled; nothing was saved</translation>
+    </message>
+    <message>
+        <source>no answer</source>
+        <translation>no answer</translation>
+    </message>
+    <message>
+        <source>the drive could not be read to the end (%1); nothing was saved</source>
+        <translation>the drive could not be read to the end (%1); nothing was saved</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) of the drive could not be read; nothing was saved</source>
+        <translation>
+            <numerusform>%n parameter of the drive could not be read; nothing was saved</numerusform>
+            <numerusform>%n parameters of the drive could not be read; nothing was saved</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1 %2: %3</source>
+        <translation>%1 %2: %3</translation>
+    </message>
+    <message numerus="yes">
+        <source>no value read for set(s) %1</source>
+        <translation>
+            <numerusform>no value read for set %1</numerusform>
+            <numerusform>no value read for sets %1</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

@@ -7,6 +7,7 @@ namespace DriveDesk {
 FaultInjector::FaultInjector(const SimulationOptions &options, int dataBits, BusCounters *counters)
     : m_corruptRate(options.corruptByteRate)
     , m_dropRate(options.dropByteRate)
+    , m_flipRate(options.flipByteRate)
     , m_dataBits(dataBits)
     , m_counters(counters)
     , m_random(options.seed)
@@ -36,18 +37,24 @@ FaultInjector::Fate FaultInjector::pass(char *byte)
         *byte = char(quint8(*byte) ^ quint8(1u << m_random.bounded(m_dataBits)));
         return Fate::ParityError;
     }
+    if (draw(m_flipRate)) {
+        ++m_counters->flippedBytes;
+        *byte = char(quint8(*byte) ^ quint8(1u << m_random.bounded(m_dataBits)));
+        return Fate::Flipped;
+    }
     return Fate::Passed;
 }
 
 QByteArray FaultInjector::pass(const QByteArray &bytes, QList<qsizetype> *lineErrors)
 {
-    if (m_dropRate <= 0 && m_corruptRate <= 0)
+    if (m_dropRate <= 0 && m_corruptRate <= 0 && m_flipRate <= 0)
         return bytes;
     QByteArray out;
     out.reserve(bytes.size());
     for (char byte : bytes) {
         switch (pass(&byte)) {
         case Fate::Passed:
+        case Fate::Flipped:
             out.append(byte);
             break;
         case Fate::ParityError:

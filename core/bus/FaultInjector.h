@@ -23,6 +23,7 @@ public:
         Passed,
         Lost,        // gone without a trace
         ParityError, // one bit flipped: the receiving UART flags it and discards the character
+        Flipped,     // one bit flipped, unflagged: the character arrives changed
     };
     // One character on the line.
     Fate pass(char *byte);
@@ -33,6 +34,7 @@ public:
 private:
     double m_corruptRate = 0;
     double m_dropRate = 0;
+    double m_flipRate = 0;
     int m_dataBits = 8;
     BusCounters *m_counters = nullptr;
     QRandomGenerator m_random;

@@ -120,6 +120,27 @@ void PseudoTerminal::close()
     m_outbox.clear();
 }
 
+qint32 PseudoTerminal::lineBaudRate() const
+{
+    termios attributes{};
+    if (m_slave < 0 || ::tcgetattr(m_slave, &attributes) != 0)
+        return 0;
+    static const std::pair<speed_t, qint32> kRates[] = {
+        {B50, 50},         {B75, 75},         {B110, 110},       {B134, 134},
+        {B150, 150},       {B200, 200},       {B300, 300},       {B600, 600},
+        {B1200, 1200},     {B1800, 1800},     {B2400, 2400},     {B4800, 4800},
+        {B9600, 9600},     {B19200, 19200},   {B38400, 38400},   {B57600, 57600},
+        {B115200, 115200}, {B230400, 230400}, {B460800, 460800}, {B500000, 500000},
+        {B576000, 576000}, {B921600, 921600}, {B1000000, 1000000},
+    };
+    const speed_t speed = ::cfgetispeed(&attributes);
+    for (const auto &[code, rate] : kRates) {
+        if (code == speed)
+            return rate;
+    }
+    return -1; // a rate of its own (BOTHER): none of the standard ones
+}
+
 void PseudoTerminal::write(const QByteArray &bytes)
 {
     if (m_master < 0) {

@@ -29,6 +29,10 @@ public:
     QString devicePath() const { return m_devicePath; }
 
     void write(const QByteArray &bytes);
+    // The baud rate the other side set on the line (a pty pair shares its termios on Linux),
+    // 0 when it cannot be told, -1 for a rate outside the standard termios ones (55500, say).
+    // Nothing paces a pty: this is only what the port was set to.
+    qint32 lineBaudRate() const;
 
 signals:
     void received(const QByteArray &bytes);

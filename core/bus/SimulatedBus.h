@@ -31,6 +31,7 @@ struct BusCounters {
     int encodeFailures = 0;    // answers the codec could not express (reported as warnings)
     // Injected faults.
     int corruptedBytes = 0;
+    int flippedBytes = 0; // unflagged flips
     int droppedBytes = 0;
     int delayedReplies = 0;
     int busyReplies = 0;

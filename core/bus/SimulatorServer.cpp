@@ -188,8 +188,20 @@ void SimulatorServer::fromOperator(Route route, const QByteArray &bytes)
 {
     if (bytes.isEmpty())
         return;
+    // A drive on a serial line hears only what comes at its own rate; anything else is noise
+    // it cannot frame. A pty carries the rate the operator's port was set to, not the timing.
+    if (route == Route::Pty && !atDrivesRate()) {
+        m_ignoredAtOtherRates += bytes.size();
+        return;
+    }
     m_route = route;
     m_clock->receive(bytes);
+}
+
+bool SimulatorServer::atDrivesRate() const
+{
+    const qint32 rate = m_pty->lineBaudRate();
+    return rate == 0 || rate == m_bus->options().baudRate;
 }
 
 // A socket or pty cannot carry the UART's error flags: a flagged character is just missing.

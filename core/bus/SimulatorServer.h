@@ -41,6 +41,9 @@ public:
     bool hasClient() const { return !m_client.isNull(); }
 
     SimulatedBus &bus() { return *m_bus; }
+    // Bytes that came over the pty while its line was set to another rate than the drive's
+    // (SimulationOptions::baudRate): a drive never hears them.
+    qint64 ignoredAtOtherRates() const { return m_ignoredAtOtherRates; }
 
 signals:
     void clientConnected(const QString &peer);
@@ -61,6 +64,7 @@ private:
     void dropClient();
     void fromOperator(Route route, const QByteArray &bytes);
     void toOperator(const QByteArray &bytes);
+    bool atDrivesRate() const;
 
     std::unique_ptr<SimulatedBus> m_bus;
     BusClock *m_clock = nullptr;
@@ -70,6 +74,7 @@ private:
     QPointer<QTcpSocket> m_waiting; // a new connection waiting for m_client to close
     PseudoTerminal *m_pty = nullptr;
     Route m_route = Route::Tcp;
+    qint64 m_ignoredAtOtherRates = 0;
 };
 
 } // namespace DriveDesk

@@ -45,6 +45,12 @@ void CliRunner::start()
     options.timeoutMs = m_request.timeoutMs;
     m_client = std::make_unique<DriveClient>(m_request.connection, everyLink(), options);
     connect(m_client.get(), &DriveClient::connected, this, &CliRunner::enterPassword);
+    connect(m_client.get(), &DriveClient::baudRateFound, this, [this](qint32 baudRate) {
+        if (!m_request.quiet)
+            m_err << tr("found the drive at %1 Bd").arg(baudRate) << Qt::endl;
+    });
+    connect(m_client.get(), &DriveClient::driveStoppedAnswering, this,
+            [this](const QString &reason) { m_silence = reason; });
     connect(m_client.get(), &DriveClient::connectionFailed, this, [this](const QString &reason) {
         fail(3, tr("cannot connect to %1: %2")
                     .arg(m_request.connection.displayName(), reason));
@@ -199,6 +205,8 @@ void CliRunner::runScan()
         else
             m_out << ParameterTable::scan(drive, m_request.values);
         m_out.flush();
+        if (!m_silence.isEmpty())
+            return fail(1, stoppedAfter(tr("scan"), drive));
         if (!drive.incompleteReason.isEmpty())
             return fail(1, tr("scan incomplete: %1").arg(drive.incompleteReason));
         done();
@@ -298,13 +306,33 @@ QString CliRunner::valueText(const ParameterDescription &parameter, qint32 raw) 
     return ParameterTable::valueText(parameter, raw);
 }
 
+QString CliRunner::stoppedAfter(const QString &what, const DriveDescription &drive)
+{
+    int known = 0;
+    int read = 0;
+    for (const GroupDescription &group : drive.groups) {
+        known += std::max(group.parameterCount, int(group.parameters.size()));
+        for (const ParameterDescription &parameter : group.parameters)
+            read += parameter.error.isEmpty() && !parameter.name.isEmpty() ? 1 : 0;
+    }
+    return tr("%1 stopped after %2 of %n parameter(s)", nullptr, known).arg(what).arg(read);
+}
+
 void CliRunner::fail(int exitCode, const QString &message)
 {
     if (m_finished)
         return;
     m_finished = true;
     m_out.flush();
-    m_err << QStringLiteral("drivedesk-cli: ") << message << Qt::endl;
+    QString text = message;
+    const bool silent = m_client && (!m_silence.isEmpty() || m_client->isDriveSilent());
+    if (silent && (exitCode == 1 || exitCode == 3)) {
+        exitCode = 3;
+        const QString reason = m_silence.isEmpty() ? tr("no answer") : m_silence;
+        if (!message.contains(QLatin1String("stopped answering")))
+            text = tr("the drive stopped answering (%1): %2").arg(reason, message);
+    }
+    m_err << QStringLiteral("drivedesk-cli: ") << text << Qt::endl;
     emit finished(exitCode);
 }
 

@@ -19,7 +19,8 @@ struct ScopeRecording;
 // Runs one drivedesk-cli command against a drive: connects, does the work asynchronously
 // through the client, prints the result, and ends with finished(exit code).
 // Exit codes: 0 done, 1 the drive refused or the work could not be completed,
-// 2 bad input (refused before anything was sent), 3 no connection.
+// 2 bad input (refused before anything was sent), 3 no connection, or the drive stopped
+// answering on the way.
 class CliRunner : public QObject
 {
     Q_OBJECT
@@ -73,7 +74,10 @@ private:
     // Metadata of a cached kind of drive comes from the cache unless --no-cache.
     void scan(ScanOptions options, std::function<void(const DriveDescription &)> done);
 
+    // A failure (1) while the drive has stopped answering becomes exit 3, and says so.
     void fail(int exitCode, const QString &message);
+    // "scan stopped after 120 of 206 parameters": how far a reading of the drive got.
+    static QString stoppedAfter(const QString &what, const DriveDescription &drive);
     void done();
     QString valueText(const ParameterDescription &parameter, qint32 raw) const;
 
@@ -83,6 +87,7 @@ private:
     QTextStream m_err;
     bool m_finished = false;
     bool m_cacheNoted = false;
+    QString m_silence; // why the drive counts as stopped answering (DriveClient), else empty
     QList<DriveDescription> m_files; // loadFiles(): the files of diff, upload, download
     DownloadRun *m_download = nullptr;
     std::unique_ptr<ScopeRecording> m_recording;

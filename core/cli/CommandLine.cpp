@@ -21,7 +21,10 @@ QString usage()
         "  --connect TARGET     tcp:HOST:PORT, serial:DEVICE or sim (the simulated drive)\n"
         "  --protocol NAME      hsp5 (default), din66019ii or din66019\n"
         "  --address N          drive address on a DIN66019(II) bus, 0..239 (default 1)\n"
-        "  --baud N             baud rate (default 38400)\n"
+        "  --baud N|auto        baud rate; auto (the default on a serial line) tries\n"
+        "                       38400, 19200, 9600, 57600, 115200 (HSP5 also 55500, 100000,\n"
+        "                       125000, 250000) and takes the one the drive answers at;\n"
+        "                       elsewhere 38400\n"
         "  --language en|de     language of the drive's texts and of messages (default en)\n"
         "  --hsp5-extensions    the drive has DriveDesk's HSP5 services 13, 14, 19-21 and\n"
         "                       51-53 (off: only the services of the HSP5 specification)\n"
@@ -30,10 +33,10 @@ QString usage()
         "  --password N         enter a password (ud.01) before the command: opens the\n"
         "                       password level it belongs to\n"
         "  --quiet              no progress on standard error\n"
+        "  --version            print the version and exit\n"
         "\n"
         "Commands:\n"
         "  info                         identification, groups and parameter counts\n"
-        "  --version            print the version and exit\n"
         "  scan [--format json|table|csv] [--values]\n"
         "                               every parameter with its metadata (and values);\n"
         "                               csv: id, name, unit and the value of each set\n"
@@ -69,8 +72,13 @@ QString usage()
         "  scope --offline --csv FILE   the drive's offline records (service 21,\n"
         "                               DIN66019II) as CSV, one a millisecond assumed\n"
         "\n"
-        "Exit status: 0 done, 1 the drive refused or the work was not completed, 2 bad\n"
-        "input (nothing was sent), 3 no connection.\n");
+        "Exit status:\n"
+        "  0  done\n"
+        "  1  the drive refused, or the work was not completed\n"
+        "  2  bad input: nothing was sent\n"
+        "  3  no connection, or the drive stopped answering on the way: 4 requests in a\n"
+        "     row without a byte from the drive after every attempt (a few seconds; the\n"
+        "     message says how far the command got)\n");
 }
 
 } // namespace
@@ -202,6 +210,7 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     const QCommandLineOption rate(QStringLiteral("rate"), {}, QStringLiteral("hz"));
     const QCommandLineOption csv(QStringLiteral("csv"), {}, QStringLiteral("file"));
     const QCommandLineOption offline(QStringLiteral("offline"));
+    const QCommandLineOption version(QStringLiteral("version"));
     parser.addOptions({help, timeout, quiet, format, values, set, sets, raw, noCache, password,
                        dryRun, force, channels, duration, rate, csv, offline, version});
     *helpText = usage();
@@ -210,7 +219,6 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     QStringList shielded = arguments;
     QStringList negatives;
     static const QRegularExpression negativeNumber(QStringLiteral("^-[0-9.,]"));
-    const QCommandLineOption version(QStringLiteral("version"));
     for (qsizetype i = 1; i < shielded.size(); ++i) {
         if (negativeNumber.match(shielded[i]).hasMatch()) {
             negatives << shielded[i];
@@ -225,6 +233,12 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
         error->clear();
         return std::nullopt;
     }
+    if (parser.isSet(version)) { // printed as the help is
+        error->clear();
+        *helpText = QStringLiteral("%1 %2\n").arg(QCoreApplication::applicationName(),
+                                                  QCoreApplication::applicationVersion());
+        return std::nullopt;
+    }
     helpText->clear();
 
     CliRequest request;
@@ -233,12 +247,6 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     const QStringList words = parser.positionalArguments();
     const bool diff = words.value(0).compare(QLatin1String("diff"), Qt::CaseInsensitive) == 0;
     const bool diffWithDrive = words.mid(1).contains(QStringLiteral("drive"), Qt::CaseInsensitive);
-    if (parser.isSet(version)) { // printed as the help is
-        error->clear();
-        *helpText = QStringLiteral("%1 %2\n").arg(QCoreApplication::applicationName(),
-                                                  QCoreApplication::applicationVersion());
-        return std::nullopt;
-    }
     if (diff && diffWithDrive && !parser.isSet(QStringLiteral("connect"))) {
         *error = QStringLiteral("diff with the drive needs --connect");
         return std::nullopt;

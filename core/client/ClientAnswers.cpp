@@ -28,6 +28,7 @@ void ClientWorker::onReceived(const QByteArray &bytes)
     if (!bytes.isEmpty()) {
         ++m_receptions;
         setDriveSilent(false); // whatever came, the drive is there
+        noteHeard();
     }
     m_decoder->feed(bytes);
     if (m_draining)
@@ -356,9 +357,13 @@ void ClientWorker::complete(PendingRequest &request, Reply::Status status, const
         && !request.options.probe && request.timeouts > 0
         && !request.heard && request.receptionsBefore == m_receptions)
         setDriveSilent(true);
+    noteUnanswered(request, &reply.status, &reply.detail);
+    const bool stops = reply.status == Reply::Status::DriveSilent && !m_driveStopped;
     const Completion done = std::move(request.done);
     request.done = nullptr;
     done(reply, request.heard);
+    if (stops)
+        stopAnswering();
 }
 
 QString ClientWorker::transportDetail(const PendingRequest &request, Reply::Status status) const

@@ -36,7 +36,10 @@ void ClientWorker::scan(const ScanOptions &options,
     }
     // The scanner keeps a reference to its sink: both live until the scan finished.
     auto sink = std::make_shared<OwnedSink>(*this);
-    auto *scanner = new DriveScanner(*sink, options, m_settings.language, this);
+    ScanOptions scanning = options;
+    // The switch that says the drive has DriveDesk's services also lets the scan ask service 13.
+    scanning.identificationText = scanning.identificationText || m_settings.hsp5Extensions;
+    auto *scanner = new DriveScanner(*sink, scanning, m_settings.language, this);
     auto *watcher = new QFutureWatcher<DriveDescription>(scanner);
     const QPointer<DriveScanner> guard(scanner);
     connect(watcher, &QFutureWatcherBase::canceled, this, [guard] {

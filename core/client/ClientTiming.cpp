@@ -81,4 +81,12 @@ int probeTimeoutMs(const ConnectionSettings &settings, const ClientOptions &opti
     return std::min(probe, answerTimeoutMs(settings, options));
 }
 
+int silenceLimitMs(const ConnectionSettings &settings, const ClientOptions &options)
+{
+    const int attempts = 1 + std::max(options.retries, 0);
+    const int quietLine = settings.protocol == Protocol::Hsp5 ? quietLineMs(settings) : 0;
+    const int timeout = answerTimeoutMs(settings, options);
+    return timeout + kUnansweredRequestsToStop * attempts * (timeout + quietLine);
+}
+
 } // namespace DriveDesk

@@ -18,6 +18,16 @@ int probeTimeoutMs(const ConnectionSettings &settings, const ClientOptions &opti
 // byte as the start of a telegram again: longer than the longest telegram, plus a margin.
 int quietLineMs(const ConnectionSettings &settings);
 
+// A drive has stopped answering once this many requests in a row were given up after every
+// attempt with nothing at all from the drive since their last attempt went out.
+constexpr int kUnansweredRequestsToStop = 4;
+
+// The longest a client takes to decide that a drive stopped answering, from the moment it
+// falls silent: up to the requests on the wire then timing out once, and then
+// kUnansweredRequestsToStop requests each spending every attempt (an answer timeout each, and
+// HSP5's quiet line before each attempt while it recovers). HSP5 at 38400 baud: 2.0 s.
+int silenceLimitMs(const ConnectionSettings &settings, const ClientOptions &options);
+
 // Bits on the line per character in the protocol's character format: 11 (8E1) or 10 (7E1).
 int bitsPerCharacter(const ConnectionSettings &settings);
 

@@ -1,5 +1,6 @@
 #include "ClientWorker.h"
 
+#include "BaudRateSearch.h"
 #include "ClientTiming.h"
 #include "ReplyCheck.h"
 
@@ -55,6 +56,7 @@ void ClientWorker::init()
     connect(m_quietTimer, &QTimer::timeout, this, &ClientWorker::pump);
     m_sinceLastByte.start();
     m_sinceLastSend.start();
+    m_clock.start();
 }
 
 QString ClientWorker::connectionDescription() const
@@ -67,8 +69,10 @@ void ClientWorker::setState(DriveClient::State state)
     if (m_state == state)
         return;
     m_state = state;
-    if (state != DriveClient::State::Connected)
+    if (state != DriveClient::State::Connected) {
         setDriveSilent(false); // a drive that is not connected is not "silent"
+        resetSilence();
+    }
     emit stateChanged(state);
 }
 
@@ -90,6 +94,34 @@ void ClientWorker::connectToDrive()
     if (m_state == DriveClient::State::Connecting || m_state == DriveClient::State::Connected)
         return;
     dropLink();
+    if (m_settings.kind != ConnectionSettings::Kind::Serial || !m_settings.automaticBaudRate)
+        return openLink();
+    setState(DriveClient::State::Connecting);
+    m_baudSearch = std::make_unique<BaudRateSearch>(m_settings, m_makeLink);
+    connect(m_baudSearch.get(), &BaudRateSearch::note, this,
+            [this](const QString &text) { record(TrafficRecord::Kind::Error, {}, text); });
+    connect(m_baudSearch.get(), &BaudRateSearch::found, this, &ClientWorker::onBaudRateFound);
+    connect(m_baudSearch.get(), &BaudRateSearch::failed, this, [this](const QString &reason) {
+        m_baudSearch.release()->deleteLater(); // it is reporting right now
+        setState(DriveClient::State::Disconnected);
+        emit connectionFailed(reason);
+        failAll(Reply::Status::NotConnected, reason);
+    });
+    m_baudSearch->start();
+}
+
+void ClientWorker::onBaudRateFound(qint32 baudRate)
+{
+    m_baudSearch.release()->deleteLater(); // it is reporting right now
+    m_settings.baudRate = baudRate;
+    m_answerTimeoutMs = DriveDesk::answerTimeoutMs(m_settings, m_options);
+    m_quietLineMs = quietLineMs(m_settings);
+    emit baudRateFound(baudRate);
+    openLink();
+}
+
+void ClientWorker::openLink()
+{
     m_decoder->reset();
     m_selectedDrive = -1;
     m_recovering = false;
@@ -131,6 +163,12 @@ void ClientWorker::connectToDrive()
 
 void ClientWorker::disconnectFromDrive()
 {
+    if (m_baudSearch) {
+        m_baudSearch.reset();
+        setState(DriveClient::State::Disconnected);
+        failAll(Reply::Status::Cancelled, tr("disconnected"));
+        return;
+    }
     if (!m_link)
         return;
     setState(DriveClient::State::Disconnected);
@@ -198,6 +236,11 @@ quint64 ClientWorker::submitRequest(const Telegram &request, RequestOptions opti
         const QString why = m_state == DriveClient::State::Lost ? tr("the link was lost")
                                                                 : QString();
         complete(*pending, Reply::Status::NotConnected, nullptr, why);
+        return ticket;
+    }
+    QString silence;
+    if (failsWhileStopped(*pending, &silence)) {
+        complete(*pending, Reply::Status::DriveSilent, nullptr, silence);
         return ticket;
     }
     m_queue.push_back(std::move(pending));
@@ -362,6 +405,7 @@ void ClientWorker::transmit(PendingRequest &request)
     if (request.wire.driveAddress >= 0)
         meaning = tr("to drive %1: %2").arg(request.wire.driveAddress).arg(meaning);
     record(TrafficRecord::Kind::Sent, bytes, meaning, &request.wire);
+    noteSent(request);
     m_link->send(bytes);
 
     if (!expectsAnswer(request)) {
@@ -418,6 +462,8 @@ void ClientWorker::requeue(Request request)
 void ClientWorker::record(TrafficRecord::Kind kind, const QByteArray &bytes, const QString &meaning,
                           const Telegram *telegram, const Telegram *request)
 {
+    if (kind == TrafficRecord::Kind::Error)
+        ++m_lineErrors;
     TrafficRecord entry;
     entry.kind = kind;
     entry.msecsSinceEpoch = QDateTime::currentMSecsSinceEpoch();

@@ -19,6 +19,7 @@ class QTimer;
 
 namespace DriveDesk {
 
+class BaudRateSearch;
 class DriveScanner;
 
 // The protocol work of a DriveClient: the link, the request queue with timeouts and retries,
@@ -46,6 +47,7 @@ public:
     {
         return m_codec->supports(service, access);
     }
+    quint64 lineErrors() const override { return m_lineErrors; }
 
     // The facade's requests: the result goes to the promise; cancelling its future drops the
     // request from the queue, or has its answer ignored when it is already on the wire.
@@ -76,6 +78,10 @@ signals:
     void connectionFailed(const QString &reason);
     void linkLost(const QString &reason);
     void driveSilentChanged(bool silent);
+    // Serial with automaticBaudRate: the drive answered at this rate, before connected().
+    void baudRateFound(qint32 baudRate);
+    // The drive stopped answering altogether: everything queued failed with `reason`.
+    void driveStoppedAnswering(const QString &reason);
     void traffic(const DriveDesk::TrafficRecord &record);
 
 private:
@@ -86,6 +92,10 @@ private:
     void onLinkOpened();
     void onLinkFailed(const QString &reason);
     void dropLink();
+    // Opens the link at m_settings' baud rate; connectToDrive() after the rate is known.
+    void openLink();
+    // The drive answered at `baudRate`: the line's timing follows it.
+    void onBaudRateFound(qint32 baudRate);
     void onReceived(const QByteArray &bytes);
     void onAnswer(const Telegram &answer);
     void onDecodeError(const DecodeError &error);
@@ -108,6 +118,19 @@ private:
 
     PendingRequest *awaitingAnswer(quint8 operatorInvoke);
     Request takeInFlight(quint64 ticket);
+    // ClientSilence.cpp: whether a drive stopped answering, and what then goes on the line.
+    // A request given up with Timeout: counts toward the stop, and once the drive has stopped,
+    // ends as DriveSilent (status and detail are changed).
+    void noteUnanswered(const PendingRequest &request, Reply::Status *status, QString *detail);
+    void stopAnswering();
+    void noteSent(PendingRequest &request);
+    void noteHeard();
+    void resetSilence();
+    // While stopped, one request at a time goes out, once: the check whether the drive is back.
+    // Whether `request` fails at once instead (*detail says why).
+    bool failsWhileStopped(PendingRequest &request, QString *detail) const;
+    QString silenceText() const;
+
     // Runs the request's completion; the request itself stays where it is.
     void complete(PendingRequest &request, Reply::Status status, const Telegram *answer = nullptr,
                   const QString &detail = {});
@@ -126,13 +149,14 @@ private:
     void recordTimeout(const PendingRequest &request);
     bool isDin() const { return m_settings.protocol != Protocol::Hsp5; }
 
-    const ConnectionSettings m_settings;
+    ConnectionSettings m_settings; // baudRate: the rate found, with automaticBaudRate
     const ClientOptions m_options;
     const LinkMaker m_makeLink;
-    const int m_answerTimeoutMs = 0;
+    int m_answerTimeoutMs = 0;
     std::unique_ptr<ProtocolCodec> m_codec;
     std::unique_ptr<FrameDecoder> m_decoder;
     std::unique_ptr<Link> m_link;
+    std::unique_ptr<BaudRateSearch> m_baudSearch; // while connecting with automaticBaudRate
     DriveClient::State m_state = DriveClient::State::Disconnected;
     std::deque<Request> m_queue;
     std::vector<Request> m_inFlight; // on the wire or between attempts
@@ -140,10 +164,19 @@ private:
     QTimer *m_quietTimer = nullptr; // recovery: wakes the queue once the line is quiet
     QElapsedTimer m_sinceLastByte;
     QElapsedTimer m_sinceLastSend;
-    const int m_quietLineMs = 0;
+    int m_quietLineMs = 0;
     quint64 m_answersMatched = 0;
     quint64 m_receptions = 0; // chunks of bytes received from the drive
+    quint64 m_lineErrors = 0; // error notes recorded (RequestSink::lineErrors)
     bool m_driveSilent = false;
+    // Silence: telegrams sent since the last byte from the drive, when the first of them went
+    // out (on m_clock), the requests given up in a row without a byte since their last attempt,
+    // and whether the drive counts as stopped.
+    QElapsedTimer m_clock;
+    int m_sentSinceLastByte = 0;
+    qint64 m_firstUnansweredMs = 0;
+    int m_unansweredInARow = 0;
+    bool m_driveStopped = false;
     QList<QPointer<DriveScanner>> m_scanners; // running
     bool m_recovering = false;
     quint8 m_lastInvokeId = 0;
@@ -178,6 +211,7 @@ public:
     {
         return m_worker.supports(service, access);
     }
+    quint64 lineErrors() const override { return m_worker.lineErrors(); }
 
 private:
     ClientWorker &m_worker;

@@ -42,6 +42,9 @@ DriveClient::DriveClient(ConnectionSettings settings, LinkMaker makeLink, Client
     connect(m_worker, &ClientWorker::connectionFailed, this, &DriveClient::connectionFailed);
     connect(m_worker, &ClientWorker::linkLost, this, &DriveClient::linkLost);
     connect(m_worker, &ClientWorker::driveSilentChanged, this, &DriveClient::setDriveSilent);
+    connect(m_worker, &ClientWorker::baudRateFound, this, &DriveClient::onBaudRateFound);
+    connect(m_worker, &ClientWorker::driveStoppedAnswering, this,
+            &DriveClient::driveStoppedAnswering);
     connect(m_worker, &ClientWorker::traffic, this, &DriveClient::traffic);
     m_thread->start();
 }
@@ -60,6 +63,13 @@ void DriveClient::setState(State state)
         return;
     m_state = state;
     emit stateChanged(state);
+}
+
+void DriveClient::onBaudRateFound(qint32 baudRate)
+{
+    m_settings.baudRate = baudRate;
+    m_settings.automaticBaudRate = false; // settings() names the rate; a reconnect searches again
+    emit baudRateFound(baudRate);
 }
 
 void DriveClient::setDriveSilent(bool silent)

@@ -43,6 +43,10 @@ struct ScanOptions {
     // An upload: the result is what a parameter list holds (ParameterList::fromScan), and no
     // value is read that a list does not read (excluded and write-only parameters).
     bool parameterList = false;
+    // Service 13 function 1, the drive's identification text: DriveDesk's extension, which
+    // seed 000 lacks and seed 003 marks reserved. Sent only when the user says the drive has it
+    // (the connection's --hsp5-extensions sets it); otherwise the identification parameters.
+    bool identificationText = false;
 };
 
 // A note on the wire for the telegram monitor.
@@ -121,11 +125,19 @@ signals:
     void connectionFailed(const QString &reason);
     void linkLost(const QString &reason);
     void driveSilentChanged(bool silent);
+    // Serial with automaticBaudRate: the drive answered at this rate (settings() now has it),
+    // before connected().
+    void baudRateFound(qint32 baudRate);
+    // The drive stopped answering altogether (docs/client.md, "A drive that stops answering"):
+    // every request queued failed as Reply::Status::DriveSilent with `reason`, e.g. "no answer
+    // to 16 requests in 1.9 s". Comes after driveSilentChanged(true).
+    void driveStoppedAnswering(const QString &reason);
     void traffic(const DriveDesk::TrafficRecord &record);
 
 private:
     void setState(State state);
     void setDriveSilent(bool silent);
+    void onBaudRateFound(qint32 baudRate);
     void start(std::shared_ptr<RequestJobBase> job);
 
     ConnectionSettings m_settings;

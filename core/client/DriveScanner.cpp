@@ -38,14 +38,18 @@ void DriveScanner::start()
     if (m_started || m_finished)
         return;
     m_started = true;
+    m_lineErrorsAtStart = m_sink.lineErrors();
 
-    // Seed 000 has no service 13: over HSP5 a drive could not even frame it. Where the
-    // protocol carries it, a drive without the function refuses it (ack 7): no text then.
-    if (m_sink.supports(Service::Fieldbus, Access::Read)) {
+    // Service 13 is DriveDesk's extension: seed 000 has none (over HSP5 a drive could not
+    // even frame it) and seed 003 marks it reserved. It is sent only where the user said the
+    // drive has it; a drive without the function refuses it (ack 7): no text then.
+    if (m_options.identificationText && m_sink.supports(Service::Fieldbus, Access::Read)) {
         enqueue(Service::Fieldbus, FieldbusData{kIdentifyFunction, 0, 0, {}},
                 tr("identification"), [this](const Reply &reply) {
                     if (const auto *data = reply.data<FieldbusData>())
                         m_state.identification = driveText(data->data);
+                    else if (!reply.isAnswer())
+                        m_warnings.append(failure(tr("identification"), reply));
                 });
     }
     if (!probeCache())
@@ -77,7 +81,8 @@ void DriveScanner::cancel()
     emit finished(result(tr("cancelled")));
 }
 
-void DriveScanner::enqueue(Service service, ServiceData data, QString what, Handler handle)
+void DriveScanner::enqueue(Service service, ServiceData data, QString what, Handler handle,
+                           Check check)
 {
     switch (service) {
     case Service::Properties:
@@ -97,8 +102,12 @@ void DriveScanner::enqueue(Service service, ServiceData data, QString what, Hand
     default:
         break;
     }
-    m_queue.push_back({Telegram::request(service, Access::Read, std::move(data)), std::move(what),
-                       std::move(handle)});
+    auto request = std::make_shared<QueuedRequest>();
+    request->telegram = Telegram::request(service, Access::Read, std::move(data));
+    request->what = std::move(what);
+    request->handle = std::move(handle);
+    request->check = std::move(check);
+    m_queue.push_back(std::move(request));
     ++m_enqueued;
 }
 
@@ -107,6 +116,11 @@ void DriveScanner::readParameter(quint8 page, quint8 number, Service service, Se
                                  const QString &label,
                                  std::function<void(ScanParameter &, const T &)> apply)
 {
+    Check check;
+    if constexpr (std::is_same_v<T, ParameterValue> || std::is_same_v<T, DefaultValue>)
+        check = [this, page, number](const Reply &reply) {
+            return implausibleRead(page, number, reply);
+        };
     enqueue(service, std::move(data), parameterWhat(page, number, label),
             [this, page, number, label, apply = std::move(apply)](const Reply &reply) {
                 ScanParameter &parameter = m_state.parameter(page, number);
@@ -117,7 +131,8 @@ void DriveScanner::readParameter(quint8 page, quint8 number, Service service, Se
                 parameter.errors.append(failure(label, reply));
                 if (!std::is_same_v<T, ParameterValue>)
                     ++parameter.metadataErrors;
-            });
+            },
+            std::move(check));
 }
 
 // ScanValues.cpp reads values through it.
@@ -131,20 +146,15 @@ void DriveScanner::submitQueued()
         return;
     m_submitting = true;
     const QPointer<DriveScanner> self(this);
+    checkLine();
     while (!m_finished && m_submitted < kJobRequestWindow && !m_queue.empty()) {
-        QueuedRequest next = std::move(m_queue.front());
+        Queued next = std::move(m_queue.front());
         m_queue.pop_front();
         ++m_submitted;
-        m_sink.submit(next.telegram, [self, service = next.telegram.service, what = next.what,
-                                      handle = next.handle](const Reply &reply) {
-            if (!self)
-                return;
-            // Counted before the handler runs: it enqueues what the answer leads to.
-            if (service == Service::Properties)
-                ++self->m_values.answered;
-            else if (service == Service::PlaintextIndices)
-                ++self->m_plaintexts.answered;
-            self->onReplied(reply, what, handle);
+        ++next->reads;
+        m_sink.submit(next->telegram, [self, next](const Reply &reply) {
+            if (self)
+                self->onReplied(reply, next);
         });
         if (!self)
             return;
@@ -154,7 +164,7 @@ void DriveScanner::submitQueued()
         finish({});
 }
 
-void DriveScanner::onReplied(const Reply &reply, const QString &what, const Handler &handle)
+void DriveScanner::onReplied(const Reply &reply, const Queued &request)
 {
     --m_submitted;
     ++m_done;
@@ -171,8 +181,9 @@ void DriveScanner::onReplied(const Reply &reply, const QString &what, const Hand
     default:
         break;
     }
-    handle(reply);
-    emit progress(m_done, total(), what);
+    checkLine();
+    settle(request, reply);
+    emit progress(m_done, total(), request->what);
     submitQueued();
 }
 
@@ -182,9 +193,14 @@ void DriveScanner::finish(const QString &reason)
     m_queue.clear();
     // A scan that stops keeps the texts read so far.
     deliverUnfinishedPlaintexts();
+    m_state.rejectImplausibleValues();
     // Stored with every value read: the identity is in the values of its parameters.
-    if (reason.isEmpty() && mayStore())
-        store(m_state.describe(m_language, {}));
+    if (reason.isEmpty() && mayStore()) {
+        // A group that came up short is no picture of the kind either.
+        const DriveDescription complete = m_state.describe(m_language, {});
+        if (complete.incompleteReason.isEmpty())
+            store(complete);
+    }
     emit finished(result(reason));
 }
 
@@ -236,7 +252,7 @@ void DriveScanner::onGroupProperties(quint8 page, const Reply &reply)
     if (!properties) {
         // A refusal, whatever its ack, means there is no group on this page; anything else
         // leaves it unknown.
-        if (reply.status != Reply::Status::Refused)
+        if (!reply.isAnswer())
             m_state.problems.append(tr("group page %1h: %2").arg(hexByte(page), reply.message()));
         return;
     }
@@ -252,12 +268,17 @@ void DriveScanner::onGroupProperties(quint8 page, const Reply &reply)
 
     enqueue(Service::GroupName, NameData{description.address, quint8(m_language), {}},
             tr("group %1: name").arg(description.id), [this, page](const Reply &reply) {
-                // A group that will not tell its name keeps an empty one; its id still shows.
+                // A group that refuses its name keeps an empty one; its id still shows. One
+                // that does not answer is not taken for one without a name.
                 if (const auto *name = reply.data<NameData>())
                     m_state.groups.at(page).description.name = driveText(name->text);
+                else if (!reply.isAnswer())
+                    m_state.problems.append(failure(
+                        tr("group %1: name").arg(m_state.groups.at(page).description.id), reply));
             });
 
     if (m_options.parameters && m_options.onlyParameters.isEmpty()) {
+        group.walked = true;
         askNames(page);
         return;
     }
@@ -297,7 +318,13 @@ void DriveScanner::onParameterName(quint8 page, quint8 number, const Reply &repl
     --group.namesPending;
     const bool unused = reply.status == Reply::Status::Refused
                         && reply.ack() == Ack::AddressInvalid;
-    if (!unused) {
+    if (!reply.isAnswer()) {
+        // Only an answer settles an address: a name or the drive's refusal. Taken for a
+        // parameter, an address that gave none would use up the group's count, and its last
+        // parameters would never be asked for.
+        group.unsettled.append(number);
+        group.unsettledReasons.append(reply.message());
+    } else if (!unused) {
         // Any other failure may hide an existing parameter: keep it with the reason and read
         // the rest of what the drive says about it.
         ScanParameter &parameter = group.parameters[number];
@@ -320,6 +347,7 @@ void DriveScanner::readLimits(quint8 page, quint8 number)
                                    tr("limits"), [](ScanParameter &p, const ParameterLimits &d) {
                                        p.description.minimum = d.lower;
                                        p.description.maximum = d.upper;
+                                       p.limitsKnown = true;
                                    });
 }
 
@@ -329,6 +357,7 @@ void DriveScanner::readDefault(quint8 page, quint8 number)
     readParameter<DefaultValue>(page, number, Service::DefaultValue, DefaultValue{address},
                                 tr("default value"), [](ScanParameter &p, const DefaultValue &d) {
                                     p.description.defaultValue = d.value;
+                                    p.defaultKnown = true;
                                 });
 }
 

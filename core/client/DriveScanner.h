@@ -20,9 +20,11 @@ class MetadataCache;
 // A state machine driven by the sink's `done` callbacks; it lives in the sink's thread.
 // finished() is emitted exactly once; a receiver that wants the scanner gone uses deleteLater().
 //
-// It sends only what the drive can frame: service 13 (identification text) only where the sink
-// supports it. A drive of a kind the metadata cache knows (ScanOptions::metadata) costs only
-// its identification and its values; a cold scan of a full drive refreshes the cache.
+// It sends only what the drive can frame: service 13 (identification text) only where the user
+// opted in (ScanOptions::identificationText) and the sink supports it. Once the line shows
+// errors, every answer it keeps is confirmed by a second read that agrees (ScanConfirm.cpp).
+// A drive of a kind the metadata cache knows (ScanOptions::metadata) costs only its
+// identification and its values; a cold scan of a full drive refreshes the cache.
 class DriveScanner : public QObject
 {
     Q_OBJECT
@@ -44,10 +46,29 @@ signals:
 private:
     using Handler = std::function<void(const Reply &)>;
 
+    // Why an answer cannot be true beyond what implausibleAnswer() sees (a value outside its
+    // parameter's limits); empty when nothing speaks against it.
+    using Check = std::function<QString(const Reply &)>;
+
     struct QueuedRequest {
         Telegram telegram;
         QString what; // for progress
         Handler handle;
+        Check check;
+        // On a line that showed errors an answer counts once two reads agree: the answers so
+        // far, and how often it was read (answered or not).
+        std::vector<Reply> answers;
+        QStringList implausible;
+        int reads = 0;
+        bool recheck = false; // of an answer kept earlier: leads to nothing new
+    };
+    using Queued = std::shared_ptr<QueuedRequest>;
+
+    // An answer kept while the line was clean: read again once the line shows errors.
+    struct Kept {
+        Telegram telegram;
+        QString what;
+        Reply reply;
     };
 
     // The kind parameters of one cached kind, as the drive answers them.
@@ -57,13 +78,21 @@ private:
         bool failed = false;
     };
 
-    void enqueue(Service service, ServiceData data, QString what, Handler handle);
+    void enqueue(Service service, ServiceData data, QString what, Handler handle,
+                 Check check = {});
     // A read about one existing parameter: a failure goes to its errors, prefixed by `label`.
     template<typename T>
     void readParameter(quint8 page, quint8 number, Service service, ServiceData data,
                        const QString &label, std::function<void(ScanParameter &, const T &)> apply);
     void submitQueued();
-    void onReplied(const Reply &reply, const QString &what, const Handler &handle);
+    void onReplied(const Reply &reply, const Queued &request);
+    // Confirmation (ScanConfirm.cpp): hands an answer to its handler once it may be kept as the
+    // drive's truth, or reads the request again.
+    void settle(const Queued &request, const Reply &reply);
+    void deliver(const QueuedRequest &request, const Reply &reply);
+    void readAgain(const Queued &request);
+    // Once the line shows errors, what was kept before is read once more to confirm it.
+    void checkLine();
     void finish(const QString &reason);
     DriveDescription result(const QString &reason);
     int total() const;
@@ -95,6 +124,8 @@ private:
     void readSetValues(quint8 page, quint8 number, quint8 setMask);
     bool wantsValue(quint8 page, quint8 number) const;
     QString parameterWhat(quint8 page, quint8 number, const QString &detail = {}) const;
+    // A value or default outside the parameter's limits, where they are known.
+    QString implausibleRead(quint8 page, quint8 number, const Reply &reply) const;
     QString failure(const QString &label, const Reply &reply) const;
 
     // The metadata cache (ScanCache.cpp).
@@ -110,7 +141,10 @@ private:
     const Language m_language;
     std::unique_ptr<MetadataCache> m_cache; // null when the scan neither reads nor writes it
     ScanState m_state;
-    std::deque<QueuedRequest> m_queue; // not yet handed to the sink
+    std::deque<Queued> m_queue; // not yet handed to the sink
+    quint64 m_lineErrorsAtStart = 0;  // RequestSink::lineErrors() when the scan started
+    bool m_lineShowedErrors = false;
+    std::vector<Kept> m_kept;         // answers kept unconfirmed while the line was clean
     std::vector<Probe> m_probes;
     int m_probesPending = 0;
     std::optional<DriveKind> m_cachedKind; // the kind whose cached metadata is used

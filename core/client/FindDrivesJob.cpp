@@ -88,9 +88,7 @@ void FindDrivesJob::askNext()
         return;
     }
     const int address = m_addresses.at(m_next++);
-    const Telegram probe = m_protocol == Protocol::Din66019
-        ? ValueRequests::readStandard(m_protocol, m_probeAddress)
-        : ValueRequests::read(m_probeAddress, 1);
+    const Telegram probe = ValueRequests::presence(m_protocol, m_probeAddress);
     ++m_onTheWay;
     sink().probe(addressed(probe, address), [this, address](const Reply &reply, bool heard) {
         onProbed(address, reply, heard);

@@ -43,6 +43,7 @@ struct PendingRequest {
     QDeadlineTimer deadline;
     quint64 answersBefore = 0; // answers the client had matched when this attempt went out
     quint64 receptionsBefore = 0; // bytes the client had received when it first went out
+    quint64 receptionsAtAttempt = 0; // ... and when its latest attempt went out
 
     int attempts = 0;
     int timeouts = 0;

@@ -21,6 +21,11 @@ QString withDetail(const QString &sentence, const QString &detail)
 
 } // namespace
 
+bool Reply::isAnswer() const
+{
+    return status == Status::Ok || (status == Status::Refused && !isTransient(ack()));
+}
+
 QString Reply::message() const
 {
     switch (status) {
@@ -48,6 +53,9 @@ QString Reply::message() const
     case Status::NoReply:
         return ReplyText::tr("sent to a group of drives or to all drives, which never answer: "
                              "carried out, not confirmed");
+    case Status::DriveSilent:
+        return detail.isEmpty() ? ReplyText::tr("the drive stopped answering")
+                                : ReplyText::tr("the drive stopped answering: %1").arg(detail);
     }
     return statusName(status);
 }
@@ -63,6 +71,7 @@ QString statusName(Reply::Status status)
     case Reply::Status::NotConnected: return QStringLiteral("not connected");
     case Reply::Status::Unsupported: return QStringLiteral("unsupported");
     case Reply::Status::NoReply: return QStringLiteral("no reply");
+    case Reply::Status::DriveSilent: return QStringLiteral("drive silent");
     }
     return QStringLiteral("status %1").arg(int(status));
 }

@@ -1,5 +1,10 @@
 #include "ReplyCheck.h"
 
+#include "parameters/DisplayScaling.h"
+#include "parameters/ParameterFormat.h"
+
+#include <QCoreApplication>
+
 #include <optional>
 
 namespace DriveDesk {
@@ -97,7 +102,70 @@ void fillRequestFields(const ServiceData &sent, ServiceData &answer)
         answer);
 }
 
+// The translation context of the plausibility messages: the checks are free functions.
+class ReplyCheckText
+{
+    Q_DECLARE_TR_FUNCTIONS(ReplyCheck)
+};
+
+// A drive text holds printable Latin-1 up to its first NUL; what follows the NUL is padding.
+QString controlCharacter(const QByteArray &text)
+{
+    for (const char c : text) {
+        const auto code = quint8(c);
+        if (code == 0)
+            return {};
+        if (code < 0x20 || (code >= 0x7F && code < 0xA0))
+            return ReplyCheckText::tr("a text with the control character %1h")
+                .arg(code, 2, 16, QLatin1Char('0'))
+                .toUpper()
+                .replace(QLatin1Char('H'), QLatin1Char('h'));
+    }
+    return {};
+}
+
 } // namespace
+
+QString implausibleAnswer(const Telegram &answer)
+{
+    return std::visit(
+        [](const auto &d) -> QString {
+            using T = std::decay_t<decltype(d)>;
+            if constexpr (std::is_same_v<T, NameData> || std::is_same_v<T, CombivisPlaintextData>
+                          || std::is_same_v<T, PlaintextDefinitionData>) {
+                return controlCharacter(d.text);
+            } else if constexpr (std::is_same_v<T, ParameterLimits>) {
+                if (d.lower > d.upper)
+                    return ReplyCheckText::tr("limits %1 .. %2: the minimum lies above the maximum")
+                        .arg(d.lower)
+                        .arg(d.upper);
+            } else if constexpr (std::is_same_v<T, DisplayScalingData>) {
+                const QString invalid = DisplayScaling(d).invalidReason();
+                if (!invalid.isEmpty())
+                    return ReplyCheckText::tr("a display scaling that cannot be computed (%1)")
+                        .arg(invalid);
+            } else if constexpr (std::is_same_v<T, GroupPropertiesData>) {
+                if (int(d.countMinusOne) > int(d.highestNumber))
+                    return ReplyCheckText::tr("a group of %1 parameters numbered 0 to %2")
+                        .arg(int(d.countMinusOne) + 1)
+                        .arg(d.highestNumber);
+                return controlCharacter(QByteArray(d.id.data(), int(d.id.size())));
+            }
+            return {};
+        },
+        answer.data);
+}
+
+QString implausibleValue(const ParameterDescription &parameter, qint32 value)
+{
+    const ParameterFormat format(parameter);
+    if (format.isWithinLimits(value))
+        return {};
+    return ReplyCheckText::tr("%1 lies outside the limits %2 .. %3")
+        .arg(value)
+        .arg(parameter.minimum)
+        .arg(parameter.maximum);
+}
 
 bool carriesInvokeId(Protocol protocol, Service service)
 {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "parameters/DriveDescription.h"
 #include "protocol/Codec.h"
 #include "protocol/Telegram.h"
 
@@ -21,5 +22,16 @@ Telegram completeAnswer(const Telegram &sent, const Telegram &answer);
 // DIN66019II: whether the request carries an invoke id (every service but the legacy DIN66019
 // telegrams and the status interrogation). HSP5 requests always do.
 bool carriesInvokeId(Protocol protocol, Service service);
+
+// Why an answer cannot be what the drive holds, whatever the line and its checksum: a text
+// (name, unit, plaintext) with control characters, limits whose minimum lies above their
+// maximum, a display scaling that cannot be computed (divisor 0), a group with more parameters
+// than numbers. Empty when nothing speaks against it. A scan reads an implausible answer again
+// and reports it as an error when it stays so: it never becomes a value or metadata.
+QString implausibleAnswer(const Telegram &answer);
+
+// Why `value`, read as a value or default of `parameter`, cannot be true: it lies outside the
+// parameter's own limits. Empty when it is within them.
+QString implausibleValue(const ParameterDescription &parameter, qint32 value);
 
 } // namespace DriveDesk

@@ -34,6 +34,10 @@ public:
     // Whether the protocol, as this connection is set up, can carry the request at all. A job
     // asks before it sends anything beyond what every drive knows (HSP5: seed 000's services).
     virtual bool supports(Service service, Access access) const = 0;
+    // Errors the connection has noted on the line since it was made: checksum and framing
+    // errors, timeouts, answers that did not match their request. A job compares two readings
+    // to learn whether the line showed errors in between. A sink that cannot tell says 0.
+    virtual quint64 lineErrors() const { return 0; }
 };
 
 } // namespace DriveDesk

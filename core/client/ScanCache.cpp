@@ -85,6 +85,8 @@ void DriveScanner::adoptCached(const DriveDescription &cached)
                 continue;
             ScanParameter &entry = scanned.parameters[parameter.number()];
             entry.description = parameter;
+            entry.limitsKnown = true;
+            entry.defaultKnown = true;
             if (!m_options.plaintexts)
                 entry.description.plaintexts.clear();
             readVariableMetadata(page, parameter);

@@ -1,5 +1,7 @@
 #include "ScanState.h"
 
+#include "ReplyCheck.h"
+
 #include <QCoreApplication>
 
 #include <algorithm>
@@ -16,6 +18,40 @@ int ScanGroup::namesToAsk() const
 ScanParameter &ScanState::parameter(quint8 page, quint8 number)
 {
     return groups.at(page).parameters.at(number);
+}
+
+void ScanState::rejectImplausibleValues()
+{
+    for (auto &[page, group] : groups) {
+        for (auto &[number, scanned] : group.parameters) {
+            if (!scanned.limitsKnown)
+                continue;
+            ParameterDescription &parameter = scanned.description;
+            if (scanned.defaultKnown) {
+                const QString why = implausibleValue(parameter, parameter.defaultValue);
+                if (!why.isEmpty()) {
+                    scanned.errors.append(
+                        QCoreApplication::translate("DriveDesk::DriveScanner", "default value: %1")
+                            .arg(why));
+                    ++scanned.metadataErrors;
+                    scanned.defaultKnown = false;
+                }
+            }
+            for (int set = 0; set < kParameterSets; ++set) {
+                const std::optional<qint32> value = parameter.values[std::size_t(set)];
+                if (!value)
+                    continue;
+                const QString why = implausibleValue(parameter, *value);
+                if (why.isEmpty())
+                    continue;
+                parameter.values[std::size_t(set)] = std::nullopt;
+                scanned.errors.append(
+                    QCoreApplication::translate("DriveDesk::DriveScanner", "value of set %1: %2")
+                        .arg(set)
+                        .arg(why));
+            }
+        }
+    }
 }
 
 namespace {
@@ -37,6 +73,39 @@ ParameterDescription describeParameter(const ScanParameter &scanned)
     return parameter;
 }
 
+QString hexAddress(quint16 address)
+{
+    return QStringLiteral("%1h").arg(address, 4, 16, QLatin1Char('0')).toUpper().replace(
+        QLatin1Char('H'), QLatin1Char('h'));
+}
+
+// A group whose numbers were walked for its count and that came up short: which addresses
+// could not be settled, so that nobody takes the parameters found for all there are.
+QString shortfall(const ScanGroup &group)
+{
+    const int found = int(group.parameters.size());
+    const int count = group.description.parameterCount;
+    if (!group.walked || group.namesPending > 0 || found >= count)
+        return {};
+    if (group.unsettled.isEmpty()) {
+        return QCoreApplication::translate("DriveDesk::DriveScanner",
+                                           "group %1: %2 of %3 parameters found")
+            .arg(group.description.id)
+            .arg(found)
+            .arg(count);
+    }
+    QStringList addresses;
+    for (quint8 number : group.unsettled)
+        addresses.append(hexAddress(quint16(group.description.address | number)));
+    return QCoreApplication::translate(
+               "DriveDesk::DriveScanner",
+               "group %1: %2 of %3 parameters found; no answer for %4 (%5)")
+        .arg(group.description.id)
+        .arg(found)
+        .arg(count)
+        .arg(addresses.join(QStringLiteral(", ")), group.unsettledReasons.constFirst());
+}
+
 QString summary(const QStringList &problems)
 {
     if (problems.size() == 1)
@@ -55,6 +124,7 @@ DriveDescription ScanState::describe(Language language, const QString &stopReaso
     drive.language = int(language);
     drive.identification = identification;
 
+    QStringList shortGroups;
     std::vector<const ScanGroup *> ordered;
     for (const auto &[page, group] : groups)
         ordered.push_back(&group);
@@ -62,6 +132,9 @@ DriveDescription ScanState::describe(Language language, const QString &stopReaso
         return a->description.index < b->description.index;
     });
     for (const ScanGroup *scanned : ordered) {
+        const QString missing = shortfall(*scanned);
+        if (!missing.isEmpty())
+            shortGroups.append(missing);
         GroupDescription group = scanned->description;
         for (const auto &[number, parameter] : scanned->parameters)
             group.parameters.append(describeParameter(parameter));
@@ -69,8 +142,12 @@ DriveDescription ScanState::describe(Language language, const QString &stopReaso
     }
 
     drive.incompleteReason = stopReason;
-    if (drive.incompleteReason.isEmpty() && !problems.isEmpty())
-        drive.incompleteReason = summary(problems);
+    // Every group that came up short names its addresses; other problems are summed up.
+    QStringList reasons = shortGroups;
+    if (!problems.isEmpty())
+        reasons.append(summary(problems));
+    if (drive.incompleteReason.isEmpty())
+        drive.incompleteReason = reasons.join(QStringLiteral("; "));
     return drive;
 }
 

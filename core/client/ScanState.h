@@ -32,6 +32,8 @@ struct ScanParameter {
     ParameterDescription description;
     QStringList errors;                      // one line per failed read
     int metadataErrors = 0;                  // of those, reads of metadata (not of values)
+    bool limitsKnown = false;                // the limits were read (or cached)
+    bool defaultKnown = false;
     std::vector<ScanDefinition> definitions; // by definition index
 };
 
@@ -40,6 +42,10 @@ struct ScanGroup {
     GroupDescription description;   // parameters stay empty until describe()
     int nextNumber = 0;             // the next parameter number whose name is to be asked
     int namesPending = 0;           // name reads queued or in flight
+    bool walked = false;            // its numbers were asked in order for the drive's count
+    // Numbers whose name read got no answer: whether a parameter lives there is unknown.
+    QList<quint8> unsettled;
+    QStringList unsettledReasons;
     std::map<quint8, ScanParameter> parameters; // by number
 
     // How many more names may still be asked: the drive's count not yet found or asked for,
@@ -56,6 +62,9 @@ struct ScanState {
     QStringList problems; // reads whose failure leaves it unknown whether something exists
 
     ScanParameter &parameter(quint8 page, quint8 number);
+    // A value or default outside its parameter's limits cannot be what the drive holds: it is
+    // dropped and named as an error of the parameter (ReplyCheck's implausibleValue()).
+    void rejectImplausibleValues();
     // Groups in the drive's display order, parameters by number, failed reads left out (their
     // reasons are in ParameterDescription::error).
     DriveDescription describe(Language language, const QString &stopReason) const;

@@ -100,6 +100,9 @@ void DriveScanner::readSetValues(quint8 page, quint8 number, quint8 setMask)
                     return;
                 }
                 parameter.errors.append(failure(label, reply));
+            },
+            [this, page, number](const Reply &reply) {
+                return implausibleRead(page, number, reply);
             });
 }
 

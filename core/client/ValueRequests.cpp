@@ -41,4 +41,9 @@ Telegram resetToDefault(quint16 address, quint8 setMask)
                              DefaultCheckData{address, setMask});
 }
 
+Telegram presence(Protocol protocol, quint16 address)
+{
+    return protocol == Protocol::Din66019 ? readStandard(protocol, address) : read(address, 1);
+}
+
 } // namespace DriveDesk::ValueRequests

@@ -16,6 +16,9 @@ Telegram write(quint16 address, qint32 value, quint8 setMask);  // service 0
 Telegram readStandard(Protocol protocol, quint16 address, quint8 set = 0);
 Telegram writeStandard(Protocol protocol, quint16 address, qint32 value, quint8 set = 0);
 Telegram resetToDefault(quint16 address, quint8 setMask);       // service 32 write
+// The cheap request any drive answers, even with a refusal: service 0 read of set 1
+// (DIN66019: its legacy read). The drive search and the baud rate search ask it.
+Telegram presence(Protocol protocol, quint16 address = 0x0000);
 
 } // namespace ValueRequests
 

@@ -77,8 +77,9 @@ bool ConnectionOptions::settings(const QCommandLineParser &parser, ConnectionSet
     int baudRate = result.baudRate;
     // A serial line finds its rate unless told one; elsewhere the rate is the simulated
     // drive's or the device server's business.
-    const bool automatic = !parser.isSet(m_baud)
-                           || parser.value(m_baud).compare(QLatin1String("auto"), Qt::CaseInsensitive) == 0;
+    const bool automatic
+        = !parser.isSet(m_baud)
+          || parser.value(m_baud).compare(QLatin1String("auto"), Qt::CaseInsensitive) == 0;
     if (!integer(parser, m_address, 0, ConnectionSettings::kMaxDriveAddress, &result.driveAddress,
                  error)
         || (!automatic

@@ -119,7 +119,7 @@ QString ConnectionSettings::displayName() const
     case Kind::Serial:
         return ConnectionSettingsText::tr("%1 on %2 (%3 %4)")
             .arg(what, device)
-            .arg(baudRate)
+            .arg(automaticBaudRate ? ConnectionSettingsText::tr("auto") : QString::number(baudRate))
             .arg(characterFormatName(effectiveDataBits(), effectiveParity(), effectiveStopBits()));
     case Kind::Tcp:
         return ConnectionSettingsText::tr("%1 via %2").arg(what, target().mid(4));

@@ -1,6 +1,7 @@
 #include "MetadataCache.h"
 
 #include "ParameterDocument.h"
+#include "SavedFile.h"
 
 #include <QCryptographicHash>
 #include <QDir>
@@ -8,7 +9,6 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QSaveFile>
 #include <QStandardPaths>
 
 namespace DriveDesk {
@@ -202,11 +202,10 @@ bool MetadataCache::store(const DriveKind &kind, const DriveDescription &drive, 
         {kLanguagesKey, languages},
     };
     const QByteArray json = QJsonDocument(root).toJson(QJsonDocument::Compact);
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(json) != json.size() || !file.commit()) {
+    QString reason;
+    if (!SavedFile::write(path, json, &reason)) {
         if (error)
-            *error = tr("cannot write the metadata cache file '%1': %2")
-                         .arg(path, file.errorString());
+            *error = tr("cannot write the metadata cache: %1").arg(reason);
         return false;
     }
     return true;

@@ -83,6 +83,7 @@ public:
     bool started() const { return !m_target.isEmpty(); }
     QString error() const { return m_process.errorString() + QString::fromUtf8(m_process.readAllStandardError()); }
     QString target() const { return m_target; }
+    qint64 processId() const { return m_process.processId(); }
 
 private:
     mutable QProcess m_process;

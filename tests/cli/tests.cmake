@@ -8,3 +8,7 @@ drivedesk_add_test(NAME tst_manpages LABELS integration SOURCES cli/tst_manpages
 add_dependencies(tst_manpages drivedesk drivedesk-cli drivedesk-sim)
 target_compile_definitions(tst_manpages PRIVATE DRIVEDESK_PACKAGING_DIR="${PROJECT_SOURCE_DIR}/packaging"
     DRIVEDESK_VERSION="${PROJECT_VERSION}")
+drivedesk_add_test(NAME tst_clisilence LABELS integration TIMEOUT 300 SOURCES cli/tst_clisilence.cpp LIBS Qt6::Core)
+add_dependencies(tst_clisilence drivedesk-cli drivedesk-sim)
+drivedesk_add_test(NAME tst_clibaud LABELS integration TIMEOUT 120 SOURCES cli/tst_clibaud.cpp LIBS Qt6::Core)
+add_dependencies(tst_clibaud drivedesk-cli drivedesk-sim)

@@ -12,4 +12,16 @@ foreach(name clientservices clientdin clientpipeline clientfaults clienttranspor
         LIBS drivedesk_client drivedesk_bus drivedesk_translations)
 endforeach()
 
+drivedesk_add_test(NAME tst_baudratesearch LABELS unit integration TIMEOUT 120
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_baudratesearch.cpp ${CMAKE_CURRENT_LIST_DIR}/ClientTestSupport.h
+    LIBS drivedesk_client drivedesk_bus drivedesk_translations)
+drivedesk_add_test(NAME tst_clientsilence LABELS unit integration TIMEOUT 300
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_clientsilence.cpp ${CMAKE_CURRENT_LIST_DIR}/ClientTestSupport.h
+    LIBS drivedesk_client drivedesk_bus drivedesk_session drivedesk_translations)
+
+# Many seeded scans on a line that flips bits unflagged: slower than the others.
+drivedesk_add_test(NAME tst_clientnoise LABELS integration TIMEOUT 600
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_clientnoise.cpp ${CMAKE_CURRENT_LIST_DIR}/ClientTestSupport.h
+    LIBS drivedesk_client drivedesk_bus drivedesk_translations)
+
 include(${CMAKE_CURRENT_LIST_DIR}/scanner.cmake)

@@ -1,6 +1,7 @@
 #include "client/DriveScanner.h"
 
 #include <QDir>
+#include <QSet>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -11,6 +12,7 @@
 #include <deque>
 #include <map>
 #include <optional>
+#include <set>
 
 using namespace DriveDesk;
 
@@ -67,6 +69,14 @@ public:
     bool framesService13 = true; // false: a link that cannot carry service 13 (HSP5, seed 000)
     int linkLostAfter = -1; // from this many answers on, every request ends with LinkLost
     bool synchronous = false;
+    // Name reads of these addresses get no answer at all, as from a drive that stays silent.
+    std::set<quint16> silentNames;
+    // The first answer to a name read of these addresses comes back with a letter changed
+    // that no checksum saw (bit 5: "Fixed" reads "fixed").
+    std::set<quint16> garbledNames;
+    // The first answer to a limits read of these addresses has its minimum above its maximum.
+    std::set<quint16> swappedLimits;
+    quint64 errorsNoted = 0; // what the client would have counted on the line
 
     QList<Telegram> received;
     int answered = 0;
@@ -110,6 +120,7 @@ public:
     }
 
     int held() const { return int(m_held.size()); }
+    quint64 lineErrors() const override { return errorsNoted; }
 
     int count(Service service, quint8 page) const
     {
@@ -144,10 +155,24 @@ private:
             reply.detail = QStringLiteral("cable pulled");
             return reply;
         }
+        const auto *name = request.as<NameData>();
+        const bool parameterName = name && request.service == Service::ParameterName;
+        if (parameterName && silentNames.count(name->address)) {
+            ++errorsNoted;
+            reply.status = Reply::Status::Timeout;
+            reply.attempts = 4;
+            return reply;
+        }
         reply.response = request.response();
         const Ack ack = answer(reply.response);
         reply.response.ack = ack;
         reply.status = ack == Ack::Ok ? Reply::Status::Ok : Reply::Status::Refused;
+        if (parameterName && garbledNames.erase(name->address) && reply.ok())
+            reply.response.as<NameData>()->text[0] ^= 0x20;
+        if (auto *limits = reply.response.as<ParameterLimits>();
+            limits && swappedLimits.erase(limits->address)) {
+            std::swap(limits->lower, limits->upper);
+        }
         return reply;
     }
 
@@ -248,6 +273,11 @@ private:
             // The response carries no address: leave it 0 as a codec would.
             *t.as<DisplayScalingData>() = p->scaling;
             t.as<DisplayScalingData>()->address = 0;
+            // A parameter given no scaling shows its raw number: divisor and multiplier 1.
+            if (p->scaling.divisor == 0) {
+                t.as<DisplayScalingData>()->divisor = 1;
+                t.as<DisplayScalingData>()->multiplier = 1;
+            }
             return Ack::Ok;
         case Service::PlaintextIndices: {
             auto *d = t.as<PlaintextIndicesData>();
@@ -361,8 +391,16 @@ void watch(DriveScanner &scanner, ScanResult &result)
                      });
 }
 
+// Options that ask for service 13, as a user does who says the drive has it.
+ScanOptions identified()
+{
+    ScanOptions options;
+    options.identificationText = true;
+    return options;
+}
+
 // Runs one scan to its end.
-ScanResult scan(FakeDrive &drive, const ScanOptions &options = {},
+ScanResult scan(FakeDrive &drive, const ScanOptions &options = identified(),
                 Language language = Language::English)
 {
     DriveScanner scanner(drive, options, language);
@@ -401,6 +439,11 @@ private slots:
     void readsSetsTogetherWhereTheyAgree_data();
     void readsSetsTogetherWhereTheyAgree();
     void asksService13OnlyWhereTheLinkFramesIt();
+    void asksService13OnlyWhenTheUserOptsIn();
+    void aNameReadThatTimesOutIsNeverAParameter();
+    void aParameterWhoseNameGotNoAnswerMakesTheGroupIncomplete();
+    void onALineWithErrorsAnswersAreConfirmed();
+    void anImplausibleAnswerIsReadAgain();
     void aDriveWithoutIdentityIsNeverCached();
     void variableMetadataIsReadAgainOnACachedKind();
 };
@@ -640,7 +683,7 @@ void TestDriveScanner::worksWithASinkThatAnswersAtOnce()
     FakeDrive atOnce;
     makeDrive(atOnce);
     atOnce.synchronous = true;
-    DriveScanner scanner(atOnce, {}, Language::English);
+    DriveScanner scanner(atOnce, identified(), Language::English);
     ScanResult result;
     watch(scanner, result);
     scanner.start(); // everything happens inside start()
@@ -698,7 +741,7 @@ void TestDriveScanner::linkLostEndsTheScan()
     FakeDrive drive;
     makeDrive(drive);
     drive.linkLostAfter = 275;
-    DriveScanner scanner(drive, {}, Language::English);
+    DriveScanner scanner(drive, identified(), Language::English);
     ScanResult result;
     watch(scanner, result);
     scanner.start();
@@ -785,6 +828,99 @@ void TestDriveScanner::asksService13OnlyWhereTheLinkFramesIt()
     QVERIFY(std::none_of(drive.received.cbegin(), drive.received.cend(),
                          [](const Telegram &t) { return t.service == Service::Fieldbus; }));
     QCOMPARE(result.description->parameterCount(), 7);
+}
+
+void TestDriveScanner::asksService13OnlyWhenTheUserOptsIn()
+{
+    // DIN66019II frames it, but seed 003 marks it reserved.
+    FakeDrive drive;
+    makeDrive(drive);
+    const ScanResult result = scan(drive, ScanOptions{});
+    QCOMPARE(result.finishedCount, 1);
+    QVERIFY(result.description->incompleteReason.isEmpty());
+    QCOMPARE(result.description->identification, QString());
+    QVERIFY(std::none_of(drive.received.cbegin(), drive.received.cend(),
+                         [](const Telegram &t) { return t.service == Service::Fieldbus; }));
+    QCOMPARE(result.description->parameterCount(), 7);
+}
+
+void TestDriveScanner::aNameReadThatTimesOutIsNeverAParameter()
+{
+    FakeDrive clean;
+    makeDrive(clean);
+    const ScanResult expected = scan(clean);
+
+    // ru.02 does not exist; the drive would refuse it, but this time nothing came back. Taken
+    // for a parameter, it would use up ru's count of 3 and ru.03 would never be asked.
+    FakeDrive drive;
+    makeDrive(drive);
+    drive.silentNames = {0x0202};
+    const ScanResult result = scan(drive);
+    QCOMPARE(result.finishedCount, 1);
+    const DriveDescription &d = *result.description;
+    QVERIFY2(d.incompleteReason.isEmpty(), qPrintable(d.incompleteReason));
+    QVERIFY(!d.find(0x0202));
+    QVERIFY(d.find(0x0203));
+    QCOMPARE(d.groups, expected.description->groups);
+}
+
+void TestDriveScanner::aParameterWhoseNameGotNoAnswerMakesTheGroupIncomplete()
+{
+    FakeDrive drive;
+    makeDrive(drive);
+    drive.silentNames = {0x0203};
+    const ScanResult result = scan(drive);
+    QCOMPARE(result.finishedCount, 1);
+    const DriveDescription &d = *result.description;
+    QVERIFY(!d.find(0x0203));
+    QVERIFY2(d.incompleteReason.contains(QStringLiteral("2 of 3"))
+                 && d.incompleteReason.contains(QStringLiteral("0203h")),
+             qPrintable(d.incompleteReason));
+}
+
+void TestDriveScanner::onALineWithErrorsAnswersAreConfirmed()
+{
+    FakeDrive clean;
+    makeDrive(clean);
+    const ScanResult expected = scan(clean);
+
+    // ru.00's name comes back garbled, unseen, while the line seems clean; then ru.02's read
+    // gets no answer (an error on the line); then op.01's name comes back garbled too.
+    FakeDrive drive;
+    makeDrive(drive);
+    drive.garbledNames = {0x0200, 0x0301};
+    drive.silentNames = {0x0202};
+    const ScanResult result = scan(drive);
+    QCOMPARE(result.finishedCount, 1);
+    const DriveDescription &d = *result.description;
+    // What was kept before the error is read again: the disagreement is named, not kept.
+    QVERIFY2(d.incompleteReason.contains(QStringLiteral("not confirmed"))
+                 && d.incompleteReason.contains(QStringLiteral("ru.00")),
+             qPrintable(d.incompleteReason));
+    // After it, a second read agreeing with a third settles the name.
+    QCOMPARE(d.find(0x0301)->name, QStringLiteral("Set value"));
+    // Every answer after the first error was read twice.
+    QVERIFY(drive.received.size() > clean.received.size() * 3 / 2);
+    // On the clean line nothing was read twice.
+    QSet<QString> asked;
+    for (const Telegram &t : std::as_const(clean.received))
+        asked.insert(describe(t));
+    QCOMPARE(asked.size(), clean.received.size());
+}
+
+void TestDriveScanner::anImplausibleAnswerIsReadAgain()
+{
+    FakeDrive clean;
+    makeDrive(clean);
+    const ScanResult expected = scan(clean);
+
+    FakeDrive drive;
+    makeDrive(drive);
+    drive.swappedLimits = {0x0500};
+    const ScanResult result = scan(drive);
+    QCOMPARE(result.finishedCount, 1);
+    QCOMPARE(*result.description, *expected.description);
+    QCOMPARE(drive.received.size(), clean.received.size() + 1);
 }
 
 void TestDriveScanner::aDriveWithoutIdentityIsNeverCached()

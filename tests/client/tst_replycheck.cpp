@@ -154,6 +154,31 @@ private slots:
         const Telegram complete = completeAnswer(request, answer);
         QCOMPARE(*complete.as<NameData>(), (NameData{0x2000, 1, QByteArrayLiteral("Status")}));
     }
+
+    void whatCannotBeTrueIsNamed()
+    {
+        const auto answer = [](ServiceData data) {
+            return Telegram::request(Service::Unspecified, Access::Read, std::move(data))
+                .response();
+        };
+        QCOMPARE(implausibleAnswer(answer(NameData{0x0314, 0, "Fixed speed 1"})), QString());
+        QVERIFY(implausibleAnswer(answer(NameData{0x0314, 0, "Fixed\x05speed 1"}))
+                    .contains(QStringLiteral("05h")));
+        // What follows the terminating NUL is padding, not text.
+        QCOMPARE(implausibleAnswer(answer(NameData{0x0314, 0, QByteArray("Hz\0\x01", 4)})),
+                 QString());
+        QCOMPARE(implausibleAnswer(answer(ParameterLimits{0x030B, 0, 4000})), QString());
+        QVERIFY(!implausibleAnswer(answer(ParameterLimits{0x030B, 4000, 0})).isEmpty());
+        QCOMPARE(implausibleAnswer(answer(DisplayScalingData{0x030B, 1, 1, 0, 0})), QString());
+        QVERIFY(implausibleAnswer(answer(DisplayScalingData{0x030B, 0, 1, 0, 0}))
+                    .contains(QStringLiteral("divisor 0")));
+
+        ParameterDescription onOff;
+        onOff.minimum = 0;
+        onOff.maximum = 1;
+        QCOMPARE(implausibleValue(onOff, 1), QString());
+        QVERIFY(implausibleValue(onOff, 500).contains(QStringLiteral("500")));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestReplyCheck)

@@ -210,22 +210,14 @@ private:
 private slots:
     void eachMnemonicIsUsedOnceInEnglish()
     {
-        verify(allClashes(Language::English),
-               { QStringLiteral("Alt+H: 'C&hoose Shown', 'C&hosen only'") }); // CompareWindow
+        verify(allClashes(Language::English), {});
     }
 
     // Last: the German catalogue stays installed for the rest of the program.
     void eachMnemonicIsUsedOnceInGerman()
     {
         QVERIFY(installTranslations(QStringLiteral("de")));
-        // In the catalogue (translations/drivedesk_de.ts).
-        verify(allClashes(Language::German),
-               { QStringLiteral("Alt+U: 'Speichern &unter"),
-                 QStringLiteral("Alt+S: '&Scope', '&Sprache"),
-                 QStringLiteral("Alt+G: 'Schreib&geschützt"),
-                 QStringLiteral("Alt+V: '&Vergleichen', '&Verschieden"),
-                 // "Down&load File to Drive..." not translated yet
-                 QStringLiteral("Alt+L: 'Down&load File to Drive...'") });
+        verify(allClashes(Language::German), {});
     }
 };
 

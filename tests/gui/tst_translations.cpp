@@ -257,7 +257,7 @@ private slots:
                  qPrintable(error));
         QVERIFY(!ParameterDocument::fromJson(R"({"format": "drivedesk-parameters", "version": 1})",
                                              &error));
-        QCOMPARE(error, QStringLiteral("drive: fehlt"));
+        QCOMPARE(error, QStringLiteral("drive: fehlt (Zeile 1, Spalte 1)"));
     }
 
     // The drive's refusals, the client's errors and the names of levels and properties: German
@@ -313,8 +313,10 @@ private slots:
         QCOMPARE(english("ParameterTable", "%n group(s)", 1), QStringLiteral("%n group"));
         QCOMPARE(german("DriveDesk::ClientWorker", "%n timeout(s)", 2),
                  QStringLiteral("%n Zeitüberschreitungen"));
-        QCOMPARE(english("DriveDesk::CliRunner", "set(s) %1", 1), QStringLiteral("set %1"));
-        QCOMPARE(english("DriveDesk::CliRunner", "set(s) %1", 3), QStringLiteral("sets %1"));
+        QCOMPARE(english("UploadResult", "no value read for set(s) %1", 1),
+                 QStringLiteral("no value read for set %1"));
+        QCOMPARE(english("UploadResult", "no value read for set(s) %1", 3),
+                 QStringLiteral("no value read for sets %1"));
     }
 
     void cataloguesAreComplete_data()

@@ -1,6 +1,8 @@
 # Links: connection settings, serial (socat pseudo-terminal pairs) and TCP.
 drivedesk_add_test(NAME tst_connectionsettings LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_connectionsettings.cpp LIBS drivedesk_link)
+drivedesk_add_test(NAME tst_connectionoptions LABELS unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_connectionoptions.cpp LIBS drivedesk_link)
 drivedesk_add_test(NAME tst_seriallink LABELS unit integration
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_seriallink.cpp LIBS drivedesk_link)
 drivedesk_add_test(NAME tst_tcplink LABELS unit integration

@@ -250,7 +250,7 @@ QWidget *CompareWindow::makeFilterRow()
             &ComparisonFilterModel::setFilterText);
     auto *searchLabel = new QLabel(tr("Sea&rch:"), row);
     searchLabel->setBuddy(m_searchEdit);
-    m_chosenOnlyBox = new QCheckBox(tr("C&hosen only"), row);
+    m_chosenOnlyBox = new QCheckBox(tr("Chosen onl&y"), row);
     m_chosenOnlyBox->setObjectName(QStringLiteral("chosenOnly"));
     m_chosenOnlyBox->setToolTip(tr("Show only the rows ticked to be written: a last look"));
     connect(m_chosenOnlyBox, &QCheckBox::toggled, m_filter, &ComparisonFilterModel::setChosenOnly);

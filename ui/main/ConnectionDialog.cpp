@@ -143,9 +143,13 @@ QWidget *ConnectionDialog::createSerialPage()
     m_baudRate = new QComboBox;
     m_baudRate->setObjectName(QStringLiteral("baudRate"));
     m_baudRate->setEditable(true);
+    // The client tries the usual rates and takes the one the drive answers at.
+    m_baudRate->addItem(automaticBaudRateText());
     for (int rate : kBaudRates)
         m_baudRate->addItem(QString::number(rate));
-    m_baudRate->setCurrentText(QStringLiteral("38400"));
+    m_baudRate->setCurrentIndex(0);
+    m_baudRate->setToolTip(tr("Automatic tries 38400, 19200, 9600, 57600 and 115200 Bd and "
+                              "takes the rate the drive answers at"));
 
     auto *form = new QFormLayout(page);
     form->addRow(portLabel, portRow);
@@ -237,12 +241,24 @@ void ConnectionDialog::setSettings(const ConnectionSettings &settings)
         m_tabs->setCurrentIndex(SimulatedTab);
         break;
     }
-    m_baudRate->setCurrentText(QString::number(settings.baudRate));
+    m_baudRate->setCurrentText(settings.automaticBaudRate ? automaticBaudRateText()
+                                                          : QString::number(settings.baudRate));
     m_protocol->setCurrentIndex(m_protocol->findData(int(settings.protocol)));
     m_address->setValue(settings.driveAddress);
     m_extensions->setChecked(settings.hsp5Extensions);
     m_problem->hide();
     updateEnabled();
+}
+
+QString ConnectionDialog::automaticBaudRateText()
+{
+    return tr("Automatic");
+}
+
+bool ConnectionDialog::isAutomaticBaudRate() const
+{
+    return m_baudRate->currentText().trimmed().compare(automaticBaudRateText(), Qt::CaseInsensitive)
+           == 0;
 }
 
 ConnectionSettings ConnectionDialog::settings() const
@@ -271,6 +287,8 @@ ConnectionSettings ConnectionDialog::settings() const
     settings.baudRate = m_baudRate->currentText().trimmed().toInt();
     if (settings.baudRate <= 0)
         settings.baudRate = 38400;
+    settings.automaticBaudRate = settings.kind == ConnectionSettings::Kind::Serial
+                                 && isAutomaticBaudRate();
     settings.simulation.driveAddresses = { settings.driveAddress };
     settings.simulation.baudRate = settings.baudRate;
     // The simulated drive is told the same, so that it frames what the client sends.
@@ -292,8 +310,9 @@ bool ConnectionDialog::validate(QString *problem)
                      "or type the device (e.g. /dev/ttyUSB0 or COM3).")
                 : tr("Choose the serial port the drive is connected to.");
             field = m_serialPort;
-        } else if (!ok || baud < 50 || baud > 4000000) {
-            text = tr("\"%1\" is not a baud rate: enter a number such as 38400.")
+        } else if (!isAutomaticBaudRate() && (!ok || baud < 50 || baud > 4000000)) {
+            text = tr("\"%1\" is not a baud rate: enter a number such as 38400, or choose "
+                      "Automatic.")
                        .arg(m_baudRate->currentText());
             field = m_baudRate;
         }

@@ -43,6 +43,10 @@ signals:
     void searchStarted(DriveDesk::DriveClient *client);
 
 private:
+    // The baud rate choice that has the client find the rate (ConnectionSettings::
+    // automaticBaudRate), first in the list and the default.
+    static QString automaticBaudRateText();
+    bool isAutomaticBaudRate() const;
     QWidget *createSerialPage();
     QWidget *createTcpPage();
     QWidget *createSimulatedPage();

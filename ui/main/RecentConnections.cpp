@@ -18,6 +18,7 @@ void write(QSettings &store, const ConnectionSettings &settings)
     store.setValue(QStringLiteral("protocol"), protocolName(settings.protocol));
     store.setValue(QStringLiteral("address"), settings.driveAddress);
     store.setValue(QStringLiteral("baud"), settings.baudRate);
+    store.setValue(QStringLiteral("automaticBaud"), settings.automaticBaudRate);
     store.setValue(QStringLiteral("hsp5Extensions"), settings.hsp5Extensions);
 }
 
@@ -38,6 +39,9 @@ std::optional<ConnectionSettings> read(const QSettings &store)
     const int baud = store.value(QStringLiteral("baud")).toInt(&ok);
     if (ok && baud > 0)
         settings.baudRate = baud;
+    // A rate found by the search is searched for again: the drive may have been set to another.
+    settings.automaticBaudRate = settings.kind == ConnectionSettings::Kind::Serial
+                                 && store.value(QStringLiteral("automaticBaud")).toBool();
     settings.simulation.driveAddresses = { settings.driveAddress };
     settings.simulation.baudRate = settings.baudRate;
     settings.hsp5Extensions = settings.protocol == Protocol::Hsp5
@@ -92,7 +96,9 @@ ConnectionSettings RecentConnections::last()
 bool RecentConnections::sameConnection(const ConnectionSettings &a, const ConnectionSettings &b)
 {
     return a.target() == b.target() && a.protocol == b.protocol && a.driveAddress == b.driveAddress
-        && (a.kind != ConnectionSettings::Kind::Serial || a.baudRate == b.baudRate);
+        && (a.kind != ConnectionSettings::Kind::Serial
+            || (a.automaticBaudRate == b.automaticBaudRate
+                && (a.automaticBaudRate || a.baudRate == b.baudRate)));
 }
 
 QString RecentConnections::describe(const ConnectionSettings &settings)

@@ -20,7 +20,8 @@ QString StartupOptions::usage()
         "  --open FILE          show and edit a parameter file with no drive\n"
         "  --protocol NAME      hsp5 (default), din66019ii or din66019\n"
         "  --address N          drive address on a DIN66019(II) bus, 0..239 (default 1)\n"
-        "  --baud N             baud rate (default 38400)\n"
+        "  --baud N|auto        baud rate; auto (the default on a serial line) finds the rate\n"
+        "                       the drive answers at\n"
         "  --language en|de     language of the window and of the drive's texts\n");
 }
 
