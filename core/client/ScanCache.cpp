@@ -24,7 +24,8 @@ bool DriveScanner::probeCache()
         for (quint16 address : std::as_const(m_probes[i].addresses)) {
             // The kind parameters hold one value, not one per set: read as the cold scan does.
             enqueue(Service::ParameterValueStandard, ParameterValue{address, 0, 0},
-                    tr("identification %1h").arg(address, 4, 16, QLatin1Char('0')).toUpper(),
+                    tr("identification %1h")
+                        .arg(QString::number(address, 16).toUpper().rightJustified(4, QLatin1Char('0'))),
                     [this, i, address](const Reply &reply) {
                         Probe &probe = m_probes[i];
                         if (const auto *read = reply.data<ParameterValue>())

@@ -5,6 +5,8 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QFutureWatcher>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -107,6 +109,38 @@ private slots:
                  qPrintable(QStringLiteral("%1 requests, cold %2")
                                 .arg(warm.services.size())
                                 .arg(cold.services.size())));
+    }
+
+    // The progress of a scan of a cached kind names the identification it reads as every other
+    // text does: in words, the address with a lower-case h.
+    void theIdentificationReadIsNamedInWords()
+    {
+        QTemporaryDir cache;
+        const ConnectionSettings settings = simulated(Protocol::Hsp5, fast());
+        QVERIFY(scan(settings, MetadataSource::Cache, cache.path()).drive.incompleteReason.isEmpty());
+
+        Session s(settings);
+        QVERIFY(s.connected());
+        ScanOptions options;
+        options.metadata = MetadataSource::Cache;
+        options.cacheDirectory = cache.path();
+        QFuture<DriveDescription> future = s.client->scan(options);
+        QStringList texts;
+        QFutureWatcher<DriveDescription> watcher;
+        connect(&watcher, &QFutureWatcherBase::progressTextChanged, this,
+                [&texts](const QString &text) { texts << text; });
+        watcher.setFuture(future);
+        QVERIFY(waitFinished(future, 120000));
+        QTRY_VERIFY(watcher.isFinished());
+        const QStringList identification = texts.filter(QStringLiteral("dentification"),
+                                                        Qt::CaseInsensitive);
+        QVERIFY2(!identification.isEmpty(), qPrintable(texts.join(QLatin1Char('\n'))));
+        for (const QString &text : identification) {
+            QVERIFY2(QRegularExpression(QStringLiteral("^identification [0-9A-F]{4}h$"))
+                         .match(text)
+                         .hasMatch(),
+                     qPrintable(text));
+        }
     }
 
     void anotherKindIsReadColdAndCachedBeside()
