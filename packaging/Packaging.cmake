@@ -41,7 +41,7 @@ foreach(program drivedesk drivedesk-cli drivedesk-sim)
             DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions)
 endforeach()
 install(FILES ${drivedesk_packaging_dir}/changelog.gz ${CMAKE_CURRENT_LIST_DIR}/copyright
-              ${PROJECT_SOURCE_DIR}/docs/parameter-file.md
+              ${PROJECT_SOURCE_DIR}/docs/parameter-file.md ${PROJECT_SOURCE_DIR}/docs/plant.md
               ${PROJECT_SOURCE_DIR}/docs/simulated-drive.md
         DESTINATION ${drivedesk_doc_dir})
 

@@ -576,80 +576,84 @@
     <name>DriveDesk::CliPlant</name>
     <message>
         <source>cannot make the directory %1</source>
-        <translation type="unfinished"></translation>
+        <translation>das Verzeichnis %1 kann nicht angelegt werden</translation>
     </message>
     <message>
         <source>the directory %1 does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>das Verzeichnis %1 gibt es nicht</translation>
     </message>
     <message>
         <source>stopping every link after the value on its way...</source>
-        <translation type="unfinished"></translation>
+        <translation>halte jede Verbindung nach dem Wert an, der unterwegs ist …</translation>
     </message>
     <message>
         <source>reading</source>
-        <translation type="unfinished"></translation>
+        <translation>lese</translation>
     </message>
     <message>
         <source>%1: the addresses found written</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: die gefundenen Adressen geschrieben</translation>
     </message>
     <message>
         <source>no link answered</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Verbindung hat geantwortet</translation>
     </message>
     <message>
         <source>gave no identification</source>
-        <translation type="unfinished">keine Kennung erhalten</translation>
-    </message>
-    <message>
-        <source>%1: no drive answered</source>
-        <translation type="unfinished"></translation>
+        <translation>ohne Kennung</translation>
     </message>
     <message numerus="yes">
         <source>%1: saved %2, %n parameter(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1: %2 gesichert, %n Parameter</numerusform>
+            <numerusform>%1: %2 gesichert, %n Parameter</numerusform>
         </translation>
     </message>
     <message>
         <source>%1: not saved: %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: nicht gesichert: %2: %3</translation>
     </message>
     <message numerus="yes">
         <source>%1: %n difference(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1: %n Unterschied</numerusform>
+            <numerusform>%1: %n Unterschiede</numerusform>
         </translation>
     </message>
     <message>
         <source>set %1</source>
-        <translation type="unfinished">Satz %1</translation>
+        <translation>Satz %1</translation>
     </message>
     <message>
         <source>file %1  drive %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Datei %1  Umrichter %2</translation>
     </message>
     <message>
         <source>only in the file</source>
-        <translation type="unfinished"></translation>
+        <translation>nur in der Datei</translation>
     </message>
     <message>
         <source>only on the drive</source>
-        <translation type="unfinished"></translation>
+        <translation>nur im Umrichter</translation>
     </message>
     <message numerus="yes">
         <source>%1 of %n drive(s) %2</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1 von %n Umrichter %2</numerusform>
+            <numerusform>%1 von %n Umrichtern %2</numerusform>
         </translation>
     </message>
     <message>
         <source>not: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>nicht: %1</translation>
+    </message>
+    <message>
+        <source>checked, nothing written</source>
+        <translation>geprüft, nichts geschrieben</translation>
+    </message>
+    <message>
+        <source>downloaded or already equal</source>
+        <translation>geladen oder schon gleich</translation>
     </message>
 </context>
 <context>
@@ -3114,35 +3118,55 @@
     <name>DriveDesk::PlantRun</name>
     <message>
         <source>cannot connect: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Verbindung möglich: %1</translation>
     </message>
     <message>
         <source>connecting</source>
-        <translation type="unfinished"></translation>
+        <translation>verbinde</translation>
     </message>
     <message>
         <source>searching</source>
-        <translation type="unfinished"></translation>
+        <translation>suche</translation>
     </message>
     <message>
         <source>the search stopped: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>die Suche wurde beendet: %1</translation>
     </message>
     <message>
         <source>stopped before it was read</source>
-        <translation type="unfinished"></translation>
+        <translation>angehalten, bevor er gelesen wurde</translation>
     </message>
     <message>
         <source>%1 does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 gibt es nicht</translation>
     </message>
     <message>
         <source>stopped before the drive was read whole; nothing saved</source>
-        <translation type="unfinished"></translation>
+        <translation>angehalten, bevor der Umrichter ganz gelesen war; nichts gesichert</translation>
     </message>
     <message>
         <source>the file is of %1, the drive %2</source>
-        <translation type="unfinished"></translation>
+        <translation>die Datei ist von %1, der Umrichter %2</translation>
+    </message>
+    <message>
+        <source>no drive answered</source>
+        <translation>kein Umrichter hat geantwortet</translation>
+    </message>
+    <message>
+        <source>the search was stopped after %1 of %2 addresses</source>
+        <translation>die Suche wurde nach %1 von %2 Adressen angehalten</translation>
+    </message>
+    <message>
+        <source>DIN66019 carries parameter values only: the drive has no parameter list to read or write; use din66019ii</source>
+        <translation>DIN66019 überträgt nur Parameterwerte: es gibt keine Parameterliste zu lesen oder zu schreiben; din66019ii verwenden</translation>
+    </message>
+    <message>
+        <source>refused, nothing written: %1</source>
+        <translation>abgelehnt, nichts geschrieben: %1</translation>
+    </message>
+    <message>
+        <source>not everything was written; the report says what the drive holds</source>
+        <translation>nicht alles wurde geschrieben; der Bericht sagt, was der Umrichter enthält</translation>
     </message>
 </context>
 <context>
@@ -4875,39 +4899,51 @@ Verbindungsdialog.
     <name>PlantDrive</name>
     <message>
         <source>found</source>
-        <translation type="unfinished"></translation>
+        <translation>gefunden</translation>
     </message>
     <message>
         <source>saved</source>
-        <translation type="unfinished"></translation>
+        <translation>gesichert</translation>
     </message>
     <message>
         <source>equal</source>
-        <translation type="unfinished">gleich</translation>
+        <translation>gleich</translation>
     </message>
     <message>
         <source>different</source>
-        <translation type="unfinished">verschieden</translation>
+        <translation>verschieden</translation>
     </message>
     <message>
         <source>another kind of drive</source>
-        <translation type="unfinished"></translation>
+        <translation>ein anderer Umrichtertyp</translation>
     </message>
     <message>
         <source>no file</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Datei</translation>
     </message>
     <message>
         <source>failed</source>
-        <translation type="unfinished"></translation>
+        <translation>fehlgeschlagen</translation>
     </message>
     <message>
         <source>unreachable</source>
-        <translation type="unfinished"></translation>
+        <translation>nicht erreichbar</translation>
     </message>
     <message>
         <source>stopped</source>
-        <translation type="unfinished"></translation>
+        <translation>angehalten</translation>
+    </message>
+    <message>
+        <source>written</source>
+        <translation>geschrieben</translation>
+    </message>
+    <message>
+        <source>already equal, nothing written</source>
+        <translation>schon gleich, nichts geschrieben</translation>
+    </message>
+    <message>
+        <source>dry run</source>
+        <translation>Probelauf</translation>
     </message>
 </context>
 <context>

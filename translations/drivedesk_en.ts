@@ -602,10 +602,6 @@
         <source>gave no identification</source>
         <translation>gave no identification</translation>
     </message>
-    <message>
-        <source>%1: no drive answered</source>
-        <translation>%1: no drive answered</translation>
-    </message>
     <message numerus="yes">
         <source>%1: saved %2, %n parameter(s)</source>
         <translation>
@@ -650,6 +646,14 @@
     <message>
         <source>not: %1</source>
         <translation>not: %1</translation>
+    </message>
+    <message>
+        <source>checked, nothing written</source>
+        <translation>checked, nothing written</translation>
+    </message>
+    <message>
+        <source>downloaded or already equal</source>
+        <translation>downloaded or already equal</translation>
     </message>
 </context>
 <context>
@@ -3144,6 +3148,26 @@
         <source>the file is of %1, the drive %2</source>
         <translation>the file is of %1, the drive %2</translation>
     </message>
+    <message>
+        <source>no drive answered</source>
+        <translation>no drive answered</translation>
+    </message>
+    <message>
+        <source>the search was stopped after %1 of %2 addresses</source>
+        <translation>the search was stopped after %1 of %2 addresses</translation>
+    </message>
+    <message>
+        <source>DIN66019 carries parameter values only: the drive has no parameter list to read or write; use din66019ii</source>
+        <translation>DIN66019 carries parameter values only: the drive has no parameter list to read or write; use din66019ii</translation>
+    </message>
+    <message>
+        <source>refused, nothing written: %1</source>
+        <translation>refused, nothing written: %1</translation>
+    </message>
+    <message>
+        <source>not everything was written; the report says what the drive holds</source>
+        <translation>not everything was written; the report says what the drive holds</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::PollingController</name>
@@ -4908,6 +4932,18 @@ dialog.
     <message>
         <source>stopped</source>
         <translation>stopped</translation>
+    </message>
+    <message>
+        <source>written</source>
+        <translation>written</translation>
+    </message>
+    <message>
+        <source>already equal, nothing written</source>
+        <translation>already equal, nothing written</translation>
+    </message>
+    <message>
+        <source>dry run</source>
+        <translation>dry run</translation>
     </message>
 </context>
 <context>

@@ -1,6 +1,7 @@
 #include "CliRunner.h"
 
 #include "bus/LinkFactory.h"
+#include "cli/CliPlant.h"
 #include "cli/ParameterTable.h"
 #include "parameters/DriveIdentity.h"
 #include "parameters/MetadataCache.h"
@@ -36,6 +37,11 @@ CliRunner::~CliRunner()
 
 void CliRunner::start()
 {
+    if (m_request.plant) {
+        m_plant = new CliPlant(m_request, this);
+        connect(m_plant, &CliPlant::finished, this, &CliRunner::finished);
+        return m_plant->start();
+    }
     if (!loadFiles())
         return;
     if (m_request.command == CliRequest::Command::Diff

@@ -11,6 +11,7 @@
 
 namespace DriveDesk {
 
+class CliPlant;
 class DownloadRun;
 class ScopeRecorder;
 struct ScopePollEnd;
@@ -90,6 +91,7 @@ private:
     QString m_silence; // why the drive counts as stopped answering (DriveClient), else empty
     QList<DriveDescription> m_files; // loadFiles(): the files of diff, upload, download
     DownloadRun *m_download = nullptr;
+    CliPlant *m_plant = nullptr; // `plant`: every drive of a plant file
     std::unique_ptr<ScopeRecording> m_recording;
     ScopeRecorder *m_recorder = nullptr;
 };

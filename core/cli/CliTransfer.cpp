@@ -1,6 +1,7 @@
 // drivedesk-cli upload and download: a drive's parameter list to a file and back.
 #include "CliRunner.h"
 
+#include "cli/CliPlant.h"
 #include "parameters/ParameterList.h"
 #include "session/DownloadRun.h"
 #include "session/ScopeRecorder.h"
@@ -12,6 +13,8 @@ namespace DriveDesk {
 
 bool CliRunner::interrupt()
 {
+    if (m_plant)
+        return m_plant->interrupt();
     if (m_recorder && m_recorder->isRecording() && !m_finished) {
         m_recorder->stop();
         return true;

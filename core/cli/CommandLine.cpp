@@ -1,5 +1,6 @@
 #include "CommandLine.h"
 
+#include "cli/CliPlant.h"
 #include "link/ConnectionOptions.h"
 
 #include <QCommandLineParser>
@@ -71,6 +72,20 @@ QString usage()
         "                               what was recorded\n"
         "  scope --offline --csv FILE   the drive's offline records (service 21,\n"
         "                               DIN66019II) as CSV, one a millisecond assumed\n"
+        "\n"
+        "A machine of many drives (no --connect: the links come from the plant file,\n"
+        "docs/plant.md; every link at once, the drives of one bus one after another):\n"
+        "  plant find PLANT [--update]  every drive on every link, with its address and\n"
+        "                               identification; --update writes the addresses\n"
+        "                               found into the plant file\n"
+        "  plant backup PLANT DIR       one parameter file a drive, DIR/LINK-ADDRESS.json\n"
+        "                               (DIR/LINK.json on HSP5), saved only when complete\n"
+        "  plant verify PLANT DIR [--format json|table]\n"
+        "                               each drive against its file, settings only; exit 0\n"
+        "                               all equal, 1 a difference or a drive not checked\n"
+        "  plant download PLANT DIR [--dry-run] [--force]\n"
+        "                               the download for every drive; nothing is written\n"
+        "                               to a drive whose settings equal its file\n"
         "\n"
         "Exit status:\n"
         "  0  done\n"
@@ -211,8 +226,9 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     const QCommandLineOption csv(QStringLiteral("csv"), {}, QStringLiteral("file"));
     const QCommandLineOption offline(QStringLiteral("offline"));
     const QCommandLineOption version(QStringLiteral("version"));
+    const QCommandLineOption update(QStringLiteral("update")); // plant find
     parser.addOptions({help, timeout, quiet, format, values, set, sets, raw, noCache, password,
-                       dryRun, force, channels, duration, rate, csv, offline, version});
+                       dryRun, force, channels, duration, rate, csv, offline, version, update});
     *helpText = usage();
 
     // A negative value ("write uF.07 -5") is not an option: shield such words from the parser.
@@ -240,6 +256,13 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
         return std::nullopt;
     }
     helpText->clear();
+    // A plant's links come from its file, not from --connect (core/cli/CliPlant.cpp).
+    if (parser.positionalArguments().value(0).compare(QLatin1String("plant"), Qt::CaseInsensitive) == 0)
+        return parsePlantCommand(parser, connection, parser.positionalArguments(), error);
+    if (parser.isSet(update)) {
+        *error = QStringLiteral("--update belongs to plant find");
+        return std::nullopt;
+    }
 
     CliRequest request;
     // Two files are compared without a drive: the connection is needed only when given, or

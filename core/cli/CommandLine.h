@@ -10,6 +10,17 @@
 
 namespace DriveDesk {
 
+// `drivedesk-cli plant`: every drive of a plant file (docs/plant.md), its links from the file.
+struct PlantRequest {
+    enum class Action : quint8 { Find, Backup, Verify, Download };
+    Action action = Action::Find;
+    QString plantFile;
+    QString directory; // backup, verify: where the drives' parameter files are
+    bool update = false; // find: write the addresses found into the plant file
+    bool dryRun = false; // download: show what would be written
+    bool force = false;  // download: write although the checks found problems
+};
+
 // What `drivedesk-cli` was asked to do, parsed and checked before anything is sent.
 struct CliRequest {
     enum class Command : quint8 { Info, Scan, Read, Write, Diff, Upload, Download, Scope };
@@ -40,6 +51,7 @@ struct CliRequest {
     double rateHz = 0;
     bool offline = false; // the drive's offline records (service 21) instead of a recording
     QString csvFile;
+    std::optional<PlantRequest> plant; // set for `plant`: the other command fields are unused
 };
 
 // The usage text and the parse. Returns nothing and sets *error (naming the bad argument)

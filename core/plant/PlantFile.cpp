@@ -9,11 +9,22 @@
 #include <QJsonDocument>
 #include <QJsonParseError>
 
+#include <algorithm>
 #include <limits>
 
 // toJson() writes the plant file, fromJson() reads and checks it.
 
 namespace DriveDesk {
+
+bool PlantLink::operator==(const PlantLink &other) const
+{
+    // Qt 6.4 compares two empty QList<int> with memcmp on null pointers; std::equal never reads
+    // an empty range.
+    return name == other.name && connect == other.connect && protocol == other.protocol
+        && baudRate == other.baudRate
+        && std::equal(addresses.cbegin(), addresses.cend(), other.addresses.cbegin(),
+                      other.addresses.cend());
+}
 
 namespace {
 

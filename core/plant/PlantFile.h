@@ -29,7 +29,7 @@ struct PlantLink
     // --address and --baud would give it; a `sim` link simulates the drives at `addresses`.
     ConnectionSettings settings(int address) const;
 
-    bool operator==(const PlantLink &) const = default;
+    bool operator==(const PlantLink &other) const;
 };
 
 // A machine of many drives: its name and the links its drives hang on.

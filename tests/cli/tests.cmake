@@ -12,3 +12,5 @@ drivedesk_add_test(NAME tst_clisilence LABELS integration TIMEOUT 300 SOURCES cl
 add_dependencies(tst_clisilence drivedesk-cli drivedesk-sim)
 drivedesk_add_test(NAME tst_clibaud LABELS integration TIMEOUT 120 SOURCES cli/tst_clibaud.cpp LIBS Qt6::Core)
 add_dependencies(tst_clibaud drivedesk-cli drivedesk-sim)
+drivedesk_add_test(NAME tst_cliplant LABELS integration TIMEOUT 120 SOURCES cli/tst_cliplant.cpp LIBS Qt6::Core)
+add_dependencies(tst_cliplant drivedesk-cli drivedesk-sim)

@@ -1,3 +1,6 @@
 # A machine of many drives: the plant file.
 drivedesk_add_test(NAME tst_plantfile LABELS unit
     SOURCES plant/tst_plantfile.cpp LIBS drivedesk_plant)
+# The job that works through every drive of a plant, against simulated drives in process.
+drivedesk_add_test(NAME tst_plantrun LABELS integration
+    SOURCES plant/tst_plantrun.cpp LIBS drivedesk_plant drivedesk_bus)

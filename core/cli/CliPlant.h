@@ -1,0 +1,61 @@
+#pragma once
+
+#include "cli/CommandLine.h"
+#include "plant/PlantRun.h"
+
+#include <QHash>
+#include <QObject>
+#include <QTextStream>
+
+class QCommandLineParser;
+
+namespace DriveDesk {
+
+class ConnectionOptions;
+
+// `plant find|backup|verify|download PLANT [DIR]` parsed from a parser that has read the arguments;
+// nothing and *error for arguments that do not make sense. The links come from the plant file:
+// --connect and the options that go with it are refused.
+std::optional<CliRequest> parsePlantCommand(const QCommandLineParser &parser,
+                                            const ConnectionOptions &connection,
+                                            const QStringList &positional, QString *error);
+
+// Runs `drivedesk-cli plant`: reads the plant file (a bad one refused, exit 2, nothing sent),
+// works through every drive with a PlantRun and prints a line per drive and a summary.
+// Exit codes: 0 every drive done (found, saved, equal, downloaded), 1 a drive that failed, differs or could
+// not be checked, 2 bad input, 3 no link answered.
+class CliPlant : public QObject
+{
+    Q_OBJECT
+public:
+    explicit CliPlant(CliRequest request, QObject *parent = nullptr);
+
+    void start();
+    // Ctrl+C: every link stops after the value on its way; what was done is reported.
+    bool interrupt();
+
+signals:
+    void finished(int exitCode);
+
+private:
+    void onProgress(const QString &link, int address, int percent, const QString &what);
+    void onFinished();
+    void printFind(const QList<PlantDrive> &drives);
+    void printBackup(const QList<PlantDrive> &drives);
+    void printVerify(const QList<PlantDrive> &drives);
+    void printVerifyJson(const QList<PlantDrive> &drives);
+    void printDownload(const QList<PlantDrive> &drives);
+    // "3 of 5 drives saved; unreachable: dead (cannot connect ...)".
+    QString summary(const QList<PlantDrive> &drives, const QString &goodText) const;
+    void end(int exitCode, const QString &message = {});
+
+    CliRequest m_request;
+    PlantRequest m_plant;
+    PlantRun *m_run = nullptr;
+    QTextStream m_out;
+    QTextStream m_err;
+    QHash<QString, int> m_shown; // per drive: the last progress step printed
+    bool m_finished = false;
+};
+
+} // namespace DriveDesk
