@@ -96,6 +96,33 @@ QString usage()
         "     message says how far the command got)\n");
 }
 
+// One command's part of usage(): its lines under "Commands:" (and the plant commands), each
+// starting at two spaces with the command's name, with the lines indented below it.
+QString commandUsage(const QString &command)
+{
+    if (command.isEmpty() || command.startsWith(QLatin1Char('-')))
+        return {};
+    const QStringList lines = usage().split(QLatin1Char('\n'));
+    const QString start = QStringLiteral("  ") + command;
+    QStringList block;
+    bool inBlock = false;
+    for (const QString &line : lines) {
+        const bool starts = line.startsWith(start)
+                            && (line.size() == start.size() || line.at(start.size()) == QLatin1Char(' '));
+        if (starts)
+            inBlock = true;
+        else if (!line.startsWith(QStringLiteral("   ")))
+            inBlock = false;
+        if (inBlock)
+            block << line;
+    }
+    if (block.isEmpty())
+        return {};
+    return QStringLiteral("Usage: drivedesk-cli %1 ...\n\n%2\n\nConnection options and exit "
+                          "status: drivedesk-cli --help\n")
+        .arg(command, block.join(QLatin1Char('\n')));
+}
+
 } // namespace
 
 namespace {
@@ -246,6 +273,10 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
         return std::nullopt;
     }
     if (parser.isSet(help)) {
+        // `drivedesk-cli scope --help`: that command's part; anything else the whole text.
+        const QString part = commandUsage(parser.positionalArguments().value(0).toLower());
+        if (!part.isEmpty())
+            *helpText = part;
         error->clear();
         return std::nullopt;
     }

@@ -22,6 +22,28 @@ class TestCli : public QObject
 {
     Q_OBJECT
 private slots:
+    // Each command has its own --help: that command's lines, not the whole text; without a
+    // command (or with one it does not know) the whole text.
+    void eachCommandHasItsOwnHelp()
+    {
+        const Run scope = sim({QStringLiteral("scope"), QStringLiteral("--help")});
+        QCOMPARE(scope.exitCode, 0);
+        QVERIFY2(scope.out.contains(QStringLiteral("scope --csv FILE"))
+                     && scope.out.contains(QStringLiteral("scope --offline --csv FILE")),
+                 qPrintable(scope.out));
+        QVERIFY2(!scope.out.contains(QStringLiteral("upload FILE")), qPrintable(scope.out));
+
+        const Run plant = cli({QStringLiteral("plant"), QStringLiteral("--help")});
+        QCOMPARE(plant.exitCode, 0);
+        QVERIFY2(plant.out.contains(QStringLiteral("plant verify PLANT DIR")), qPrintable(plant.out));
+        QVERIFY2(!plant.out.contains(QStringLiteral("scope --csv")), qPrintable(plant.out));
+
+        const Run all = cli({QStringLiteral("--help")});
+        QCOMPARE(all.exitCode, 0);
+        QVERIFY(all.out.contains(QStringLiteral("upload FILE"))
+                && all.out.contains(QStringLiteral("scope --csv FILE")));
+    }
+
     void scanWritesTheParameterFile()
     {
         const Run run = sim({QStringLiteral("scan"), QStringLiteral("--format"), QStringLiteral("json"),
