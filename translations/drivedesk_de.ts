@@ -1624,6 +1624,14 @@
         <source>; left as they are: %1</source>
         <translation>; unverändert gelassen: %1</translation>
     </message>
+    <message>
+        <source>Undone in the file: %1</source>
+        <translation>In der Datei rückgängig gemacht: %1</translation>
+    </message>
+    <message>
+        <source>Redone in the file: %1</source>
+        <translation>In der Datei wiederhergestellt: %1</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::DownloadDialog</name>

@@ -213,12 +213,18 @@ private slots:
         action("undoAction")->trigger();
         QCOMPARE(m_window->model()->value(kFixedSpeed1, 2), 100);
         QVERIFY(!m_window->isWindowModified());
+        // The status bar no longer speaks of the edit as if it stood.
+        QVERIFY2(statusMessage().startsWith(QStringLiteral("Undone in the file: "))
+                     && statusMessage().contains(QStringLiteral("op.20")),
+                 qPrintable(statusMessage()));
         QCOMPARE(m_window->model()->description(), m_driveDocument);
 
         QVERIFY(action("redoAction")->isEnabled());
         action("redoAction")->trigger();
         QCOMPARE(m_window->model()->value(kFixedSpeed1, 2), 250);
         QVERIFY(m_window->isWindowModified());
+        QVERIFY2(statusMessage().startsWith(QStringLiteral("Redone in the file: ")),
+                 qPrintable(statusMessage()));
 
         action("saveFileAction")->trigger();
         QVERIFY(!m_window->isWindowModified());

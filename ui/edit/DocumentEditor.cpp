@@ -7,9 +7,11 @@
 #include "parameters/SetList.h"
 #include "session/CopySet.h"
 
+#include <QScopedValueRollback>
 #include <QUndoStack>
 
 #include <memory>
+#include <utility>
 
 namespace DriveDesk {
 
@@ -20,8 +22,28 @@ DocumentEditor::DocumentEditor(ParameterModel *model, QUndoStack *undoStack, QOb
 {
     connect(m_model, &ParameterModel::valueEdited, this, &DocumentEditor::write);
     // Both come after the command's redo() or undo() has put its values into the model.
-    connect(m_undoStack, &QUndoStack::indexChanged, this, &DocumentEditor::markChanges);
+    connect(m_undoStack, &QUndoStack::indexChanged, this, &DocumentEditor::onIndexChanged);
+    m_index = m_undoStack->index();
     connect(m_undoStack, &QUndoStack::cleanChanged, this, &DocumentEditor::onCleanChanged);
+}
+
+void DocumentEditor::push(QUndoCommand *command)
+{
+    const QScopedValueRollback pushing(m_pushing, true);
+    m_undoStack->push(command);
+}
+
+void DocumentEditor::onIndexChanged(int index)
+{
+    markChanges();
+    const int before = std::exchange(m_index, index);
+    if (m_pushing || index == before || m_undoStack->count() == 0)
+        return;
+    // The status bar's last word was about the change now undone or redone: replace it.
+    if (index < before)
+        emit message(tr("Undone in the file: %1").arg(m_undoStack->text(index)));
+    else
+        emit message(tr("Redone in the file: %1").arg(m_undoStack->text(index - 1)));
 }
 
 void DocumentEditor::rememberSaved(quint16 address)
@@ -126,7 +148,7 @@ void DocumentEditor::write(quint16 address, quint8 setMask, qint32 raw)
         }
         return;
     }
-    m_undoStack->push(command);
+    push(command);
     emit message(tr("%1 = %2 in the file%3; save to keep it")
                      .arg(text.id(), text.value(raw), text.inSets(setMask)));
 }
@@ -150,7 +172,7 @@ void DocumentEditor::resetToDefault(quint16 address, quint8 setMask)
                          : tr("%1 not reset%2: %3").arg(text.id(), text.inSets(setMask), refusal));
         return;
     }
-    m_undoStack->push(command);
+    push(command);
     emit message(tr("%1 reset to its default in the file%2").arg(text.id(), text.inSets(setMask)));
 }
 
@@ -171,7 +193,7 @@ void DocumentEditor::copySet(int fromSet, int toSet)
     }
     const int copied = macro->childCount();
     if (copied > 0)
-        m_undoStack->push(macro.release());
+        push(macro.release());
     if (plan.locked > 0)
         notes << tr("%n value(s) read-only or locked", nullptr, plan.locked);
     if (plan.unknown > 0)

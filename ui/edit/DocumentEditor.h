@@ -50,9 +50,15 @@ private:
     // clears the others' marks.
     void markChanges();
     void onCleanChanged(bool clean);
+    // Every change of the file goes on the stack here: the stack's moves that come from
+    // elsewhere are undo and redo, and say so.
+    void push(QUndoCommand *command);
+    void onIndexChanged(int index);
 
     ParameterModel *m_model = nullptr;
     QUndoStack *m_undoStack = nullptr;
+    int m_index = 0;        // the stack's index as last seen
+    bool m_pushing = false; // a change of ours goes on the stack
     // The values on disk of the parameters changed here since the file was opened.
     QHash<quint16, DocumentValueCommand::Values> m_saved;
 };
