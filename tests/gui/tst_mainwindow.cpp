@@ -337,6 +337,14 @@ private slots:
             = second.statusBar()->findChild<QLabel *>(QStringLiteral("metadataSource"));
         QVERIFY(secondLabel->isVisible());
         QCOMPARE(secondLabel->text(), QStringLiteral("Metadata from cache"));
+        // A long message stops at the field's frame instead of running into its text: every
+        // permanent field of the bar stands in a frame of its own.
+        second.statusBar()->showMessage(QString(300, QLatin1Char('x')));
+        for (const QLabel *field : second.statusBar()->findChildren<QLabel *>(
+                 QString(), Qt::FindDirectChildrenOnly)) {
+            if (!field->objectName().isEmpty())
+                QVERIFY2(field->frameShape() != QFrame::NoFrame, qPrintable(field->objectName()));
+        }
 
         // Drive > Read Metadata Again: everything from the drive.
         auto *again = second.findChild<QAction *>(QStringLiteral("readMetadataAction"));

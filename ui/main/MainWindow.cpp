@@ -98,7 +98,7 @@ MainWindow::MainWindow(Language language, QWidget *parent)
     for (WindowFeature *feature : std::as_const(m_features))
         feature->setParent(this);
     finishMenus();
-    statusBar()->addPermanentWidget(m_stateLabel);
+    addStatusWidget(m_stateLabel);
 
     connect(m_notice, &NoticeBar::cancelClicked, this, [this] {
         if (m_upload)

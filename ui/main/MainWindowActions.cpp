@@ -209,12 +209,18 @@ void MainWindow::createStatusBar()
                                    "cache of this kind of drive; the values were read from the "
                                    "drive. Drive > Read Metadata Again reads everything."));
     m_metadataLabel->hide();
-    statusBar()->addPermanentWidget(m_metadataLabel);
-    statusBar()->addPermanentWidget(m_setsLabel);
+    addStatusWidget(m_metadataLabel);
+    addStatusWidget(m_setsLabel);
 }
 
 void MainWindow::addStatusWidget(QWidget *widget)
 {
+    // A field of its own, sunk into the bar: a long message on the left stops short of it
+    // instead of running into its text.
+    if (auto *label = qobject_cast<QLabel *>(widget)) {
+        label->setFrameStyle(QFrame::StyledPanel | QFrame::Sunken);
+        label->setContentsMargins(4, 0, 4, 0);
+    }
     statusBar()->addPermanentWidget(widget);
 }
 
