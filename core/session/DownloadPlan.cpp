@@ -233,8 +233,18 @@ DownloadPlan planDownload(const DriveDescription &file, const DriveDescription &
             const qsizetype before = plan.items.size();
             ParameterPlanner(parameterId(group.id, parameter.number()), parameter, *inFile, options)
                 .plan(plan, level, outside);
-            if (plan.items.size() > before && hasVariableLimits(parameter))
+            if (plan.items.size() == before)
+                continue;
+            // Seed 002 2.6.2 bit 12: a "write always" value is written by an upload too, as a
+            // pointer is that selects what the values after it address (Fr.09, the set
+            // pointer): no later write goes out before it is answered.
+            const ParameterProperties properties(parameter.properties1, parameter.properties2);
+            plan.items.last().order.beforeLater = properties.isWriteAlways();
+            if (hasVariableLimits(parameter)) {
+                // Its limits may follow from any value before it, and limit a later one.
+                plan.items.last().order = WriteOrder{};
                 late << plan.items.takeLast();
+            }
         }
     }
     plan.items << late;

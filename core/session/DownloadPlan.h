@@ -2,6 +2,7 @@
 
 #include "parameters/DriveDescription.h"
 #include "session/ValueChange.h"
+#include "session/WriteChangesJob.h"
 
 #include <QCoreApplication>
 #include <QList>
@@ -33,6 +34,9 @@ struct DownloadItem
     std::array<std::optional<qint32>, kParameterSets> wanted{};
     std::array<std::optional<qint32>, kParameterSets> before{};
     bool always = false; // written whatever the drive holds (write always, write only)
+    // What its writes wait for and hold up: a selector changes what later writes mean, a
+    // variable limit follows from what was written before it. Free of both by default.
+    WriteOrder order{false, false};
 };
 
 // A parameter, or some of its sets, that the download leaves although the file holds another

@@ -59,64 +59,86 @@ DownloadReport reportDownload(const DownloadPlan &plan,
         const ParameterDescription *parameter = drive.find(item.change.address);
         const ParameterFormat format(parameter ? *parameter : ParameterDescription{});
         const std::optional<WriteOutcome> outcome = outcomes.value(i);
-        const auto line = [&item](const QString &detail) {
-            return DownloadReport::Line{item.id, item.name, detail};
+        const auto line = [&item](const QString &detail, quint8 sets) {
+            return DownloadReport::Line{item.id, item.name, detail, sets};
         };
+        quint8 wanted = 0;
+        for (int set = 0; set < kParameterSets; ++set) {
+            if (item.wanted[std::size_t(set)])
+                wanted |= quint8(1u << set);
+        }
         if (!outcome) {
             report.notWritten << line(stopReason.isEmpty()
                                           ? DownloadReport::tr("not sent")
-                                          : DownloadReport::tr("not sent: %1").arg(stopReason));
+                                          : DownloadReport::tr("not sent: %1").arg(stopReason),
+                                      wanted);
             continue;
         }
+        // Each set on exactly one line: what the drive said about its write decides.
         quint8 held = 0;
-        quint8 notSent = 0;
         quint8 unread = 0;
-        QStringList otherwise;
+        quint8 unanswered = 0;
+        quint8 refused = 0;
+        quint8 notSent = 0;
+        std::map<qint32, quint8> other; // read back other than written
         for (int set = 0; set < kParameterSets; ++set) {
             const auto s = std::size_t(set);
             const auto bit = quint8(1u << set);
-            if (!item.wanted[s] || (outcome->refusedMask & bit))
+            if (!(wanted & bit))
                 continue;
-            if (!(outcome->acknowledgedMask & bit)) {
-                notSent |= bit;
-                continue;
-            }
-            const std::optional<qint32> back = outcome->readBack[s];
-            if (back == item.wanted[s]) {
-                held |= bit;
-            } else if (back) {
-                otherwise << DownloadReport::tr("%1 holds %2")
-                                 .arg(setsText(item, bit), format.text(*back));
+            if (outcome->acknowledgedMask & bit) {
+                const std::optional<qint32> back = outcome->readBack[s];
+                if (back == item.wanted[s])
+                    held |= bit;
+                else if (back)
+                    other[*back] |= bit;
+                else
+                    unread |= bit;
+            } else if (outcome->unansweredMask & bit) {
+                unanswered |= bit;
+            } else if ((outcome->refusedMask & bit) && !(outcome->notSentMask & bit)) {
+                refused |= bit;
             } else {
-                unread |= bit;
+                notSent |= bit;
             }
-        }
-        if (unread) {
-            otherwise << DownloadReport::tr("%1 could not be read back (%2)")
-                             .arg(setsText(item, unread), outcome->readBackError);
         }
         if (held) {
-            report.written << line(valuesText(item, held, item.wanted, format));
+            report.written << line(valuesText(item, held, item.wanted, format), held);
             report.writtenValues += std::popcount(unsigned(held));
         }
-        if (outcome->refusedMask && outcome->connectionFailed) {
-            // The request may have reached the drive and only its answer got lost.
-            report.refused << line(DownloadReport::tr("%1: no answer, so whether the drive took "
-                                                      "the value is unknown (%2)")
-                                       .arg(setsText(item, outcome->refusedMask), outcome->error));
-        } else if (outcome->refusedMask) {
-            report.refused << line(QStringLiteral("%1: %2").arg(
-                setsText(item, outcome->refusedMask), outcome->error));
+        if (refused) {
+            report.refused << line(QStringLiteral("%1: %2").arg(setsText(item, refused),
+                                                               outcome->error),
+                                   refused);
         }
-        if (!otherwise.isEmpty()) {
-            report.refused << line(DownloadReport::tr("written %1, but %2")
-                                       .arg(valuesText(item, 0xFF, item.wanted, format),
-                                            otherwise.join(QStringLiteral(", "))));
+        for (const auto &[value, sets] : other) {
+            report.refused << line(DownloadReport::tr("written %1, but %2 holds %3")
+                                       .arg(valuesText(item, sets, item.wanted, format),
+                                            setsText(item, sets), format.text(value)),
+                                   sets);
+        }
+        if (unanswered) {
+            // The request may have reached the drive and only its answer got lost.
+            report.unknown << line(DownloadReport::tr("%1: no answer, so whether the drive "
+                                                      "took %2 is unknown (%3)")
+                                       .arg(setsText(item, unanswered),
+                                            valuesText(item, unanswered, item.wanted, format),
+                                            outcome->error),
+                                   unanswered);
+        }
+        if (unread) {
+            report.unknown << line(DownloadReport::tr("%1: the drive acknowledged %2, but it "
+                                                      "could not be read back (%3)")
+                                       .arg(setsText(item, unread),
+                                            valuesText(item, unread, item.wanted, format),
+                                            outcome->readBackError),
+                                   unread);
         }
         if (notSent) {
             report.notWritten << line(DownloadReport::tr("%1 not sent: %2")
                                           .arg(setsText(item, notSent),
-                                               stopReason.isEmpty() ? outcome->error : stopReason));
+                                               stopReason.isEmpty() ? outcome->error : stopReason),
+                                      notSent);
         }
     }
     return report;
@@ -130,6 +152,8 @@ QString DownloadReport::text() const
         + tr("%n skipped", nullptr, int(skipped.size()));
     if (!notWritten.isEmpty())
         text += QStringLiteral(", ") + tr("%n not written", nullptr, int(notWritten.size()));
+    if (!unknown.isEmpty())
+        text += QStringLiteral(", ") + tr("%n unknown", nullptr, int(unknown.size()));
     text += QLatin1Char('\n');
     if (readOnlyDiffering) {
         text += tr("%n read-only value(s) of the file differ from the drive's; they are never "
@@ -142,6 +166,7 @@ QString DownloadReport::text() const
     appendSection(text, tr("Refused:"), refused);
     appendSection(text, tr("Skipped:"), skipped);
     appendSection(text, tr("Not written:"), notWritten);
+    appendSection(text, tr("Unknown (sent, no answer):"), unknown);
     return text;
 }
 

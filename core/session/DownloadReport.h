@@ -11,8 +11,9 @@
 namespace DriveDesk {
 
 // How a download went, parameter by parameter: what the drive holds now as the file says
-// (read back), what it refused and why, what the plan left and why, and what was never sent
-// because the download stopped first.
+// (read back), what it refused and why, what the plan left and why, what was never sent
+// because the download stopped first, and what was sent but never answered. Each set of each
+// value to write is on exactly one line, and every line is true of the drive.
 struct DownloadReport
 {
     Q_DECLARE_TR_FUNCTIONS(DownloadReport)
@@ -22,12 +23,16 @@ public:
         QString id;
         QString name;
         QString detail; // the sets and value written, or the reason
+        quint8 sets = 0; // the sets the line is about (set 0 for a value not per set)
     };
 
-    QList<Line> written;
-    QList<Line> refused;    // refused, unanswered, or read back other than written
+    QList<Line> written;    // acknowledged and read back as the file holds it
+    QList<Line> refused;    // refused by the drive (it holds what it held), or read back other
     QList<Line> skipped;
-    QList<Line> notWritten; // never sent
+    QList<Line> notWritten; // never sent: the drive holds what it held
+    // Sent, and no answer came (or acknowledged, and the read-back got none): the drive may
+    // hold the file's value or its own.
+    QList<Line> unknown;
     int writtenValues = 0;
     int unchanged = 0;
     int readOnlyDiffering = 0;
@@ -36,7 +41,8 @@ public:
     // Everything to write was written and read back as the file holds it.
     bool isComplete() const
     {
-        return refused.isEmpty() && notWritten.isEmpty() && stopReason.isEmpty();
+        return refused.isEmpty() && notWritten.isEmpty() && unknown.isEmpty()
+            && stopReason.isEmpty();
     }
     // The report for a user: a summary line, then each list.
     QString text() const;

@@ -82,9 +82,12 @@ void DownloadRun::write()
     }
     m_stage = Stage::Writing;
     QList<ValueChange> changes;
-    for (const DownloadItem &item : std::as_const(m_plan.items))
+    QList<WriteOrder> order;
+    for (const DownloadItem &item : std::as_const(m_plan.items)) {
         changes << item.change;
-    m_job = std::make_shared<WriteChangesJob>(m_protocol, changes);
+        order << item.order;
+    }
+    m_job = std::make_shared<WriteChangesJob>(m_protocol, changes, order);
     m_writing.setFuture(m_client->run(m_job));
 }
 

@@ -18,7 +18,7 @@ class WriteChangesJob;
 // line both run it: the drive's values are read afresh, the download is planned against them
 // (planned(): a last look, nothing written yet), and write() writes the plan, each value read
 // back, with progress, until finished() brings the report. stop() ends it at any point: before
-// write() nothing is written; while writing, the value on its way is still reported.
+// write() nothing is written; while writing, the values on their way are still reported.
 // Thread: the caller's; the reading and writing run in the client's thread.
 class DownloadRun : public QObject
 {

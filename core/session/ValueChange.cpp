@@ -4,6 +4,7 @@
 #include "parameters/SetList.h"
 
 #include <memory>
+#include <utility>
 
 namespace DriveDesk {
 
@@ -15,6 +16,7 @@ struct ChangeRun
     Protocol protocol = Protocol::Hsp5;
     ValueChange change;
     std::function<void(const WriteOutcome &)> done;
+    std::function<void()> stepsDone;
     WriteOutcome outcome;
     qsizetype nextStep = 0;
     int readsOnTheWay = 0;
@@ -22,6 +24,16 @@ struct ChangeRun
 using ChangeRunPtr = std::shared_ptr<ChangeRun>;
 
 void sendNextStep(RequestSink &sink, const ChangeRunPtr &run);
+
+// A write that went on the line and got no word of the drive's on it: its answer was lost, or
+// the drive only said it could not read a repetition, while an earlier attempt may have come
+// through.
+bool mayHaveTakenIt(const Reply &reply)
+{
+    if (reply.attempts == 0 || reply.isAnswer())
+        return false;
+    return reply.status != Reply::Status::Refused || reply.attempts > 1;
+}
 
 void finishReadBack(const ChangeRunPtr &run)
 {
@@ -59,8 +71,11 @@ void readBack(RequestSink &sink, const ChangeRunPtr &run)
 
 void sendNextStep(RequestSink &sink, const ChangeRunPtr &run)
 {
-    if (run->nextStep >= run->change.steps.size())
+    if (run->nextStep >= run->change.steps.size()) {
+        if (const std::function<void()> stepsDone = std::exchange(run->stepsDone, {}))
+            stepsDone();
         return readBack(sink, run);
+    }
     const WriteStep step = run->change.steps.at(run->nextStep++);
     const quint16 address = run->change.address;
     const Telegram request = step.reset ? ValueRequests::resetToDefault(address, step.setMask)
@@ -75,10 +90,16 @@ void sendNextStep(RequestSink &sink, const ChangeRunPtr &run)
             outcome.refusedMask |= step.setMask;
             if (outcome.error.isEmpty())
                 outcome.error = reply.message();
+            if (reply.attempts == 0)
+                outcome.notSentMask |= step.setMask;
+            else if (mayHaveTakenIt(reply))
+                outcome.unansweredMask |= step.setMask;
             if (reply.isConnectionFailure()) {
                 // The steps after it would fail alike: they stay unsent, neither acknowledged
                 // nor refused, and what was acknowledged is still read back if it can be.
                 outcome.connectionFailed = true;
+                for (qsizetype next = run->nextStep; next < run->change.steps.size(); ++next)
+                    outcome.notSentMask |= run->change.steps.at(next).setMask;
                 run->nextStep = run->change.steps.size();
             }
         }
@@ -89,7 +110,8 @@ void sendNextStep(RequestSink &sink, const ChangeRunPtr &run)
 } // namespace
 
 void sendValueChange(RequestSink &sink, Protocol protocol, ValueChange change,
-                     std::function<void(const WriteOutcome &)> done)
+                     std::function<void(const WriteOutcome &)> done,
+                     std::function<void()> stepsDone)
 {
     auto run = std::make_shared<ChangeRun>();
     run->protocol = protocol;
@@ -98,6 +120,7 @@ void sendValueChange(RequestSink &sink, Protocol protocol, ValueChange change,
         step.setMask = SetList::setsWritten(change.setProgrammable, step.setMask);
     run->change = std::move(change);
     run->done = std::move(done);
+    run->stepsDone = std::move(stepsDone);
     sendNextStep(sink, run);
 }
 

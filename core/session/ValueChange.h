@@ -39,6 +39,13 @@ struct WriteOutcome
     quint16 address = 0;
     quint8 acknowledgedMask = 0; // sets whose write the drive acknowledged
     quint8 refusedMask = 0;      // sets whose write was refused or never answered
+    // Of refusedMask: sets whose write went on the line and got no answer the drive gave (no
+    // answer at all, or only a garbled one after an attempt that may have reached it): the
+    // drive may hold the value or not.
+    quint8 unansweredMask = 0;
+    // Sets whose write never went on the line: queued when the connection failed, or a step
+    // after the one that failed. The drive holds what it held.
+    quint8 notSentMask = 0;
     bool activeSetAcknowledged = false; // a step with set mask 0
     QString error;               // the first refusal or transport failure, in words
     // No answer at all, to a write or a read-back: later requests would fail alike. The steps
@@ -53,9 +60,11 @@ struct WriteOutcome
 };
 
 // Sends the change's steps one after the other on `sink`, then reads back every set the drive
-// acknowledged; `done` runs once with the outcome. Thread: the sink's.
+// acknowledged; `stepsDone` (if given) runs once when the last step is answered, before the
+// read-back, and `done` runs once with the outcome. Thread: the sink's.
 void sendValueChange(RequestSink &sink, Protocol protocol, ValueChange change,
-                     std::function<void(const WriteOutcome &)> done);
+                     std::function<void(const WriteOutcome &)> done,
+                     std::function<void()> stepsDone = {});
 
 // One change as a job of its own; ValueEdits runs the window's and the command line's edits so.
 class WriteValueJob : public RequestJob<WriteOutcome>
