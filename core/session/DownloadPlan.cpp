@@ -6,8 +6,10 @@
 #include "parameters/ParameterList.h"
 #include "parameters/SetList.h"
 
+#include <algorithm>
 #include <bit>
 #include <map>
+#include <vector>
 
 namespace DriveDesk {
 
@@ -181,7 +183,12 @@ public:
         item.always = always;
         item.change.address = m_drive.address;
         item.change.setProgrammable = perSet;
-        for (const auto &[value, mask] : masks) {
+        // In the order of the sets (set 0 first), as the last look and the report list them.
+        std::vector<std::pair<qint32, quint8>> bySet(masks.cbegin(), masks.cend());
+        std::sort(bySet.begin(), bySet.end(), [](const auto &a, const auto &b) {
+            return std::countr_zero(unsigned(a.second)) < std::countr_zero(unsigned(b.second));
+        });
+        for (const auto &[value, mask] : bySet) {
             item.change.steps << WriteStep{perSet ? mask : quint8(0x01), value, false};
             if (value < m_drive.minimum || value > m_drive.maximum) {
                 outside << DownloadPlan::tr("%1 (%2) %3 is outside %4 .. %5")

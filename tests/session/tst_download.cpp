@@ -229,12 +229,13 @@ private slots:
         QVERIFY(plan.problems.isEmpty());
         const DownloadItem *speed = itemFor(plan, kMaxSpeedForward);
         QVERIFY(speed);
-        // One telegram per value: sets 2 and 5 take 2500 together.
+        // One telegram per value: sets 2 and 5 take 2500 together; in the order of the sets,
+        // as the last look lists them.
         QCOMPARE(speed->change.steps.size(), 2);
-        QCOMPARE(speed->change.steps[0].raw, 2000);
-        QCOMPARE(speed->change.steps[0].setMask, quint8(0x40));
-        QCOMPARE(speed->change.steps[1].raw, 2500);
-        QCOMPARE(speed->change.steps[1].setMask, quint8(0x24));
+        QCOMPARE(speed->change.steps[0].raw, 2500);
+        QCOMPARE(speed->change.steps[0].setMask, quint8(0x24));
+        QCOMPARE(speed->change.steps[1].raw, 2000);
+        QCOMPARE(speed->change.steps[1].setMask, quint8(0x40));
         QCOMPARE(plan.valueCount(), 3 + 2);
         QVERIFY(!itemFor(plan, kActiveSet));
         QVERIFY(skips(plan, QStringLiteral("Fr.02"), QStringLiteral("read-only for parameter lists")));
