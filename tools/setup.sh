@@ -26,5 +26,6 @@ if ((${#missing[@]})); then
         "${missing[@]}"
 fi
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo
+# The benchmarks are built in a Release tree of their own (docs/performance.md), not here.
+cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDRIVEDESK_BUILD_BENCHMARKS=OFF
 cmake --build build -j"$(nproc)"
