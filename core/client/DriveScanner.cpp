@@ -76,6 +76,8 @@ void DriveScanner::cancel()
         return;
     // Finished first: the Cancelled replies the sink now delivers find nothing left to do.
     m_finished = true;
+    // A stopped scan never asks again: what waited for its second round keeps its failure.
+    deliverUnsettled();
     m_queue.clear();
     m_sink.cancelPending();
     emit finished(result(tr("cancelled")));
@@ -128,7 +130,7 @@ void DriveScanner::readParameter(quint8 page, quint8 number, Service service, Se
                     apply(parameter, *answer);
                     return;
                 }
-                parameter.errors.append(failure(label, reply));
+                fail(parameter, label, reply);
                 if (!std::is_same_v<T, ParameterValue>)
                     ++parameter.metadataErrors;
             },
@@ -160,8 +162,11 @@ void DriveScanner::submitQueued()
             return;
     }
     m_submitting = false;
-    if (!m_finished && m_queue.empty() && m_submitted == 0)
+    if (!m_finished && m_queue.empty() && m_submitted == 0) {
+        if (startSecondRound())
+            return submitQueued();
         finish({});
+    }
 }
 
 void DriveScanner::onReplied(const Reply &reply, const Queued &request)
@@ -176,6 +181,7 @@ void DriveScanner::onReplied(const Reply &reply, const Queued &request)
         return;
     case Reply::Status::LinkLost:
     case Reply::Status::NotConnected:
+    case Reply::Status::DriveSilent:
         finish(reply.message());
         return;
     default:
@@ -190,6 +196,8 @@ void DriveScanner::onReplied(const Reply &reply, const Queued &request)
 void DriveScanner::finish(const QString &reason)
 {
     m_finished = true;
+    // A stopped scan never asks again: what waited for its second round keeps its failure.
+    deliverUnsettled();
     m_queue.clear();
     // A scan that stops keeps the texts read so far.
     deliverUnfinishedPlaintexts();
@@ -332,7 +340,7 @@ void DriveScanner::onParameterName(quint8 page, quint8 number, const Reply &repl
         if (const auto *name = reply.data<NameData>()) {
             parameter.description.name = driveText(name->text);
         } else {
-            parameter.errors.append(failure(tr("name"), reply));
+            fail(parameter, tr("name"), reply);
             ++parameter.metadataErrors;
         }
         readMetadata(page, number);
@@ -383,7 +391,7 @@ void DriveScanner::readMetadata(quint8 page, quint8 number)
                 ScanParameter &p = m_state.parameter(page, number);
                 const auto *d = reply.data<PropertiesData>();
                 if (!d) {
-                    p.errors.append(failure(tr("properties"), reply));
+                    fail(p, tr("properties"), reply);
                     ++p.metadataErrors;
                     // Without bit 11 it is unknown whether the value is one or one per set.
                     if (m_options.values)

@@ -61,8 +61,14 @@ private:
         QStringList implausible;
         int reads = 0;
         bool recheck = false; // of an answer kept earlier: leads to nothing new
+        bool secondRound = false;
     };
     using Queued = std::shared_ptr<QueuedRequest>;
+    // A request left unsettled in the first round, with the failure it would be reported with.
+    struct Unsettled {
+        Queued request;
+        Reply failure;
+    };
 
     // An answer kept while the line was clean: read again once the line shows errors.
     struct Kept {
@@ -90,6 +96,9 @@ private:
     // drive's truth, or reads the request again.
     void settle(const Queued &request, const Reply &reply);
     void deliver(const QueuedRequest &request, const Reply &reply);
+    void unsettled(const Queued &request, const Reply &failure);
+    bool startSecondRound();
+    void deliverUnsettled();
     void readAgain(const Queued &request);
     // Once the line shows errors, what was kept before is read once more to confirm it.
     void checkLine();
@@ -127,6 +136,14 @@ private:
     // A value or default outside the parameter's limits, where they are known.
     QString implausibleRead(quint8 page, quint8 number, const Reply &reply) const;
     QString failure(const QString &label, const Reply &reply) const;
+    // Records a failed read about a parameter or a plaintext table (both have errors and
+    // unanswered): the drive's refusal is its word, anything else leaves the item unread.
+    template<typename Item> void fail(Item &item, const QString &label, const Reply &reply) const
+    {
+        item.errors.append(failure(label, reply));
+        if (reply.ok() || !reply.isAnswer())
+            ++item.unanswered;
+    }
 
     // The metadata cache (ScanCache.cpp).
     bool probeCache();
@@ -145,6 +162,8 @@ private:
     quint64 m_lineErrorsAtStart = 0;  // RequestSink::lineErrors() when the scan started
     bool m_lineShowedErrors = false;
     std::vector<Kept> m_kept;         // answers kept unconfirmed while the line was clean
+    // Unsettled once: asked again after everything else, when a burst of noise has passed.
+    std::vector<Unsettled> m_later;
     std::vector<Probe> m_probes;
     int m_probesPending = 0;
     std::optional<DriveKind> m_cachedKind; // the kind whose cached metadata is used

@@ -58,7 +58,7 @@ void DriveScanner::settle(const Queued &request, const Reply &reply)
         if (!request->answers.empty() && request->reads < kMaxReads)
             return readAgain(request);
         if (request->answers.empty())
-            return deliver(*request, reply);
+            return unsettled(request, reply);
     } else {
         QString why = reply.ok() ? implausibleAnswer(reply.response) : QString();
         if (why.isEmpty() && request->check)
@@ -79,13 +79,44 @@ void DriveScanner::settle(const Queued &request, const Reply &reply)
             return readAgain(request);
     }
     // Read as often as it may be: what came back never agreed, or could not be true.
-    Reply unsettled = reply;
-    unsettled.status = Reply::Status::Timeout;
-    unsettled.attempts = request->reads;
-    unsettled.detail = request->implausible.isEmpty()
+    Reply failure = reply;
+    failure.status = Reply::Status::Timeout;
+    failure.attempts = request->reads;
+    failure.detail = request->implausible.isEmpty()
         ? tr("the answers did not agree")
         : tr("implausible answer: %1").arg(request->implausible.constLast());
-    deliver(*request, unsettled);
+    unsettled(request, failure);
+}
+
+// Noise comes in bursts (a motor starting, a contactor): what one round could not settle often
+// settles later. The second round's failure is the item's error.
+void DriveScanner::unsettled(const Queued &request, const Reply &failure)
+{
+    if (request->secondRound)
+        return deliver(*request, failure);
+    request->secondRound = true;
+    request->reads = 0;
+    m_later.push_back({ request, failure });
+}
+
+bool DriveScanner::startSecondRound()
+{
+    if (m_later.empty())
+        return false;
+    for (Unsettled &item : m_later) {
+        m_queue.push_back(std::move(item.request));
+        ++m_enqueued;
+    }
+    m_later.clear();
+    return true;
+}
+
+void DriveScanner::deliverUnsettled()
+{
+    std::vector<Unsettled> later;
+    later.swap(m_later);
+    for (const Unsettled &item : later)
+        deliver(*item.request, item.failure);
 }
 
 void DriveScanner::deliver(const QueuedRequest &request, const Reply &reply)

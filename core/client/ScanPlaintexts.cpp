@@ -52,7 +52,7 @@ void DriveScanner::onPlaintextDefinition(const PlaintextKey &key, quint8 definit
     ScanPlaintextTable &table = m_state.plaintextTables.at(key);
     const auto *d = reply.data<PlaintextDefinitionData>();
     if (!d) {
-        table.errors.append(failure(tr("plaintext definition %1").arg(definition), reply));
+        fail(table, tr("plaintext definition %1").arg(definition), reply);
         plaintextAnswered(key);
         return;
     }
@@ -72,7 +72,7 @@ void DriveScanner::onPlaintextDefinition(const PlaintextKey &key, quint8 definit
                         t.definitions.at(definition).entries.at(sub)
                             = PlaintextEntry{e->value, e->type, driveText(e->text)};
                     else
-                        t.errors.append(failure(label, reply));
+                        fail(t, label, reply);
                     plaintextAnswered(key);
                 });
     }
@@ -94,6 +94,7 @@ void DriveScanner::deliverPlaintexts(const ScanPlaintextTable &table, quint8 pag
     parameter.definitions = table.definitions;
     parameter.errors.append(table.errors);
     parameter.metadataErrors += int(table.errors.size());
+    parameter.unanswered += table.unanswered;
 }
 
 void DriveScanner::deliverUnfinishedPlaintexts()

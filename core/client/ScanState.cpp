@@ -34,6 +34,7 @@ void ScanState::rejectImplausibleValues()
                         QCoreApplication::translate("DriveDesk::DriveScanner", "default value: %1")
                             .arg(why));
                     ++scanned.metadataErrors;
+                    ++scanned.unanswered;
                     scanned.defaultKnown = false;
                 }
             }
@@ -49,6 +50,7 @@ void ScanState::rejectImplausibleValues()
                     QCoreApplication::translate("DriveDesk::DriveScanner", "value of set %1: %2")
                         .arg(set)
                         .arg(why));
+                ++scanned.unanswered;
             }
         }
     }
@@ -106,6 +108,23 @@ QString shortfall(const ScanGroup &group)
         .arg(addresses.join(QStringLiteral(", ")), group.unsettledReasons.constFirst());
 }
 
+// The parameters the line left unread (their own errors say what failed), named so that a read
+// whose every group is whole is not taken for the drive's complete truth.
+QString unreadParameters(const QStringList &ids)
+{
+    if (ids.isEmpty())
+        return {};
+    constexpr qsizetype kNamed = 5;
+    QString named = ids.mid(0, kNamed).join(QStringLiteral(", "));
+    if (ids.size() > kNamed)
+        named += QStringLiteral(", ...");
+    const int count = int(ids.size());
+    return QCoreApplication::translate("DriveDesk::DriveScanner",
+                                       "%n parameter(s) without a valid answer (%1)", nullptr,
+                                       count)
+        .arg(named);
+}
+
 QString summary(const QStringList &problems)
 {
     if (problems.size() == 1)
@@ -125,6 +144,7 @@ DriveDescription ScanState::describe(Language language, const QString &stopReaso
     drive.identification = identification;
 
     QStringList shortGroups;
+    QStringList unread;
     std::vector<const ScanGroup *> ordered;
     for (const auto &[page, group] : groups)
         ordered.push_back(&group);
@@ -136,14 +156,19 @@ DriveDescription ScanState::describe(Language language, const QString &stopReaso
         if (!missing.isEmpty())
             shortGroups.append(missing);
         GroupDescription group = scanned->description;
-        for (const auto &[number, parameter] : scanned->parameters)
+        for (const auto &[number, parameter] : scanned->parameters) {
             group.parameters.append(describeParameter(parameter));
+            if (parameter.unanswered > 0)
+                unread.append(parameterId(group, group.parameters.constLast()));
+        }
         drive.groups.append(group);
     }
 
     drive.incompleteReason = stopReason;
     // Every group that came up short names its addresses; other problems are summed up.
     QStringList reasons = shortGroups;
+    if (!unread.isEmpty())
+        reasons.append(unreadParameters(unread));
     if (!problems.isEmpty())
         reasons.append(summary(problems));
     if (drive.incompleteReason.isEmpty())

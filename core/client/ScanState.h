@@ -23,6 +23,7 @@ struct ScanDefinition {
 struct ScanPlaintextTable {
     std::vector<ScanDefinition> definitions;         // by definition index
     QStringList errors;                              // one line per failed read
+    int unanswered = 0;                              // of those, reads with no valid answer
     int pending = 0;                                 // requests not yet answered
     std::vector<std::pair<quint8, quint8>> users;    // (page, number) of the parameters
 };
@@ -32,6 +33,9 @@ struct ScanParameter {
     ParameterDescription description;
     QStringList errors;                      // one line per failed read
     int metadataErrors = 0;                  // of those, reads of metadata (not of values)
+    // Of those, reads that got no valid answer (unanswered, never agreeing, implausible, not
+    // decodable) rather than the drive's refusal: the line's fault, so the parameter is not read.
+    int unanswered = 0;
     bool limitsKnown = false;                // the limits were read (or cached)
     bool defaultKnown = false;
     std::vector<ScanDefinition> definitions; // by definition index

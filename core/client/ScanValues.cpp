@@ -99,7 +99,7 @@ void DriveScanner::readSetValues(quint8 page, quint8 number, quint8 setMask)
                     readSetValues(page, number, upper);
                     return;
                 }
-                parameter.errors.append(failure(label, reply));
+                fail(parameter, label, reply);
             },
             [this, page, number](const Reply &reply) {
                 return implausibleRead(page, number, reply);

@@ -111,6 +111,11 @@ QStringList silentlyWrong(const DriveDescription &clean, const DriveDescription 
                 continue;
             }
             const bool marked = !parameter.error.isEmpty();
+            // A scan that calls itself complete holds only what the drive itself said: an error
+            // the clean line does not give (its refusals do) is a parameter left unread.
+            if (!incomplete && parameter.error != expected->error)
+                wrong << QStringLiteral("%1 not read (%2) in a scan called complete")
+                             .arg(id, parameter.error);
             if (parameter.name != expected->name && !(parameter.name.isEmpty() && marked))
                 wrong << QStringLiteral("%1 named '%2'").arg(id, parameter.name);
             if (!marked) {
