@@ -6,6 +6,6 @@ drivedesk_add_test(NAME tst_parameterfilter LABELS gui
 drivedesk_add_test(NAME tst_parameterdelegate LABELS gui
     SOURCES gui/tst_parameterdelegate.cpp parameters/EditorSampleDrive.h LIBS drivedesk_ui)
 
-foreach(area main edit monitor i18n compare scope)
+foreach(area main edit monitor i18n compare scope plant)
     include(${CMAKE_CURRENT_LIST_DIR}/${area}.cmake)
 endforeach()

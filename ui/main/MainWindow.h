@@ -43,7 +43,7 @@ public:
     // Closes the current connection (if any), waits until its link is closed, then connects to
     // `settings` and scans the drive. What the window shows stays until the new connection
     // stands: a connection that fails loses nothing.
-    void connectTo(ConnectionSettings settings);
+    void connectTo(ConnectionSettings settings) override;
     // The connection dialog, filled with the last connection; connects when accepted. It opens
     // without waiting (open()) and closes itself.
     ConnectionDialog *openConnectionDialog();
@@ -84,6 +84,7 @@ public:
     ParameterModel *model() const override { return m_model; }
     ParameterBrowser *browser() const override { return m_browser; }
     QUndoStack *undoStack() const override { return m_undoStack; }
+    Language language() const override { return m_language; }
     DriveSession *session() const override { return m_session; }
     bool isReady() const override;
     ParameterEditing *editing() const override;

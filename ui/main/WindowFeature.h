@@ -1,5 +1,7 @@
 #pragma once
 
+#include "link/ConnectionSettings.h"
+
 #include <QObject>
 
 #include <functional>
@@ -37,6 +39,11 @@ public:
     virtual ParameterModel *model() const = 0;
     virtual ParameterBrowser *browser() const = 0;
     virtual QUndoStack *undoStack() const = 0;
+    // The UI's language, the one the drives' texts are read in.
+    virtual Language language() const = 0;
+    // Closes the connection of the moment (if any) and connects to `settings`, reading the
+    // drive (its metadata from the cache where its kind was read before).
+    virtual void connectTo(ConnectionSettings settings) = 0;
     // The connection and its controllers; nullptr before the first connect.
     virtual DriveSession *session() const = 0;
     // Connected to a drive and read.

@@ -5,6 +5,7 @@
 #include "edit/EditingFeature.h"
 #include "edit/PollingFeature.h"
 #include "monitor/MonitorFeature.h"
+#include "plant/PlantFeature.h"
 #include "scope/ScopeFeature.h"
 #include "transfer/DownloadFeature.h"
 #include "transfer/ExportFeature.h"
@@ -21,7 +22,7 @@ QList<WindowFeature *> makeWindowFeatures(WindowFrame &frame)
                      [download](const DriveDescription &selection) {
                          download->downloadSelection(selection);
                      });
-    return {
+    QList<WindowFeature *> features{
         new PollingFeature(frame),
         new EditingFeature(frame),
         new AccessFeature(frame),
@@ -31,6 +32,17 @@ QList<WindowFeature *> makeWindowFeatures(WindowFrame &frame)
         compare,
         new ExportFeature(frame),
     };
+    auto *plant = new PlantFeature(frame);
+    // Two drives of the plant, each read into a file, side by side in the compare window.
+    QObject::connect(plant, &PlantFeature::compareRequested, compare,
+                     [compare](const QString &fileA, const QString &fileB) {
+                         CompareWindow *window = compare->showCompareWindow();
+                         window->setSide(true, CompareWindow::Source::File, fileA);
+                         window->setSide(false, CompareWindow::Source::File, fileB);
+                         window->compare();
+                     });
+    features << plant;
+    return features;
 }
 
 } // namespace DriveDesk

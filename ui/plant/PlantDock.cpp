@@ -1,0 +1,335 @@
+#include "PlantDock.h"
+
+#include "PlantLinkDialog.h"
+#include "PlantModel.h"
+#include "PlantReportDialog.h"
+
+#include "main/FrameSupport.h"
+#include "main/WindowFeature.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCryptographicHash>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHeaderView>
+#include <QLabel>
+#include <QSettings>
+#include <QStyledItemDelegate>
+#include <QToolBar>
+#include <QTreeView>
+#include <QVBoxLayout>
+
+namespace DriveDesk {
+
+namespace {
+
+const QString kFoldersGroup = QStringLiteral("plants/backupFolders");
+
+// The progress column: a bar with what the job does, while a job works on the row.
+class ProgressDelegate : public QStyledItemDelegate
+{
+public:
+    using QStyledItemDelegate::QStyledItemDelegate;
+
+    void paint(QPainter *painter, const QStyleOptionViewItem &option,
+               const QModelIndex &index) const override
+    {
+        const QVariant percent = index.data(PlantModel::ProgressRole);
+        if (!percent.isValid() || percent.toInt() < 0)
+            return QStyledItemDelegate::paint(painter, option, index);
+        QStyleOptionProgressBar bar;
+        bar.rect = option.rect.adjusted(1, 1, -1, -1);
+        bar.minimum = 0;
+        bar.maximum = 100;
+        bar.progress = percent.toInt();
+        bar.text = QStringLiteral("%1% %2").arg(percent.toInt()).arg(index.data().toString());
+        bar.textVisible = true;
+        bar.state = option.state | QStyle::State_Horizontal;
+        const QWidget *widget = option.widget;
+        QStyle *style = widget ? widget->style() : QApplication::style();
+        style->drawControl(QStyle::CE_ProgressBar, &bar, painter, widget);
+    }
+};
+
+QString folderKey(const QString &plantPath)
+{
+    return kFoldersGroup + QLatin1Char('/')
+        + QString::fromLatin1(
+               QCryptographicHash::hash(QFileInfo(plantPath).absoluteFilePath().toUtf8(),
+                                        QCryptographicHash::Sha1)
+                   .toHex()
+                   .left(16));
+}
+
+} // namespace
+
+PlantDock::PlantDock(WindowFrame &frame, QWidget *parent)
+    : QDockWidget(tr("Plant"), parent)
+    , m_frame(frame)
+{
+    setObjectName(QStringLiteral("plantDock"));
+    m_model = new PlantModel(this);
+    auto *content = new QWidget;
+    auto *layout = new QVBoxLayout(content);
+    layout->setContentsMargins(2, 2, 2, 2);
+    m_title = new QLabel(tr("No plant open. File > New Plant or Open Plant."));
+    m_title->setObjectName(QStringLiteral("plantTitle"));
+    m_title->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_toolBar = new QToolBar;
+    m_toolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_view = new QTreeView;
+    m_view->setObjectName(QStringLiteral("plantView"));
+    m_view->setModel(m_model);
+    m_view->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_view->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_view->setItemDelegateForColumn(PlantModel::ProgressColumn, new ProgressDelegate(m_view));
+    m_view->header()->setStretchLastSection(true);
+    m_status = new QLabel;
+    m_status->setObjectName(QStringLiteral("plantStatus"));
+    m_status->setWordWrap(true);
+    layout->addWidget(m_title);
+    layout->addWidget(m_toolBar);
+    layout->addWidget(m_view, 1);
+    layout->addWidget(m_status);
+    setWidget(content);
+    createActions();
+
+    connect(m_view, &QTreeView::doubleClicked, this, &PlantDock::openDrive);
+    connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+            &PlantDock::updateActions);
+    connect(m_model, &QAbstractItemModel::rowsInserted, this,
+            [this](const QModelIndex &parent) { m_view->expand(parent); });
+    connect(m_model, &QAbstractItemModel::modelReset, this, [this] {
+        m_view->expandAll();
+        fitColumns();
+    });
+    updateActions();
+}
+
+PlantDock::~PlantDock()
+{
+    if (m_run) {
+        m_run->disconnect(this);
+        m_run->stop();
+    }
+}
+
+void PlantDock::createActions()
+{
+    const auto add
+        = [this](const QString &text, const QString &name, const QString &tip, const QIcon &icon) {
+              auto *action = new QAction(icon, text, this);
+              action->setObjectName(name);
+              action->setToolTip(tip);
+              m_toolBar->addAction(action);
+              return action;
+          };
+    m_findAction = add(tr("Find"), QStringLiteral("plantFindAction"),
+                       tr("Search every link for its drives and write the addresses found into "
+                          "the plant file"),
+                       themedIcon("edit-find", QStyle::SP_FileDialogContentsView));
+    m_backupAction = add(tr("Back Up All"), QStringLiteral("plantBackupAction"),
+                         tr("Read every drive whole and save it to its file in the backup folder"),
+                         themedIcon("document-save-all", QStyle::SP_DialogSaveButton));
+    m_verifyAction = add(tr("Verify All"), QStringLiteral("plantVerifyAction"),
+                         tr("Check every drive's settings against its file in the backup folder"),
+                         themedIcon("dialog-ok", QStyle::SP_DialogApplyButton));
+    m_downloadAction = add(tr("Download All..."), QStringLiteral("plantDownloadAction"),
+                           tr("Write each drive's file to the drive, after a last look at what "
+                              "each would get"),
+                           themedIcon("document-send", QStyle::SP_ArrowUp));
+    m_stopAction = add(tr("Stop"), QStringLiteral("plantStopAction"),
+                       tr("Stop every link after the value on its way"),
+                       themedIcon("process-stop", QStyle::SP_BrowserStop));
+    m_toolBar->addSeparator();
+    m_compareAction
+        = add(tr("Compare"), QStringLiteral("plantCompareAction"),
+              tr("Read the two selected drives afresh and compare them side by side"), QIcon());
+    m_addLinkAction = add(tr("Add Link..."), QStringLiteral("plantAddLinkAction"),
+                          tr("Add a link to the plant file"), QIcon());
+    m_folderAction = add(tr("Backup Folder..."), QStringLiteral("plantFolderAction"),
+                         tr("Choose where the drives' files are"), QIcon());
+
+    connect(m_findAction, &QAction::triggered, this,
+            [this] { startJob(Job::Find, m_model->plant(), {}); });
+    connect(m_backupAction, &QAction::triggered, this, [this] {
+        if (!QDir().mkpath(backupFolder()))
+            return showMessage(
+                tr("Cannot make the folder %1.").arg(QDir::toNativeSeparators(backupFolder())));
+        startJob(Job::Backup, m_model->plant(), backupFolder());
+    });
+    connect(m_verifyAction, &QAction::triggered, this, [this] {
+        if (!QDir(backupFolder()).exists())
+            return showMessage(tr("The backup folder %1 does not exist: back the drives up "
+                                  "first, or choose another folder.")
+                                   .arg(QDir::toNativeSeparators(backupFolder())));
+        startJob(Job::Verify, m_model->plant(), backupFolder());
+    });
+    connect(m_downloadAction, &QAction::triggered, this, [this] {
+        if (!QDir(backupFolder()).exists())
+            return showMessage(tr("The backup folder %1 does not exist.")
+                                   .arg(QDir::toNativeSeparators(backupFolder())));
+        startJob(Job::DownloadLook, m_model->plant(), backupFolder());
+    });
+    connect(m_stopAction, &QAction::triggered, this, [this] {
+        if (m_run)
+            m_run->stop();
+    });
+    connect(m_compareAction, &QAction::triggered, this, &PlantDock::compareSelected);
+    connect(m_addLinkAction, &QAction::triggered, this, &PlantDock::addLink);
+    connect(m_folderAction, &QAction::triggered, this, &PlantDock::chooseBackupFolder);
+}
+
+bool PlantDock::openPlant(const QString &path, QString *error)
+{
+    if (m_run) {
+        *error = tr("A job is running on the plant shown; stop it first.");
+        return false;
+    }
+    const std::optional<Plant> plant = PlantFile::load(path, error);
+    if (!plant)
+        return false;
+    m_path = QFileInfo(path).absoluteFilePath();
+    m_model->setBackupFolder(backupFolder());
+    m_model->setPlant(*plant);
+    showPlantTitle();
+    m_status->clear();
+    updateActions();
+    show();
+    raise();
+    emit plantOpened(m_path);
+    return true;
+}
+
+bool PlantDock::showNewPlant(const Plant &plant, const QString &path, QString *error)
+{
+    return PlantFile::save(path, plant, error) && openPlant(path, error);
+}
+
+QString PlantDock::backupFolder() const
+{
+    if (m_path.isEmpty())
+        return {};
+    const QString chosen = QSettings().value(folderKey(m_path)).toString();
+    return chosen.isEmpty() ? QFileInfo(m_path).dir().filePath(QStringLiteral("backups")) : chosen;
+}
+
+void PlantDock::setBackupFolder(const QString &directory)
+{
+    if (m_path.isEmpty())
+        return;
+    QSettings().setValue(folderKey(m_path), QDir(directory).absolutePath());
+    m_model->setBackupFolder(backupFolder());
+    showPlantTitle();
+}
+
+void PlantDock::chooseBackupFolder()
+{
+    auto *dialog = new QFileDialog(this, tr("Backup Folder"), backupFolder());
+    dialog->setFileMode(QFileDialog::Directory);
+    dialog->setOption(QFileDialog::ShowDirsOnly);
+    connect(dialog, &QFileDialog::fileSelected, this, &PlantDock::setBackupFolder);
+    openDialog(dialog);
+}
+
+void PlantDock::addLink()
+{
+    auto *dialog = new PlantLinkDialog(m_model->plant(), false, this);
+    connect(dialog, &PlantLinkDialog::accepted, this, [this, dialog] {
+        QString error;
+        const Plant plant = dialog->plant();
+        if (!PlantFile::save(m_path, plant, &error))
+            return showMessage(error);
+        m_model->setPlant(plant);
+        showMessage(tr("Link %1 added to %2.")
+                        .arg(plant.links.constLast().name, QDir::toNativeSeparators(m_path)));
+    });
+    openDialog(dialog);
+}
+
+void PlantDock::showPlantTitle()
+{
+    m_title->setText(tr("<b>%1</b> &mdash; %2 &mdash; backups in %3")
+                         .arg(m_model->plant().name.toHtmlEscaped(),
+                              QDir::toNativeSeparators(m_path).toHtmlEscaped(),
+                              QDir::toNativeSeparators(backupFolder()).toHtmlEscaped()));
+    setWindowTitle(tr("Plant: %1").arg(m_model->plant().name));
+}
+
+QList<QModelIndex> PlantDock::selectedDrives() const
+{
+    QList<QModelIndex> drives;
+    const QModelIndexList rows = m_view->selectionModel()->selectedRows();
+    for (const QModelIndex &row : rows) {
+        if (m_model->isDrive(row))
+            drives << row;
+    }
+    return drives;
+}
+
+void PlantDock::openDrive(const QModelIndex &index)
+{
+    const QModelIndex drive = index.siblingAtColumn(0);
+    const PlantLink *link = m_model->linkOf(drive);
+    if (!m_model->isDrive(drive) || !link)
+        return;
+    const int address = drive.data(PlantModel::AddressRole).toInt();
+    m_frame.connectTo(link->settings(std::max(address, 0)));
+    showMessage(tr("%1 opens in the editor.").arg(drive.data().toString()));
+}
+
+void PlantDock::compareSelected()
+{
+    const QList<QModelIndex> drives = selectedDrives();
+    if (drives.size() != 2 || m_run)
+        return showMessage(tr("Select two drives to compare."));
+    // Only the two drives, each read whole as a backup reads it, into files of their own.
+    Plant pair;
+    pair.name = m_model->plant().name;
+    for (const QModelIndex &drive : drives) {
+        const PlantLink *link = m_model->linkOf(drive);
+        PlantLink *taken = pair.link(link->name);
+        if (!taken) {
+            pair.links.append(*link);
+            taken = &pair.links.last();
+            taken->addresses.clear();
+        }
+        if (link->protocol != Protocol::Hsp5)
+            taken->addresses.append(drive.data(PlantModel::AddressRole).toInt());
+    }
+    m_compareFiles = std::make_unique<QTemporaryDir>();
+    if (!m_compareFiles->isValid())
+        return showMessage(m_compareFiles->errorString());
+    startJob(Job::CompareRead, pair, m_compareFiles->path());
+}
+
+void PlantDock::updateActions()
+{
+    const bool plant = !m_path.isEmpty() && !m_model->plant().links.isEmpty();
+    const bool idle = m_run.isNull();
+    m_findAction->setEnabled(plant && idle);
+    m_backupAction->setEnabled(plant && idle);
+    m_verifyAction->setEnabled(plant && idle);
+    m_downloadAction->setEnabled(plant && idle);
+    m_stopAction->setEnabled(!idle);
+    m_compareAction->setEnabled(idle && selectedDrives().size() == 2);
+    m_addLinkAction->setEnabled(!m_path.isEmpty() && idle);
+    m_folderAction->setEnabled(!m_path.isEmpty() && idle);
+}
+
+void PlantDock::fitColumns()
+{
+    for (int column = 0; column < PlantModel::ProgressColumn; ++column)
+        m_view->resizeColumnToContents(column);
+}
+
+void PlantDock::showMessage(const QString &text)
+{
+    m_status->setText(text);
+    m_frame.showMessage(text);
+}
+
+} // namespace DriveDesk

@@ -1,0 +1,114 @@
+#pragma once
+
+#include "PlantReportDialog.h"
+
+#include "plant/PlantRun.h"
+
+#include <QDockWidget>
+#include <QPointer>
+#include <QTemporaryDir>
+
+#include <memory>
+
+class QAction;
+class QLabel;
+class QToolBar;
+class QTreeView;
+
+namespace DriveDesk {
+
+class PlantModel;
+class WindowFrame;
+
+// The plant view: the links and drives of a plant file (PlantModel) with the jobs of
+// `drivedesk-cli plant` run on them by core's PlantRun: Find, Back Up All, Verify All and
+// Download All (a dry run as the last look per drive, then the writing and one combined
+// report), each with progress per drive and Stop. A drive opens in the window's editor with a
+// double click; two selected drives are read afresh and offered to the compare window. The
+// plant runs on connections of its own: the drive open in the editor goes on meanwhile.
+class PlantDock : public QDockWidget
+{
+    Q_OBJECT
+public:
+    enum class Job { None, Find, Backup, Verify, DownloadLook, Download, CompareRead };
+
+    PlantDock(WindowFrame &frame, QWidget *parent = nullptr);
+    ~PlantDock() override;
+
+    // Shows the plant file at `path`; false with the reason (file, place, line and column).
+    bool openPlant(const QString &path, QString *error);
+    // Shows `plant`, saved to `path` first; false with the reason when it cannot be saved.
+    bool showNewPlant(const Plant &plant, const QString &path, QString *error);
+    QString plantPath() const { return m_path; }
+    // Where the backups of the plant shown are (remembered per plant; "backups" beside it).
+    QString backupFolder() const;
+    void setBackupFolder(const QString &directory);
+
+    PlantModel *model() const { return m_model; }
+    QTreeView *view() const { return m_view; }
+    Job job() const { return m_job; }
+    PlantReportDialog *reportDialog() const { return m_report; }
+    // How the jobs' clients wait for an answer (a search asks 240 addresses with this wait).
+    void setClientOptions(const ClientOptions &options) { m_clientOptions = options; }
+
+    QAction *findAction() const { return m_findAction; }
+    QAction *backupAction() const { return m_backupAction; }
+    QAction *verifyAction() const { return m_verifyAction; }
+    QAction *downloadAction() const { return m_downloadAction; }
+    QAction *stopAction() const { return m_stopAction; }
+    QAction *compareAction() const { return m_compareAction; }
+
+    // The drive at `index` in the window's editor: its session connects to the drive.
+    void openDrive(const QModelIndex &index);
+    // The two drives selected, read afresh, to the compare window (compareRequested).
+    void compareSelected();
+    void updateActions();
+
+signals:
+    // Two drives read whole, each into a parameter file: A and B of the compare window.
+    void compareRequested(const QString &fileA, const QString &fileB);
+    // A plant file was shown (to be remembered among the recent ones).
+    void plantOpened(const QString &path);
+
+private:
+    void createActions();
+    void addLink();
+    void chooseBackupFolder();
+    void showPlantTitle();
+    void fitColumns();
+    QList<QModelIndex> selectedDrives() const;
+    // PlantDockJobs.cpp
+    void startJob(Job job, const Plant &plant, const QString &directory);
+    void onProgress(const QString &link, int address, int percent, const QString &what);
+    void onJobFinished();
+    void findFinished(const PlantRun &run);
+    void downloadPlanned(const QList<PlantDrive> &drives);
+    void compareRead(const QList<PlantDrive> &drives);
+    QString summary(const QList<PlantDrive> &drives, const QString &goodText) const;
+    void showMessage(const QString &text);
+
+    WindowFrame &m_frame;
+    PlantModel *m_model = nullptr;
+    QTreeView *m_view = nullptr;
+    QToolBar *m_toolBar = nullptr;
+    QLabel *m_title = nullptr;
+    QLabel *m_status = nullptr;
+    QString m_path;
+    QPointer<PlantRun> m_run;
+    Plant m_jobPlant; // the plant the job at work was given
+    Job m_job = Job::None;
+    ClientOptions m_clientOptions;
+    std::unique_ptr<QTemporaryDir> m_compareFiles; // the two drives read for a comparison
+    QPointer<PlantReportDialog> m_report;
+
+    QAction *m_findAction = nullptr;
+    QAction *m_backupAction = nullptr;
+    QAction *m_verifyAction = nullptr;
+    QAction *m_downloadAction = nullptr;
+    QAction *m_stopAction = nullptr;
+    QAction *m_compareAction = nullptr;
+    QAction *m_addLinkAction = nullptr;
+    QAction *m_folderAction = nullptr;
+};
+
+} // namespace DriveDesk

@@ -1,0 +1,199 @@
+// PlantDock: the plant's jobs, each a PlantRun of core, and what the view makes of their end.
+#include "PlantDock.h"
+
+#include "PlantModel.h"
+#include "PlantReportDialog.h"
+
+#include "bus/LinkFactory.h"
+#include "main/FrameSupport.h"
+#include "main/WindowFeature.h"
+
+#include <QAction>
+#include <QDir>
+#include <QLabel>
+#include <QTreeView>
+
+#include <algorithm>
+
+namespace DriveDesk {
+
+void PlantDock::startJob(Job job, const Plant &plant, const QString &directory)
+{
+    if (m_run || plant.links.isEmpty())
+        return;
+    const PlantRun::Task task = job == Job::Find           ? PlantRun::Task::Find
+        : job == Job::Verify                               ? PlantRun::Task::Verify
+        : job == Job::DownloadLook || job == Job::Download ? PlantRun::Task::Download
+                                                           : PlantRun::Task::Backup;
+    auto *run = new PlantRun(plant, task, directory, everyLink(), this);
+    run->setClientOptions(m_clientOptions);
+    ScanOptions reading;
+    reading.metadata = MetadataSource::Cache; // a kind of drive read before is quick
+    run->setReading(reading);
+    run->setLanguage(m_frame.language());
+    run->setDownloadOptions(job == Job::DownloadLook, false);
+    connect(run, &PlantRun::progress, this, &PlantDock::onProgress);
+    connect(run, &PlantRun::driveDone, this, [this](const PlantDrive &drive) {
+        // A comparison reads into files of its own: the drives' results stay as they were.
+        if (m_job != Job::CompareRead)
+            m_model->setDriveDone(drive);
+    });
+    connect(run, &PlantRun::finished, this, &PlantDock::onJobFinished);
+    m_run = run;
+    m_job = job;
+    m_jobPlant = plant;
+    // A comparison reads into files of its own: the drives' last results stay shown.
+    if (job != Job::CompareRead)
+        m_model->startJob();
+    switch (job) {
+    case Job::Find:
+        showMessage(tr("Searching every link for its drives..."));
+        break;
+    case Job::Backup:
+        showMessage(tr("Backing up every drive..."));
+        break;
+    case Job::Verify:
+        showMessage(tr("Verifying every drive against its file..."));
+        break;
+    case Job::DownloadLook:
+        showMessage(tr("Reading every drive to see what a download would write..."));
+        break;
+    case Job::Download:
+        showMessage(tr("Downloading to every drive..."));
+        break;
+    case Job::CompareRead:
+        showMessage(tr("Reading the two drives to compare..."));
+        break;
+    case Job::None:
+        break;
+    }
+    updateActions();
+    run->start();
+}
+
+void PlantDock::onProgress(const QString &link, int address, int percent, const QString &what)
+{
+    m_model->setProgress(link, address, percent, what.isEmpty() ? tr("reading") : what);
+}
+
+void PlantDock::onJobFinished()
+{
+    PlantRun *run = m_run;
+    const Job job = m_job;
+    m_run = nullptr;
+    m_job = Job::None;
+    m_model->endJob();
+    run->deleteLater();
+    const QList<PlantDrive> drives = run->drives();
+    switch (job) {
+    case Job::Find:
+        findFinished(*run);
+        break;
+    case Job::Backup:
+        showMessage(summary(drives, PlantDrive::outcomeText(PlantDrive::Outcome::Saved)));
+        break;
+    case Job::Verify:
+        showMessage(summary(drives, PlantDrive::outcomeText(PlantDrive::Outcome::Equal)));
+        break;
+    case Job::DownloadLook:
+        downloadPlanned(drives);
+        break;
+    case Job::Download: {
+        const QString text = summary(drives, tr("downloaded or already equal"));
+        auto *report = new PlantReportDialog(tr("Download All: Report"), text, drives, false, this);
+        m_report = report;
+        report->setAttribute(Qt::WA_DeleteOnClose);
+        report->show();
+        showMessage(text);
+        break;
+    }
+    case Job::CompareRead:
+        compareRead(drives);
+        break;
+    case Job::None:
+        break;
+    }
+    fitColumns();
+    updateActions();
+}
+
+void PlantDock::findFinished(const PlantRun &run)
+{
+    const QList<PlantDrive> drives = run.drives();
+    const bool noneAnswered = std::all_of(drives.cbegin(), drives.cend(), [](const PlantDrive &d) {
+        return d.outcome == PlantDrive::Outcome::Unreachable;
+    });
+    QString text = summary(drives, PlantDrive::outcomeText(PlantDrive::Outcome::Found));
+    // As `plant find --update`: the addresses found on the links searched to the end go into
+    // the plant file, and nothing else in it changes.
+    if (!noneAnswered && run.plant() != m_jobPlant) {
+        QString error;
+        if (PlantFile::save(m_path, run.plant(), &error))
+            text += QLatin1Char(' ')
+                + tr("The addresses found were written to %1.")
+                      .arg(QDir::toNativeSeparators(m_path));
+        else
+            text += QLatin1Char(' ') + error;
+    }
+    m_model->setPlant(run.plant());
+    showMessage(text);
+}
+
+void PlantDock::downloadPlanned(const QList<PlantDrive> &drives)
+{
+    const qsizetype toWrite
+        = std::count_if(drives.cbegin(), drives.cend(), [](const PlantDrive &d) {
+              return d.outcome == PlantDrive::Outcome::Planned;
+          });
+    const QString text = toWrite == 0
+        ? tr("No drive would be written to: each is already equal to its file, or cannot "
+             "take it (see why).")
+        : tr("%n drive(s) would be written to. Look at what each gets, then write.", nullptr,
+             int(toWrite));
+    auto *look
+        = new PlantReportDialog(tr("Download All: Last Look"), text, drives, toWrite > 0, this);
+    m_report = look;
+    look->setAttribute(Qt::WA_DeleteOnClose);
+    connect(look, &PlantReportDialog::accepted, this,
+            [this] { startJob(Job::Download, m_model->plant(), backupFolder()); });
+    look->show();
+    showMessage(text);
+}
+
+void PlantDock::compareRead(const QList<PlantDrive> &drives)
+{
+    QStringList files;
+    QStringList problems;
+    for (const PlantDrive &drive : drives) {
+        if (drive.outcome == PlantDrive::Outcome::Saved)
+            files << drive.file;
+        else
+            problems << tr("%1: %2").arg(
+                drive.name(),
+                drive.reason.isEmpty() ? PlantDrive::outcomeText(drive.outcome) : drive.reason);
+    }
+    if (files.size() != 2)
+        return showMessage(
+            tr("The drives could not be compared: %1").arg(problems.join(QStringLiteral("; "))));
+    showMessage(tr("%1 and %2 read; the compare window shows them side by side.")
+                    .arg(drives.at(0).name(), drives.at(1).name()));
+    emit compareRequested(files.at(0), files.at(1));
+}
+
+QString PlantDock::summary(const QList<PlantDrive> &drives, const QString &goodText) const
+{
+    const qsizetype good = std::count_if(drives.cbegin(), drives.cend(),
+                                         [](const PlantDrive &d) { return d.isGood(); });
+    QString text = tr("%1 of %n drive(s) %2", nullptr, int(drives.size())).arg(good).arg(goodText);
+    QStringList others;
+    for (const PlantDrive &drive : drives) {
+        if (!drive.isGood())
+            others << QStringLiteral("%1 (%2)").arg(drive.name(),
+                                                    PlantDrive::outcomeText(drive.outcome));
+    }
+    if (!others.isEmpty())
+        text += QStringLiteral("; ") + tr("not: %1").arg(others.join(QStringLiteral(", ")));
+    return text;
+}
+
+} // namespace DriveDesk
