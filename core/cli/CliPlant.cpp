@@ -138,6 +138,7 @@ bool CliPlant::interrupt()
     if (!m_run || !m_run->isRunning() || m_finished)
         return false;
     m_err << tr("stopping every link after the value on its way...") << Qt::endl;
+    m_interrupted = true;
     m_run->stop();
     return true;
 }
@@ -183,6 +184,8 @@ void CliPlant::onFinished()
             return end(1, error);
         m_out << tr("%1: the addresses found written").arg(m_plant.plantFile) << '\n';
     }
+    if (m_interrupted)
+        return end(130);
     if (noneAnswered)
         return end(3, tr("no link answered"));
     end(allGood ? 0 : 1);

@@ -23,7 +23,7 @@ std::optional<CliRequest> parsePlantCommand(const QCommandLineParser &parser,
 // Runs `drivedesk-cli plant`: reads the plant file (a bad one refused, exit 2, nothing sent),
 // works through every drive with a PlantRun and prints a line per drive and a summary.
 // Exit codes: 0 every drive done (found, saved, equal, downloaded), 1 a drive that failed, differs or could
-// not be checked, 2 bad input, 3 no link answered.
+// not be checked, 2 bad input, 3 no link answered, 130 interrupted (after the report).
 class CliPlant : public QObject
 {
     Q_OBJECT
@@ -31,7 +31,8 @@ public:
     explicit CliPlant(CliRequest request, QObject *parent = nullptr);
 
     void start();
-    // Ctrl+C: every link stops after the value on its way; what was done is reported.
+    // Ctrl+C: every link stops after the value on its way; what was done is reported, and the
+    // run ends with 130 as the other commands an interrupt ends.
     bool interrupt();
 
 signals:
@@ -56,6 +57,7 @@ private:
     QTextStream m_err;
     QHash<QString, int> m_shown; // per drive: the last progress step printed
     bool m_finished = false;
+    bool m_interrupted = false;
 };
 
 } // namespace DriveDesk

@@ -1,6 +1,7 @@
 #include "DownloadPlan.h"
 
 #include "parameters/DriveIdentity.h"
+#include "parameters/MetadataMatch.h"
 #include "parameters/ParameterAccess.h"
 #include "parameters/ParameterFormat.h"
 #include "parameters/ParameterList.h"
@@ -41,7 +42,40 @@ bool hasVariableLimits(const ParameterDescription &parameter)
         || p.upperLimitType() != ParameterProperties::LimitType::Constant;
 }
 
-void checkKind(const DriveDescription &file, const DriveDescription &drive, QStringList &problems)
+QString metadataDifferenceText(const MetadataDifference &difference)
+{
+    using Presence = MetadataDifference::Presence;
+    const QString what = difference.isGroup
+        ? DownloadPlan::tr("group %1 %2").arg(difference.id, difference.name)
+        : DownloadPlan::tr("%1 %2").arg(difference.id, difference.name);
+    switch (difference.presence) {
+    case Presence::OnlyInA:
+        return DownloadPlan::tr("%1 is in the file, not on the drive").arg(what);
+    case Presence::OnlyInB:
+        return DownloadPlan::tr("%1 is on the drive, not in the file").arg(what);
+    case Presence::Both:
+        break;
+    }
+    return DownloadPlan::tr("%1: %2 is %3 in the file, %4 on the drive")
+        .arg(what, difference.field, difference.a, difference.b);
+}
+
+// An identification parameter the drive has whose value was not read: its kind is unknown,
+// not absent.
+bool hasUnreadIdentification(const DriveDescription &drive)
+{
+    for (const IdentificationParameter &id : DriveIdentity::parameters()) {
+        const GroupDescription *group = drive.findGroup(QString::fromLatin1(id.group));
+        const ParameterDescription *parameter
+            = group ? drive.find(quint16(group->address | id.number)) : nullptr;
+        if (id.namesTheKind && parameter && !parameter->values[0])
+            return true;
+    }
+    return false;
+}
+
+void checkKind(const DriveDescription &file, const DriveDescription &drive, bool selection,
+               QStringList &problems)
 {
     if (!file.identification.isEmpty() && !drive.identification.isEmpty()
         && file.identification != drive.identification) {
@@ -50,9 +84,22 @@ void checkKind(const DriveDescription &file, const DriveDescription &drive, QStr
     }
     const std::optional<DriveKind> fileKind = DriveIdentity::kind(file);
     const std::optional<DriveKind> driveKind = DriveIdentity::kind(drive);
-    if (!driveKind) {
+    if (!driveKind && hasUnreadIdentification(drive)) {
         problems << DownloadPlan::tr("the drive's identification could not be read, so the "
                                      "file cannot be checked against it");
+        return;
+    }
+    if (!driveKind) {
+        // A drive without the parameters that name its kind (not an F5) is the file's kind
+        // when its metadata is the file's (a backup of it, or of one like it).
+        const auto difference = MetadataMatch::firstDifference(
+            file, drive,
+            selection ? MetadataMatch::Scope::AHoldsPart : MetadataMatch::Scope::Whole);
+        if (difference) {
+            problems << DownloadPlan::tr("the drive has no identification, and the file's "
+                                         "metadata is not the drive's: %1")
+                            .arg(metadataDifferenceText(*difference));
+        }
         return;
     }
     if (!fileKind) {
@@ -227,7 +274,7 @@ DownloadPlan planDownload(const DriveDescription &file, const DriveDescription &
 {
     DownloadPlan plan;
     plan.forced = options.force;
-    checkKind(file, drive, plan.problems);
+    checkKind(file, drive, options.selection, plan.problems);
     checkParameters(file, drive, options.selection, plan.problems);
     const std::optional<PasswordLevel> level = levelInForce(drive);
     QStringList outside;

@@ -284,8 +284,50 @@ private slots:
         QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
     }
 
-    // Ctrl+C while the bus is searched: every link stops, what was done is reported, and no
-    // drive of the bus has a file.
+    // A drive with no identification parameters takes its own backup, matched by its
+    // metadata, without --force; a file of another kind is refused, naming where it differs.
+    void anUnidentifiedDriveTakesItsOwnBackup()
+    {
+        SimulatorProcess bus({QStringLiteral("--protocol"), QStringLiteral("din66019ii"),
+                              QStringLiteral("--address"), QStringLiteral("9,11"),
+                              QStringLiteral("--other-kind"), QStringLiteral("9"),
+                              QStringLiteral("--unidentified"), QStringLiteral("11")});
+        QVERIFY2(bus.started(), qPrintable(bus.error()));
+        const QString plant = m_dir.filePath(QStringLiteral("unidentified.json"));
+        QVERIFY(writeText(plant, planText(bus.target(), QStringLiteral("9, 11"), m_hoist->target())));
+        const QString directory = m_dir.filePath(QStringLiteral("unidentified"));
+        Run run = cli({QStringLiteral("plant"), QStringLiteral("backup"), plant, directory,
+                       QStringLiteral("--quiet")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        const QStringList drive11{QStringLiteral("--connect"), bus.target(), QStringLiteral("--protocol"),
+                                  QStringLiteral("din66019ii"), QStringLiteral("--address"), QStringLiteral("11"),
+                                  QStringLiteral("--quiet")};
+        run = cli(drive11 + QStringList{QStringLiteral("write"), QStringLiteral("op.11"), QStringLiteral("2500"),
+                                         QStringLiteral("--sets"), QStringLiteral("2")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+
+        run = cli({QStringLiteral("plant"), QStringLiteral("download"), plant, directory,
+                   QStringLiteral("--quiet")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        QVERIFY2(run.out.contains(QStringLiteral("cabinet-11: written\n")), qPrintable(run.out));
+        run = cli(drive11 + QStringList{QStringLiteral("read"), QStringLiteral("op.11"), QStringLiteral("--set"),
+                                         QStringLiteral("2")});
+        QVERIFY2(run.out.contains(QStringLiteral("3000 1/min")), qPrintable(explain(run)));
+
+        const QString own = QDir(directory).filePath(QStringLiteral("cabinet-11.json"));
+        QVERIFY(QFile::remove(own));
+        QVERIFY(QFile::copy(QDir(directory).filePath(QStringLiteral("cabinet-9.json")), own));
+        run = cli({QStringLiteral("plant"), QStringLiteral("download"), plant, directory,
+                   QStringLiteral("--quiet")});
+        QVERIFY2(run.exitCode == 1, qPrintable(explain(run)));
+        QVERIFY2(run.out.contains(QStringLiteral("cabinet-11: failed: refused, nothing written: the drive has "
+                                                 "no identification, and the file's metadata is not the "
+                                                 "drive's: In.00 ")),
+                 qPrintable(run.out));
+    }
+
+    // Ctrl+C while the bus is searched: every link stops, what was done is reported, the run
+    // ends with 130 as every command an interrupt ends, and no drive of the bus has a file.
     void anInterruptStopsEveryLink()
     {
         const QString plant = m_dir.filePath(QStringLiteral("search.json"));
@@ -304,7 +346,8 @@ private slots:
         QVERIFY2(process.waitForFinished(15000), qPrintable(err));
         const QString out = QString::fromUtf8(process.readAllStandardOutput());
         err += QString::fromUtf8(process.readAllStandardError());
-        QCOMPARE(process.exitCode(), 1);
+        QCOMPARE(process.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(process.exitCode(), 130); // as any command ends on Ctrl+C, after the report
         QVERIFY2(err.contains(QStringLiteral("stopping every link")), qPrintable(err));
         QVERIFY2(out.contains(QStringLiteral("hoist: ")), qPrintable(out));
         QVERIFY2(out.contains(QRegularExpression(QStringLiteral("^\\d of \\d drive"),

@@ -36,3 +36,6 @@ drivedesk_add_test(NAME tst_parametercsv LABELS unit
 drivedesk_add_test(NAME tst_comparisontable LABELS unit
     SOURCES parameters/tst_comparisontable.cpp parameters/EditorSampleDrive.h
     LIBS drivedesk_parameters)
+# The metadata that makes a drive without identification the kind of a file (download's check).
+drivedesk_add_test(NAME tst_metadatamatch LABELS unit
+    SOURCES parameters/tst_metadatamatch.cpp LIBS drivedesk_parameters)
