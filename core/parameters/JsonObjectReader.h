@@ -9,16 +9,20 @@
 
 namespace DriveDesk {
 
-// The first fault of a document: where ("groups[2].parameters[5].min") and what.
+// The first fault of a document: where ("groups[2].parameters[5].min") and what. The place
+// finds the line and column; the subject, where the document tells it, is what a user knows
+// the place by ("uF.07, set 0") and is what the text names.
 struct JsonFault
 {
     QString place;
     QString message;
+    QString subject;
 
     bool isEmpty() const { return message.isEmpty(); }
     QString text() const
     {
-        return place.isEmpty() ? message : place + QStringLiteral(": ") + message;
+        const QString &where = subject.isEmpty() ? place : subject;
+        return where.isEmpty() ? message : where + QStringLiteral(": ") + message;
     }
 };
 

@@ -22,8 +22,9 @@ public:
     static const QString kFormat; // "drivedesk-parameters"
 
     static QByteArray toJson(const DriveDescription &drive);
-    // Nothing, with the place and the reason ("groups[2].parameters[5].min: expected an
-    // integer"), for anything that is not a valid version-1 parameter file.
+    // Nothing, with the place, the reason and the line and column ("uF.07, set 0: expected an
+    // integer (line 40, column 17)"; outside a parameter "groups[2].name: ..."), for anything
+    // that is not a valid version-1 parameter file.
     static std::optional<DriveDescription> fromJson(const QByteArray &json,
                                                     QString *error = nullptr);
 

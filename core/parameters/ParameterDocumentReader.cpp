@@ -5,6 +5,7 @@
 #include "JsonTextPlaces.h"
 #include "ParameterId.h"
 #include "ParameterProperties.h"
+#include "SetList.h"
 
 #include <QJsonDocument>
 #include <QJsonParseError>
@@ -24,6 +25,26 @@ constexpr qint64 kInt32Max = std::numeric_limits<qint32>::max();
 QString onOff(bool value)
 {
     return value ? QStringLiteral("true") : QStringLiteral("false");
+}
+
+// "uF.07, set 0", "uF.07, min": a place inside a parameter as the user knows it.
+QString partOf(const QString &id, const QString &part)
+{
+    return ParameterDocument::tr("%1, %2", "a parameter id, then a set or a field of it")
+        .arg(id, part);
+}
+
+// A fault inside the parameter read at `place` names the parameter by its id, not the path to
+// it; the path stays in the fault to find the line and column.
+void nameFault(JsonFault &fault, const QString &place, const QString &id)
+{
+    if (fault.isEmpty() || id.isEmpty() || !fault.subject.isEmpty()
+        || !fault.place.startsWith(place))
+        return;
+    if (fault.place.size() == place.size())
+        fault.subject = id;
+    else if (fault.place.at(place.size()) == QLatin1Char('.'))
+        fault.subject = partOf(id, fault.place.mid(place.size() + 1));
 }
 
 // The fields written for readers (id, unit, decimals, setProgrammable, readOnly) must agree
@@ -105,7 +126,7 @@ void checkLimits(JsonObjectReader &reader, const ParameterDescription &parameter
     }
 }
 
-void readValues(JsonObjectReader &reader, ParameterDescription &parameter)
+void readValues(JsonObjectReader &reader, ParameterDescription &parameter, const QString &id)
 {
     const QString key = QStringLiteral("values");
     const QJsonArray values = reader.array(key);
@@ -128,6 +149,8 @@ void readValues(JsonObjectReader &reader, ParameterDescription &parameter)
         const QString place = JsonObjectReader::indexed(reader.place(key), set);
         parameter.values[set] = qint32(
             reader.checkedInteger(values.at(set), place, kInt32Min, kInt32Max).value_or(0));
+        if (!reader.ok())
+            reader.error()->subject = partOf(id, SetList::text(quint8(1u << set)));
     }
 }
 
@@ -165,11 +188,21 @@ void readPlaintexts(JsonObjectReader &reader, ParameterDescription &parameter)
     }
 }
 
+// `id` is the parameter's id once its address is known to lie in `group`.
 ParameterDescription readParameter(JsonObjectReader &reader, const GroupDescription &group,
-                                   const QList<GroupAddress> &groups)
+                                   const QList<GroupAddress> &groups, QString &id)
 {
     ParameterDescription parameter;
     parameter.address = quint16(reader.integer(QStringLiteral("address"), 0, 0xFFFF));
+    if (reader.ok() && (parameter.address & 0xFF00) != (group.address & 0xFF00)) {
+        reader.fail(reader.place(QStringLiteral("address")),
+                    ParameterDocument::tr("%1 is not in group %2 (%3)")
+                        .arg(ParameterId::hexAddress(parameter.address), group.id,
+                             ParameterId::hexAddress(group.address)));
+        return parameter;
+    }
+    if (reader.ok())
+        id = parameterId(group, parameter);
     parameter.name = reader.string(QStringLiteral("name"));
     parameter.minimum = qint32(reader.integer(QStringLiteral("min"), kInt32Min, kInt32Max));
     parameter.maximum = qint32(reader.integer(QStringLiteral("max"), kInt32Min, kInt32Max));
@@ -182,13 +215,6 @@ ParameterDescription readParameter(JsonObjectReader &reader, const GroupDescript
     checkLimits(reader, parameter);
     if (!reader.ok())
         return parameter;
-    if ((parameter.address & 0xFF00) != (group.address & 0xFF00)) {
-        reader.fail(reader.place(QStringLiteral("address")),
-                    ParameterDocument::tr("%1 is not in group %2 (%3)")
-                        .arg(ParameterId::hexAddress(parameter.address), group.id,
-                             ParameterId::hexAddress(group.address)));
-        return parameter;
-    }
 
     JsonObjectReader scaling(reader.object(QStringLiteral("scaling")),
                              reader.place(QStringLiteral("scaling")), reader.error());
@@ -218,7 +244,7 @@ ParameterDescription readParameter(JsonObjectReader &reader, const GroupDescript
         : parameter.address;
     indices.finish();
 
-    readValues(reader, parameter);
+    readValues(reader, parameter, id);
     readPlaintexts(reader, parameter);
     if (reader.has(QStringLiteral("error")))
         parameter.error = reader.string(QStringLiteral("error"));
@@ -310,11 +336,14 @@ bool readGroups(JsonObjectReader &root, DriveDescription &drive)
         const QJsonArray parameters = reader.array(parametersKey);
         for (qsizetype p = 0; p < parameters.size() && reader.ok(); ++p) {
             JsonObjectReader fields = reader.element(parametersKey, parameters, p);
-            ParameterDescription parameter = readParameter(fields, group, addresses);
+            QString id;
+            ParameterDescription parameter = readParameter(fields, group, addresses, id);
             if (fields.ok() && seen.contains(parameter.address))
                 fields.fail(fields.place(QStringLiteral("address")),
                             ParameterDocument::tr("%1 appears twice")
                                 .arg(ParameterId::hexAddress(parameter.address)));
+            nameFault(*fields.error(), JsonObjectReader::indexed(reader.place(parametersKey), p),
+                      id);
             seen.insert(parameter.address);
             group.parameters.append(parameter);
         }

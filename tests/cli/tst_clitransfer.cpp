@@ -1,5 +1,6 @@
 #include "CliTestSupport.h"
 
+#include <QDir>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -10,9 +11,10 @@ using namespace DriveDesk::CliTest;
 
 namespace {
 
-// Changes one raw value of a parameter file as an editor would; false when the file or the
+// Changes one parameter of a parameter file as `edit` says; false when the file or the
 // parameter is not there.
-bool editFile(const QString &path, const QString &id, int set, int raw)
+template<typename Edit>
+bool editParameter(const QString &path, const QString &id, Edit edit)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
@@ -28,9 +30,7 @@ bool editFile(const QString &path, const QString &id, int set, int raw)
             QJsonObject parameter = parameters[p].toObject();
             if (parameter.value(QStringLiteral("id")).toString() != id)
                 continue;
-            QJsonArray values = parameter.value(QStringLiteral("values")).toArray();
-            values[set] = raw;
-            parameter.insert(QStringLiteral("values"), values);
+            edit(parameter);
             parameters[p] = parameter;
             found = true;
         }
@@ -40,6 +40,16 @@ bool editFile(const QString &path, const QString &id, int set, int raw)
     root.insert(QStringLiteral("groups"), groups);
     return found && file.open(QIODevice::WriteOnly | QIODevice::Truncate)
         && file.write(QJsonDocument(root).toJson()) > 0;
+}
+
+// Changes one raw value of a parameter file as an editor would.
+bool editFile(const QString &path, const QString &id, int set, int raw)
+{
+    return editParameter(path, id, [set, raw](QJsonObject &parameter) {
+        QJsonArray values = parameter.value(QStringLiteral("values")).toArray();
+        values[set] = raw;
+        parameter.insert(QStringLiteral("values"), values);
+    });
 }
 
 } // namespace
@@ -148,6 +158,63 @@ private slots:
         QVERIFY(readSet(QStringLiteral("op.11"), 4).contains(QStringLiteral("2222 1/min")));
     }
 
+    // A drive with no identification parameters takes its own backup, matched by its
+    // metadata; a file whose metadata differs is refused, naming where it first differs.
+    void anUnidentifiedDriveTakesAFileOfItsMetadata()
+    {
+        SimulatorProcess bus({QStringLiteral("--protocol"), QStringLiteral("din66019ii"),
+                              QStringLiteral("--address"), QStringLiteral("9,11"),
+                              QStringLiteral("--other-kind"), QStringLiteral("9"),
+                              QStringLiteral("--unidentified"), QStringLiteral("11")});
+        QVERIFY2(bus.started(), qPrintable(bus.error()));
+        const QString cacheHome = m_dir.filePath(QStringLiteral("cache"));
+        const auto on = [&bus, &cacheHome](int address, const QStringList &command) {
+            return cli(QStringList{QStringLiteral("--connect"), bus.target(), QStringLiteral("--protocol"),
+                                   QStringLiteral("din66019ii"), QStringLiteral("--address"),
+                                   QString::number(address), QStringLiteral("--quiet")}
+                           + command,
+                       cacheHome);
+        };
+        const QString own = m_dir.filePath(QStringLiteral("unidentified.json"));
+        const QString other = m_dir.filePath(QStringLiteral("other-kind.json"));
+        Run run = on(11, {QStringLiteral("upload"), own});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        run = on(9, {QStringLiteral("upload"), other});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        run = on(11, {QStringLiteral("write"), QStringLiteral("op.11"), QStringLiteral("2500"),
+                      QStringLiteral("--sets"), QStringLiteral("2")});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+
+        run = on(11, {QStringLiteral("download"), own});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        QVERIFY2(run.err.isEmpty(), qPrintable(run.err)); // no problem, not even a warning
+        QVERIFY2(run.out.contains(QStringLiteral("op.11  Maximum speed forward: set 2: 3000 1/min")),
+                 qPrintable(run.out));
+
+        run = on(11, {QStringLiteral("download"), other});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(QStringLiteral("refused: the drive has no identification, and the file's "
+                                                 "metadata is not the drive's: In.00 ")),
+                 qPrintable(run.err));
+        QVERIFY2(run.err.contains(QStringLiteral(" is in the file, not on the drive")), qPrintable(run.err));
+
+        // One limit of its own backup changed: another kind of drive, however alike.
+        QVERIFY(editFile(own, QStringLiteral("op.11"), 2, 2222));
+        QVERIFY(editParameter(own, QStringLiteral("op.11"), [](QJsonObject &parameter) {
+            parameter.insert(QStringLiteral("max"), 5000);
+        }));
+        run = on(11, {QStringLiteral("download"), own});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(QStringLiteral("op.11 Maximum speed forward: upper limit is 5000 1/min in "
+                                                 "the file, 4000 1/min on the drive")),
+                 qPrintable(run.err));
+        run = on(11, {QStringLiteral("read"), QStringLiteral("op.11"), QStringLiteral("--set"),
+                      QStringLiteral("2")});
+        QVERIFY2(run.out.contains(QStringLiteral("3000 1/min")), qPrintable(explain(run)));
+        // The cache holds drive 9's kind only: a drive that names no kind is never served.
+        QCOMPARE(QDir(cacheHome + QStringLiteral("/DriveDesk/metadata")).entryList(QDir::Files).size(), 1);
+    }
+
     void aValueTheDriveRefusesIsReportedInWords()
     {
         QVERIFY(editFile(m_file, QStringLiteral("op.11"), 1, 9999)); // above 4000
@@ -192,7 +259,10 @@ private slots:
         QTest::newRow("key twice") << QByteArray("key twice")
                                    << QStringLiteral("groups[0].name: appears twice in one object (line ");
         QTest::newRow("max below min") << QByteArray("max below min")
-                                       << QStringLiteral("groups[0].parameters[0].max: -1 is below min 0 (line ");
+                                       << QStringLiteral("ru.00, max: -1 is below min 0 (line ");
+        // A bad value is named as the window names it: the parameter and the set.
+        QTest::newRow("value not a number") << QByteArray("value text")
+                                            << QStringLiteral("op.11, set 6: expected an integer (line ");
     }
 
     void aCorruptFileChangesNothing()
@@ -216,6 +286,14 @@ private slots:
         } else if (change == "max below min") {
             const qsizetype at = bytes.indexOf("\"max\": ");
             bytes.replace(at, bytes.indexOf(',', at) - at, "\"max\": -1");
+        } else if (change == "value text") {
+            qsizetype at = bytes.indexOf("\"values\": [", bytes.indexOf("\"id\": \"op.11\""));
+            at = bytes.indexOf('[', at) + 1;
+            for (int set = 0; set < 6; ++set)
+                at = bytes.indexOf(',', at) + 1;
+            while (bytes.at(at) == ' ' || bytes.at(at) == '\n')
+                ++at;
+            bytes.replace(at, bytes.indexOf(',', at) - at, "\"fast\"");
         } else if (change.startsWith("\"min")) {
             const qsizetype at = bytes.indexOf(change);
             bytes.replace(at, change.size(), "\"min\": \"zero\",");

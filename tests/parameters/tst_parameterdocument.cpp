@@ -256,76 +256,76 @@ private slots:
         QTest::newRow("group number") << sampleWith({ QStringLiteral("groups"), 0 }, 5)
                                       << QStringLiteral("groups[0]: expected an object");
         QTest::newRow("min text") << sampleWith(state(QStringLiteral("min")), QStringLiteral("12"))
-                                  << QStringLiteral("groups[1].parameters[0].min: expected an "
+                                  << QStringLiteral("ru.00, min: expected an "
                                                     "integer");
         QTest::newRow("min fraction") << sampleWith(state(QStringLiteral("min")), 1.5)
-                                      << QStringLiteral("groups[1].parameters[0].min: expected an "
+                                      << QStringLiteral("ru.00, min: expected an "
                                                         "integer");
         QTest::newRow("min too big")
             << sampleWith(state(QStringLiteral("min")), qint64(3000000000))
-            << QStringLiteral("groups[1].parameters[0].min: 3000000000 is outside "
+            << QStringLiteral("ru.00, min: 3000000000 is outside "
                               "-2147483648..2147483647");
         QTest::newRow("min huge") << sampleWith(state(QStringLiteral("min")), 1e300)
-                                  << QStringLiteral("groups[1].parameters[0].min: expected an "
+                                  << QStringLiteral("ru.00, min: expected an "
                                                     "integer");
         QTest::newRow("min missing")
             << sampleWith(state(QStringLiteral("min")), QJsonValue::Undefined)
-            << QStringLiteral("groups[1].parameters[0].min: missing");
+            << QStringLiteral("ru.00, min: missing");
         QTest::newRow("min null") << sampleWith(state(QStringLiteral("min")), QJsonValue::Null)
-                                  << QStringLiteral("groups[1].parameters[0].min: expected an "
+                                  << QStringLiteral("ru.00, min: expected an "
                                                     "integer");
         QTest::newRow("properties negative")
             << sampleWith(state(QStringLiteral("properties1")), -1)
-            << QStringLiteral("groups[1].parameters[0].properties1: -1 is outside 0..4294967295");
+            << QStringLiteral("ru.00, properties1: -1 is outside 0..4294967295");
         QTest::newRow("seven values")
             << sampleWith(state(QStringLiteral("values")), QJsonArray { 1, 2, 3, 4, 5, 6, 7 })
-            << QStringLiteral("groups[1].parameters[0].values: 7 entries; a set-programmable "
+            << QStringLiteral("ru.00, values: 7 entries; a set-programmable "
                               "parameter has one for each of the 8 sets");
         QTest::newRow("one value for eight sets")
             << sampleWith(state(QStringLiteral("values")), QJsonArray { 1 })
-            << QStringLiteral("groups[1].parameters[0].values: 1 entries; a set-programmable "
+            << QStringLiteral("ru.00, values: 1 entries; a set-programmable "
                               "parameter has one for each of the 8 sets");
         QTest::newRow("value text")
             << sampleWith({ QStringLiteral("groups"), 1, QStringLiteral("parameters"), 0,
                             QStringLiteral("values"), 2 },
                           QStringLiteral("x"))
-            << QStringLiteral("groups[1].parameters[0].values[2]: expected an integer");
+            << QStringLiteral("ru.00, set 2: expected an integer");
         QTest::newRow("misspelt field")
             << sampleWith(state(QStringLiteral("valeus")), QJsonArray())
-            << QStringLiteral("groups[1].parameters[0].valeus: unknown field");
+            << QStringLiteral("ru.00, valeus: unknown field");
         QTest::newRow("divisor") << sampleWith(
             { QStringLiteral("groups"), 1, QStringLiteral("parameters"), 0,
               QStringLiteral("scaling"), QStringLiteral("divisor") },
             40000)
                                  << QStringLiteral(
-                                        "groups[1].parameters[0].scaling.divisor: 40000 is outside "
+                                        "ru.00, scaling.divisor: 40000 is outside "
                                         "-32768..32767");
         QTest::newRow("readOnly edited alone")
             << sampleWith(state(QStringLiteral("readOnly")), true)
-            << QStringLiteral("groups[1].parameters[0].readOnly: true does not agree with "
+            << QStringLiteral("ru.00, readOnly: true does not agree with "
                               "properties2 bit 3");
         QTest::newRow("unit edited alone")
             << sampleWith(state(QStringLiteral("unit")), QStringLiteral("V"))
-            << QStringLiteral("groups[1].parameters[0].unit: 'V' does not agree with "
+            << QStringLiteral("ru.00, unit: 'V' does not agree with "
                               "scaling.flags (unit '')");
         QTest::newRow("id for another address")
             << sampleWith(state(QStringLiteral("id")), QStringLiteral("ru.04"))
-            << QStringLiteral("groups[1].parameters[0].id: 'ru.04' names 0204h, not the address "
+            << QStringLiteral("ru.00, id: 'ru.04' names 0204h, not the address "
                               "0200h");
         QTest::newRow("id for no group")
             << sampleWith(state(QStringLiteral("id")), QStringLiteral("zz.0"))
-            << QStringLiteral("groups[1].parameters[0].id: no group 'zz' on this drive");
+            << QStringLiteral("ru.00, id: no group 'zz' on this drive");
         QTest::newRow("plaintext definition")
             << sampleWith({ QStringLiteral("groups"), 1, QStringLiteral("parameters"), 0,
                             QStringLiteral("plaintexts"), 0, QStringLiteral("definition") },
                           9)
-            << QStringLiteral("groups[1].parameters[0].plaintexts[0].definition: 9, but "
+            << QStringLiteral("ru.00, plaintexts[0].definition: 9, but "
                               "plaintextDefinitions has 4 entries");
         QTest::newRow("plaintext text missing")
             << sampleWith({ QStringLiteral("groups"), 1, QStringLiteral("parameters"), 0,
                             QStringLiteral("plaintexts"), 1, QStringLiteral("text") },
                           QJsonValue::Undefined)
-            << QStringLiteral("groups[1].parameters[0].plaintexts[1].text: missing");
+            << QStringLiteral("ru.00, plaintexts[1].text: missing");
         QTest::newRow("address outside group")
             << sampleWith(state(QStringLiteral("address")), 0x0300)
             << QStringLiteral("groups[1].parameters[0].address: 0300h is not in group ru (0200h)");
@@ -342,7 +342,7 @@ private slots:
                                      .at(0);
         QTest::newRow("duplicate parameter")
             << sampleWith({ QStringLiteral("groups"), 1, QStringLiteral("parameters"), 1 }, first)
-            << QStringLiteral("groups[1].parameters[1].address: 0200h appears twice");
+            << QStringLiteral("ru.00, address: 0200h appears twice");
         // Found by fuzz_parameterfile: such a file loaded, and saved with ids it refuses.
         QTest::newRow("group id with a tab")
             << sampleWith({ QStringLiteral("groups"), 0, QStringLiteral("id") },
@@ -361,7 +361,7 @@ private slots:
             << QStringLiteral("groups[0].name: expected a string");
         QTest::newRow("setProgrammable text")
             << sampleWith(state(QStringLiteral("setProgrammable")), QStringLiteral("yes"))
-            << QStringLiteral("groups[1].parameters[0].setProgrammable: expected true or false");
+            << QStringLiteral("ru.00, setProgrammable: expected true or false");
     }
 
     void hostileInputIsRefusedWithItsPlace()
@@ -402,27 +402,31 @@ private slots:
         const QByteArray maxBelowMin = exampleWith("\"max\": 32000", "\"max\": -32001");
         QTest::newRow("max below min")
             << maxBelowMin
-            << QStringLiteral("groups[0].parameters[0].max: -32001 is below min -32000")
+            << QStringLiteral("ru.03, max: -32001 is below min -32000")
             << placeOf(maxBelowMin, "\"max\"");
         const QByteArray defaultAbove = exampleWith("\"default\": 0", "\"default\": 32001");
         QTest::newRow("default above constant max")
             << defaultAbove
-            << QStringLiteral("groups[0].parameters[0].default: 32001 is outside min..max "
+            << QStringLiteral("ru.03, default: 32001 is outside min..max "
                               "(-32000..32000)")
             << placeOf(defaultAbove, "\"default\"");
         const QByteArray defaultBelow = exampleWith("\"default\": 0", "\"default\": -32001");
         QTest::newRow("default below constant min")
             << defaultBelow
-            << QStringLiteral("groups[0].parameters[0].default: -32001 is outside min..max")
+            << QStringLiteral("ru.03, default: -32001 is outside min..max")
             << placeOf(defaultBelow, "\"default\"");
         // The reader's other faults name their line too: the field, or the object lacking it.
         const QByteArray minText = exampleWith("\"min\": -32000", "\"min\": \"low\"");
         QTest::newRow("wrong type")
-            << minText << QStringLiteral("groups[0].parameters[0].min: expected an integer")
+            << minText << QStringLiteral("ru.03, min: expected an integer")
             << placeOf(minText, "\"min\"");
         const QByteArray noName = exampleWith("\"name\": \"Actual frequency\",", "");
+        const QByteArray valueText = exampleWith("\"values\": [-4180]", "\"values\": [\"x\"]");
+        QTest::newRow("value not a number")
+            << valueText << QStringLiteral("ru.03, set 0: expected an integer")
+            << placeOf(valueText, "\"x\"");
         QTest::newRow("missing field")
-            << noName << QStringLiteral("groups[0].parameters[0].name: missing")
+            << noName << QStringLiteral("ru.03, name: missing")
             << placeOf(noName, "{", noName.indexOf("\"parameters\""));
     }
 
