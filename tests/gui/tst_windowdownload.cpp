@@ -13,6 +13,7 @@
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QStatusBar>
 #include <QTreeWidget>
 
@@ -196,6 +197,36 @@ private slots:
         dialog()->reject();
         QTRY_VERIFY(!dialog());
         QCOMPARE(onDrive(kFixedSpeed1, 4), 100);
+    }
+
+    // The drive stops answering while the values are on their way: none is answered, yet any
+    // may have reached it, so the table does not go on showing what it read before as what the
+    // drive holds: it reads the drive again all the same.
+    void aDownloadWithoutAnswersReadsTheDriveAgain()
+    {
+        SimulationOptions options;
+        options.replyLatencyUs = 0;
+        ServedDrive server(Protocol::Hsp5, options);
+        QString error;
+        QVERIFY2(server.listen(0, &error), qPrintable(error));
+        QVERIFY(connectAndRead(*m_window, server.settings(Protocol::Hsp5)));
+        const QString file = fileWith(QStringLiteral("unanswered.json"), [](DriveDescription &d) {
+            setValue(d, kFixedSpeed1, 3, 777);
+        });
+        QVERIFY(!file.isEmpty());
+        feature()->downloadFile(file);
+        QVERIFY(planned());
+        server.setSilent(true);
+        QVERIFY(writeAndFinish());
+        const QString report = part<QPlainTextEdit>("downloadReport")->toPlainText();
+        QVERIFY2(report.startsWith(QStringLiteral("0 value")) && report.contains(QStringLiteral("no answer")),
+                 qPrintable(report));
+        QVERIFY2(m_window->statusBar()->currentMessage().contains(QStringLiteral("read again")),
+                 qPrintable(m_window->statusBar()->currentMessage()));
+        // The reading ends with its summary, whatever the silent drive left it to read.
+        const QRegularExpression summary(QStringLiteral("\\d+ value(s|\\(s\\))? read"));
+        QTRY_VERIFY_WITH_TIMEOUT(m_window->statusBar()->currentMessage().contains(summary), kWaitMs);
+        server.setSilent(false);
     }
 
     // File > Export as CSV: what the table shows, as core's CSV rule writes it.

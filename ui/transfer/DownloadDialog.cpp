@@ -238,7 +238,8 @@ void DownloadDialog::showReport(const DownloadReport &report)
                           : tr("The download did not write everything. The report says what "
                                "the drive holds."));
     m_buttons->button(QDialogButtonBox::Cancel)->setText(tr("&Close"));
-    if (report.writtenValues > 0 || !report.refused.isEmpty())
+    // A value sent without an answer (the link cut) may have reached the drive as well.
+    if (!report.written.isEmpty() || !report.refused.isEmpty() || !report.unknown.isEmpty())
         emit wrote();
 }
 
