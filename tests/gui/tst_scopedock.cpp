@@ -14,6 +14,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QFileDialog>
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
@@ -62,6 +63,46 @@ QStringList csvLines(const QString &path)
     if (!lines.isEmpty() && lines.constLast().isEmpty())
         lines.removeLast();
     return lines;
+}
+
+// Chooses `path` in the file dialog the window shows now (to open, or to save).
+bool chooseFile(MainWindow &window, QFileDialog::AcceptMode mode, const QString &path)
+{
+    QFileDialog *dialog = nullptr;
+    const bool shown = QTest::qWaitFor(
+        [&] {
+            const auto dialogs
+                = window.findChildren<QFileDialog *>(QStringLiteral("parameterFileDialog"));
+            for (QFileDialog *candidate : dialogs) {
+                if (candidate->isVisible() && candidate->acceptMode() == mode)
+                    dialog = candidate;
+            }
+            return dialog != nullptr;
+        },
+        kWaitMs);
+    if (!shown)
+        return false;
+    dialog->selectFile(path);
+    static_cast<QDialog *>(dialog)->accept(); // QFileDialog::accept() is protected
+    return true;
+}
+
+// The question before a recording is replaced, as shown now; nullptr when none is.
+QMessageBox *shownQuestion(ScopeDock &dock)
+{
+    const auto boxes = dock.findChildren<QMessageBox *>(QStringLiteral("scopeReplaceQuestion"));
+    for (QMessageBox *box : boxes) {
+        if (box->isVisible())
+            return box;
+    }
+    return nullptr;
+}
+
+QMessageBox *replaceQuestion(ScopeDock &dock)
+{
+    QMessageBox *question = nullptr;
+    QTest::qWaitFor([&] { return (question = shownQuestion(dock)) != nullptr; }, kWaitMs);
+    return question;
 }
 
 } // namespace
@@ -289,7 +330,7 @@ private slots:
         offline->trigger();
         question = dock->findChild<QMessageBox *>(QStringLiteral("scopeReplaceQuestion"));
         QVERIFY(question);
-        question->button(QMessageBox::Yes)->click();
+        question->button(QMessageBox::Discard)->click();
         QVERIFY(!offline->isEnabled()); // while it reads
         QTRY_VERIFY_WITH_TIMEOUT(offline->isEnabled(), kWaitMs);
         QVERIFY2(status(*dock).startsWith(QStringLiteral("64 ")), qPrintable(status(*dock)));
@@ -302,6 +343,73 @@ private slots:
         // Read but not saved: asked again before another read replaces them.
         offline->trigger();
         QVERIFY(dock->findChild<QMessageBox *>(QStringLiteral("scopeReplaceQuestion")));
+    }
+
+    // Record (F9) and Recording > Open Recording replace the recording shown: one held in
+    // memory only goes no sooner than the user says so (Save / Discard / Cancel, without
+    // blocking the window); a saved one goes without a question.
+    void anUnsavedRecordingIsNotReplacedUnasked()
+    {
+        m_settings.clear();
+        MainWindow window;
+        window.show();
+        QVERIFY(connectAndRead(window, simulated()));
+        auto *dock = window.findChild<ScopeDock *>();
+        window.findChild<QAction *>(QStringLiteral("scopeViewAction"))->trigger();
+        chooseSource(*dock, 0, kDcLinkVoltage);
+        QAction *record = action(*dock, "scopeRecordAction");
+        record->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(dock->recording()->buffer.count() >= 10, kWaitMs);
+        record->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(!dock->isRecording(), kWaitMs);
+        const ScopeRecording *recorded = dock->recording();
+        const qsizetype samples = recorded->buffer.count();
+
+        // Record again: asked first, and Cancel records nothing.
+        record->trigger();
+        QMessageBox *question = replaceQuestion(*dock);
+        QVERIFY(question);
+        QVERIFY(question->windowModality() != Qt::ApplicationModal);
+        QVERIFY(question->button(QMessageBox::Save) && question->button(QMessageBox::Discard));
+        QVERIFY(!record->isChecked()); // nothing records while it asks
+        question->button(QMessageBox::Cancel)->click();
+        QTRY_VERIFY(!shownQuestion(*dock));
+        QVERIFY(!dock->isRecording() && !record->isChecked());
+        QCOMPARE(dock->recording(), recorded);
+        QCOMPARE(dock->recording()->buffer.count(), samples);
+
+        // Open Recording: asked first; Save keeps it in a file, then the file to open is asked.
+        QTemporaryDir dir;
+        const QString saved = dir.filePath(QStringLiteral("kept.ddscope"));
+        action(*dock, "scopeOpenAction")->trigger();
+        question = replaceQuestion(*dock);
+        QVERIFY(question);
+        question->button(QMessageBox::Save)->click();
+        QVERIFY(chooseFile(window, QFileDialog::AcceptSave, saved));
+        QTRY_VERIFY(QFileInfo::exists(saved));
+        QCOMPARE(dock->recording(), recorded); // still shown until a file is opened
+        QVERIFY(chooseFile(window, QFileDialog::AcceptOpen, saved));
+        QTRY_VERIFY(dock->recording() != recorded);
+        QCOMPARE(dock->recording()->buffer.count(), samples);
+
+        // Opened from a file, it is saved: Record replaces it without a question.
+        record->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(dock->isRecording(), kWaitMs);
+        QVERIFY(!shownQuestion(*dock));
+        QTRY_VERIFY_WITH_TIMEOUT(dock->recording()->buffer.count() >= 10, kWaitMs);
+        record->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(!dock->isRecording(), kWaitMs);
+
+        // Recorded but not saved: Discard lets Record go ahead.
+        const ScopeRecording *second = dock->recording();
+        record->trigger();
+        question = replaceQuestion(*dock);
+        QVERIFY(question);
+        question->button(QMessageBox::Discard)->click();
+        QTRY_VERIFY_WITH_TIMEOUT(dock->isRecording(), kWaitMs);
+        QVERIFY(dock->recording() != second);
+        record->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(!dock->isRecording(), kWaitMs);
     }
 
     // HSP5 (seed 000) has no service 21: the offline records are not offered.

@@ -77,6 +77,7 @@ private:
     // ScopeDockRecording.cpp
     void toggleRecording(bool on);
     void startRecording();
+    void startRecordingNow();
     void channelsAssigned(const ScopeChannelsOutcome &outcome);
     void showAssignmentInTable(const ScopeAssignment &assignment);
     void stopRecording();
@@ -97,9 +98,13 @@ private:
     void chooseRecordingToOpen();
     void chooseRecordingFile(bool on);
     void chooseRecordingToSave();
+    // Save As, then `saved` once the recording is in the file.
+    void saveRecordingThen(const std::function<void()> &saved);
     void chooseCsv(bool visibleOnly);
     void chooseImage(bool pdf);
-    // Asks, without blocking, before an unsaved recording is replaced; `proceed` on yes.
+    // Before the recording shown is replaced: `proceed` at once when nothing unsaved would be
+    // lost; otherwise asks, without blocking, Save / Discard / Cancel, and runs `proceed` once
+    // the recording is saved or discarded. Nothing on Cancel.
     void confirmReplacing(const QString &title, const QString &text,
                           const std::function<void()> &proceed);
 

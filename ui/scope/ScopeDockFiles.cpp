@@ -37,12 +37,16 @@ void ScopeDock::chooseRecordingToOpen()
 {
     if (isRecording())
         return showStatus(tr("Stop the recording before opening another."), true);
-    m_frame.chooseFileToRead(tr("Open Scope Recording"), recordingFilter(),
-                             [this](const QString &path) {
-                                 QString error;
-                                 if (!openRecording(path, &error))
-                                     showStatus(error, true);
-                             });
+    confirmReplacing(tr("Open Scope Recording"),
+                     tr("The recording shown is not saved. The recording opened replaces it."),
+                     [this] {
+                         m_frame.chooseFileToRead(tr("Open Scope Recording"), recordingFilter(),
+                                                  [this](const QString &path) {
+                                                      QString error;
+                                                      if (!openRecording(path, &error))
+                                                          showStatus(error, true);
+                                                  });
+                     });
 }
 
 void ScopeDock::chooseRecordingFile(bool on)
@@ -70,14 +74,21 @@ void ScopeDock::chooseRecordingToSave()
         return showStatus(tr("There is nothing recorded to save."), true);
     if (isRecording())
         return showStatus(tr("Stop the recording before saving it, or use Record to File."), true);
+    saveRecordingThen({});
+}
+
+void ScopeDock::saveRecordingThen(const std::function<void()> &saved)
+{
     m_frame.chooseFileToWrite(tr("Save Scope Recording"),
                               stampedName(QLatin1String(ScopeFileFormat::kSuffix)),
-                              recordingFilter(), [this](const QString &path) {
+                              recordingFilter(), [this, saved](const QString &path) {
                                   QString error;
                                   if (!saveRecording(path, &error))
                                       return showStatus(error, true);
                                   m_unsaved = false;
                                   showStatus(tr("Saved to %1.").arg(path));
+                                  if (saved)
+                                      saved();
                               });
 }
 
@@ -126,15 +137,27 @@ void ScopeDock::chooseCsv(bool visibleOnly)
 void ScopeDock::confirmReplacing(const QString &title, const QString &text,
                                  const std::function<void()> &proceed)
 {
+    if (!m_unsaved || m_recording->buffer.count() == 0)
+        return proceed();
     auto *box = new QMessageBox(QMessageBox::Question, title, text,
-                                QMessageBox::Yes | QMessageBox::Cancel, this);
+                                QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel,
+                                this);
     box->setObjectName(QStringLiteral("scopeReplaceQuestion"));
     box->setAttribute(Qt::WA_DeleteOnClose);
-    box->button(QMessageBox::Yes)->setText(tr("&Replace"));
+    box->setInformativeText(tr("Save it first?"));
+    box->button(QMessageBox::Save)->setText(tr("&Save..."));
     box->setDefaultButton(QMessageBox::Cancel);
-    connect(box, &QMessageBox::finished, this, [box, proceed] {
-        if (box->standardButton(box->clickedButton()) == QMessageBox::Yes)
+    connect(box, &QMessageBox::finished, this, [this, box, proceed] {
+        switch (box->standardButton(box->clickedButton())) {
+        case QMessageBox::Save:
+            saveRecordingThen(proceed);
+            break;
+        case QMessageBox::Discard:
             proceed();
+            break;
+        default:
+            break;
+        }
     });
     box->open();
 }

@@ -34,6 +34,23 @@ void ScopeDock::startRecording()
 {
     if (!m_client || !m_recorder || isRecording() || m_assigning)
         return updateActions();
+    // Nothing records while the question is open: the actions show it, and a single shot
+    // asked for comes back with the answer.
+    const bool shot = m_triggerAction->isChecked();
+    m_triggerAction->setChecked(false);
+    updateActions();
+    confirmReplacing(tr("Record"),
+                     tr("The recording shown is not saved. A new recording replaces it."),
+                     [this, shot] {
+                         m_triggerAction->setChecked(shot);
+                         startRecordingNow();
+                     });
+}
+
+void ScopeDock::startRecordingNow()
+{
+    if (!m_client || !m_recorder || isRecording() || m_assigning)
+        return updateActions();
     // The sources first, written and read back: the recording shows what the drive delivers.
     m_assigning = true;
     updateActions();
@@ -241,13 +258,9 @@ void ScopeDock::readOfflineRecords()
 {
     if (!m_client || isRecording() || m_readingOffline)
         return;
-    if (m_unsaved && m_recording->buffer.count() > 0) {
-        return confirmReplacing(tr("Read Offline Records"),
-                                tr("The recording shown is not saved. The offline records "
-                                   "replace it."),
-                                [this] { readOfflineRecordsNow(); });
-    }
-    readOfflineRecordsNow();
+    confirmReplacing(tr("Read Offline Records"),
+                     tr("The recording shown is not saved. The offline records replace it."),
+                     [this] { readOfflineRecordsNow(); });
 }
 
 void ScopeDock::readOfflineRecordsNow()

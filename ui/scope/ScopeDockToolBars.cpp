@@ -78,7 +78,8 @@ void ScopeDock::buildToolBars()
     bar->addSeparator();
 
     auto *fileMenu = new QMenu(tr("Recording"), bar);
-    fileMenu->addAction(tr("Open Recording..."), this, &ScopeDock::chooseRecordingToOpen);
+    fileMenu->addAction(tr("Open Recording..."), this, &ScopeDock::chooseRecordingToOpen)
+        ->setObjectName(QStringLiteral("scopeOpenAction"));
     fileMenu->addAction(tr("Save Recording As..."), this, &ScopeDock::chooseRecordingToSave)
         ->setObjectName(QStringLiteral("scopeSaveAction"));
     m_toFileAction = fileMenu->addAction(tr("Record to File..."));
