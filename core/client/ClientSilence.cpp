@@ -7,9 +7,18 @@
 // queued fails at once (Reply::Status::DriveSilent), and from then on one request at a time
 // goes out, once, as the check whether the drive is back; the others fail at once. The first
 // byte from the drive ends it.
+//
+// A drive nobody asks anything can freeze unnoticed. With ClientOptions::idleCheckMs, once
+// nothing was sent or received for that long, one cheap request (the one the drive search asks)
+// checks the drive; its timeout counts like any request's, so a silent drive is reported within
+// idleSilenceLimitMs(). It goes out only when nothing is queued or in flight, so it never stands
+// in front of a request of the user's: HSP5 sends one alongside it at once; on DIN66019(II),
+// one request at a time, a request waits for the check's answer (milliseconds from a drive that
+// answers).
 #include "ClientWorker.h"
 
 #include "ClientTiming.h"
+#include "ValueRequests.h"
 
 #include <QLocale>
 
@@ -73,6 +82,34 @@ bool ClientWorker::failsWhileStopped(PendingRequest &request, QString *detail) c
     }
     *detail = silenceText();
     return true;
+}
+
+qint64 ClientWorker::idleMs() const
+{
+    return std::min({m_sinceLastByte.elapsed(), m_sinceLastSend.elapsed(),
+                     m_sinceConnected.elapsed()});
+}
+
+void ClientWorker::armIdleCheck()
+{
+    if (!m_idleTimer)
+        return;
+    if (m_state != DriveClient::State::Connected || !m_queue.empty() || !m_inFlight.empty()) {
+        m_idleTimer->stop(); // armed again when the line falls idle (pump() after the last)
+        return;
+    }
+    m_idleTimer->start(int(std::max<qint64>(m_options.idleCheckMs - idleMs(), 0)));
+}
+
+void ClientWorker::checkIdleLine()
+{
+    if (m_state != DriveClient::State::Connected || !m_queue.empty() || !m_inFlight.empty())
+        return;
+    if (idleMs() < m_options.idleCheckMs)
+        return armIdleCheck();
+    // Its answer, or its silence, speaks through noteHeard() and complete(): nothing to do here.
+    submitRequest(ValueRequests::presence(m_settings.protocol), {},
+                  [](const Reply &, bool) {});
 }
 
 void ClientWorker::stopAnswering()

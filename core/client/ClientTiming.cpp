@@ -89,4 +89,11 @@ int silenceLimitMs(const ConnectionSettings &settings, const ClientOptions &opti
     return timeout + kUnansweredRequestsToStop * attempts * (timeout + quietLine);
 }
 
+int idleSilenceLimitMs(const ConnectionSettings &settings, const ClientOptions &options)
+{
+    const int attempts = 1 + std::max(options.retries, 0);
+    const int quietLine = settings.protocol == Protocol::Hsp5 ? quietLineMs(settings) : 0;
+    return options.idleCheckMs + attempts * (answerTimeoutMs(settings, options) + quietLine);
+}
+
 } // namespace DriveDesk

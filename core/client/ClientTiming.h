@@ -28,6 +28,11 @@ constexpr int kUnansweredRequestsToStop = 4;
 // HSP5's quiet line before each attempt while it recovers). HSP5 at 38400 baud: 2.0 s.
 int silenceLimitMs(const ConnectionSettings &settings, const ClientOptions &options);
 
+// With ClientOptions::idleCheckMs: the longest from the moment a drive on an idle line falls
+// silent until the client reports it (driveSilentChanged): the idle time, then the check
+// spending every attempt. HSP5 at 38400 baud, checked after 2 s: 2.5 s.
+int idleSilenceLimitMs(const ConnectionSettings &settings, const ClientOptions &options);
+
 // Bits on the line per character in the protocol's character format: 11 (8E1) or 10 (7E1).
 int bitsPerCharacter(const ConnectionSettings &settings);
 

@@ -54,8 +54,14 @@ void ClientWorker::init()
     m_quietTimer = new QTimer(this);
     m_quietTimer->setSingleShot(true);
     connect(m_quietTimer, &QTimer::timeout, this, &ClientWorker::pump);
+    if (m_options.idleCheckMs > 0) {
+        m_idleTimer = new QTimer(this);
+        m_idleTimer->setSingleShot(true);
+        connect(m_idleTimer, &QTimer::timeout, this, &ClientWorker::checkIdleLine);
+    }
     m_sinceLastByte.start();
     m_sinceLastSend.start();
+    m_sinceConnected.start();
     m_clock.start();
 }
 
@@ -191,6 +197,7 @@ void ClientWorker::onLinkOpened()
 {
     if (m_state != DriveClient::State::Connecting)
         return;
+    m_sinceConnected.start();
     setState(DriveClient::State::Connected);
     emit connected();
     pump();
@@ -344,6 +351,7 @@ void ClientWorker::pump()
     } while (m_pumpAgain);
     m_pumping = false;
     armDeadlineTimer();
+    armIdleCheck();
 }
 
 quint8 ClientWorker::nextInvokeId()

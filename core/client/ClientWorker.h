@@ -130,6 +130,11 @@ private:
     // Whether `request` fails at once instead (*detail says why).
     bool failsWhileStopped(PendingRequest &request, QString *detail) const;
     QString silenceText() const;
+    // With ClientOptions::idleCheckMs: the timer runs out once the line has been idle that
+    // long, and checkIdleLine() then sends the check (ValueRequests::presence).
+    void armIdleCheck();
+    void checkIdleLine();
+    qint64 idleMs() const; // since anything was sent or received, or the connection opened
 
     // Runs the request's completion; the request itself stays where it is.
     void complete(PendingRequest &request, Reply::Status status, const Telegram *answer = nullptr,
@@ -162,8 +167,10 @@ private:
     std::vector<Request> m_inFlight; // on the wire or between attempts
     QTimer *m_deadlineTimer = nullptr;
     QTimer *m_quietTimer = nullptr; // recovery: wakes the queue once the line is quiet
+    QTimer *m_idleTimer = nullptr;  // the idle line's check; none without idleCheckMs
     QElapsedTimer m_sinceLastByte;
     QElapsedTimer m_sinceLastSend;
+    QElapsedTimer m_sinceConnected; // the idle line's check waits from the connection too
     int m_quietLineMs = 0;
     quint64 m_answersMatched = 0;
     quint64 m_receptions = 0; // chunks of bytes received from the drive

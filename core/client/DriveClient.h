@@ -23,6 +23,13 @@ struct ClientOptions {
     int timeoutMs = 0;   // 0: derived from the baud rate and the longest telegram
     int retries = 3;     // on timeout, BCC/transmission/framing errors and busy (ack 6)
     int maxInFlight = 4; // HSP5 only (the drive's limit); DIN66019(II) is always 1
+    // Once nothing was sent or received for this long, one cheap request checks that the drive
+    // still answers, so that a silent drive is reported while nobody asks it anything. 0: never
+    // (a command that ends when its work is done, and tests that count what goes on the line).
+    int idleCheckMs = 0;
+    // What the window sets: a drive frozen on an idle line is reported within 5 s
+    // (idleSilenceLimitMs()) on every line docs/client.md lists.
+    static constexpr int kInteractiveIdleCheckMs = 2000;
 };
 
 // Where a scan takes a drive's metadata from (core/parameters/MetadataCache).

@@ -18,6 +18,9 @@ drivedesk_add_test(NAME tst_baudratesearch LABELS unit integration TIMEOUT 120
 drivedesk_add_test(NAME tst_clientsilence LABELS unit integration TIMEOUT 300
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_clientsilence.cpp ${CMAKE_CURRENT_LIST_DIR}/ClientTestSupport.h
     LIBS drivedesk_client drivedesk_bus drivedesk_session drivedesk_translations)
+drivedesk_add_test(NAME tst_clientidlecheck LABELS unit integration TIMEOUT 120
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_clientidlecheck.cpp ${CMAKE_CURRENT_LIST_DIR}/ClientTestSupport.h
+    LIBS drivedesk_client drivedesk_bus drivedesk_translations)
 
 # Many seeded scans on a line that flips bits unflagged: slower than the others.
 drivedesk_add_test(NAME tst_clientnoise LABELS integration TIMEOUT 600
