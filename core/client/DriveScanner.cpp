@@ -130,9 +130,12 @@ void DriveScanner::readParameter(quint8 page, quint8 number, Service service, Se
                     apply(parameter, *answer);
                     return;
                 }
-                fail(parameter, label, reply);
-                if (!std::is_same_v<T, ParameterValue>)
+                if constexpr (std::is_same_v<T, ParameterValue>) {
+                    failValue(parameter, label, reply);
+                } else {
+                    fail(parameter, label, reply);
                     ++parameter.metadataErrors;
+                }
             },
             std::move(check));
 }

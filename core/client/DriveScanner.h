@@ -62,6 +62,8 @@ private:
         int reads = 0;
         bool recheck = false; // of an answer kept earlier: leads to nothing new
         bool secondRound = false;
+        // Given up because its plausible answers never agreed (not for want of an answer).
+        bool disagreed = false;
     };
     using Queued = std::shared_ptr<QueuedRequest>;
     // A request left unsettled in the first round, with the failure it would be reported with.
@@ -144,6 +146,10 @@ private:
         if (reply.ok() || !reply.isAnswer())
             ++item.unanswered;
     }
+    // A value's failed read: as fail(), except that a value the drive changes by itself (a live
+    // value, a counter) cannot be confirmed by reading it again on a line with errors. Left
+    // without a value and saying so, it does not leave the drive unread: it is no setting.
+    void failValue(ScanParameter &parameter, const QString &label, const Reply &reply) const;
 
     // The metadata cache (ScanCache.cpp).
     bool probeCache();
@@ -164,6 +170,9 @@ private:
     std::vector<Kept> m_kept;         // answers kept unconfirmed while the line was clean
     // Unsettled once: asked again after everything else, when a burst of noise has passed.
     std::vector<Unsettled> m_later;
+    // True while a handler runs for a request whose plausible answers never agreed: for a value
+    // the drive changes by itself that is its nature, not the line's fault (ScanValues.cpp).
+    bool m_deliveringDisagreement = false;
     std::vector<Probe> m_probes;
     int m_probesPending = 0;
     std::optional<DriveKind> m_cachedKind; // the kind whose cached metadata is used

@@ -57,8 +57,10 @@ void DriveScanner::settle(const Queued &request, const Reply &reply)
         // an error. One that already has an answer may still find a second to agree with it.
         if (!request->answers.empty() && request->reads < kMaxReads)
             return readAgain(request);
-        if (request->answers.empty())
+        if (request->answers.empty()) {
+            request->disagreed = false;
             return unsettled(request, reply);
+        }
     } else {
         QString why = reply.ok() ? implausibleAnswer(reply.response) : QString();
         if (why.isEmpty() && request->check)
@@ -79,6 +81,7 @@ void DriveScanner::settle(const Queued &request, const Reply &reply)
             return readAgain(request);
     }
     // Read as often as it may be: what came back never agreed, or could not be true.
+    request->disagreed = request->implausible.isEmpty();
     Reply failure = reply;
     failure.status = Reply::Status::Timeout;
     failure.attempts = request->reads;
@@ -127,7 +130,9 @@ void DriveScanner::deliver(const QueuedRequest &request, const Reply &reply)
         ++m_values.answered;
     else if (!request.recheck && service == Service::PlaintextIndices)
         ++m_plaintexts.answered;
+    m_deliveringDisagreement = request.disagreed && !reply.isAnswer();
     request.handle(reply);
+    m_deliveringDisagreement = false;
 }
 
 void DriveScanner::readAgain(const Queued &request)

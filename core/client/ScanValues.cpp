@@ -99,11 +99,23 @@ void DriveScanner::readSetValues(quint8 page, quint8 number, quint8 setMask)
                     readSetValues(page, number, upper);
                     return;
                 }
-                fail(parameter, label, reply);
+                failValue(parameter, label, reply);
             },
             [this, page, number](const Reply &reply) {
                 return implausibleRead(page, number, reply);
             });
+}
+
+void DriveScanner::failValue(ScanParameter &parameter, const QString &label,
+                             const Reply &reply) const
+{
+    const ParameterProperties properties(parameter.description.properties1,
+                                         parameter.description.properties2);
+    if (!m_deliveringDisagreement || !properties.isChangedByInverter())
+        return fail(parameter, label, reply);
+    parameter.errors.append(tr("%1: not confirmed: the drive changes it by itself, and on a line "
+                               "with errors no two reads agreed")
+                                .arg(label));
 }
 
 } // namespace DriveDesk

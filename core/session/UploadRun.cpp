@@ -69,8 +69,12 @@ UploadResult checkUpload(const DriveDescription &read)
         result.missing << driveGap(read.incompleteReason);
     for (const GroupDescription &group : read.groups) {
         for (const ParameterDescription &parameter : group.parameters) {
-            // What a list does not read holds its default (ParameterList::fromScan).
-            if (!ParameterList::isReadByUpload(parameter))
+            // What a list does not read holds its default (ParameterList::fromScan). A value
+            // the drive changes by itself is no setting a download restores: where it could
+            // not be confirmed, the file keeps the parameter with its error.
+            if (!ParameterList::isReadByUpload(parameter)
+                || ParameterProperties(parameter.properties1, parameter.properties2)
+                       .isChangedByInverter())
                 continue;
             const QString id = parameterId(group, parameter);
             if (!parameter.error.isEmpty()) {

@@ -11,6 +11,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <algorithm>
 #include <bit>
 #include <map>
 #include <set>
@@ -113,7 +114,12 @@ QStringList silentlyWrong(const DriveDescription &clean, const DriveDescription 
             const bool marked = !parameter.error.isEmpty();
             // A scan that calls itself complete holds only what the drive itself said: an error
             // the clean line does not give (its refusals do) is a parameter left unread.
-            if (!incomplete && parameter.error != expected->error)
+            // A live value may come out unconfirmed (no two reads agree while it moves), then
+            // without a value: no setting, so no reason to call the scan incomplete.
+            const bool unconfirmedLive = live.count(parameter.address)
+                && std::all_of(parameter.values.begin(), parameter.values.end(),
+                               [](const std::optional<qint32> &v) { return !v; });
+            if (!incomplete && parameter.error != expected->error && !unconfirmedLive)
                 wrong << QStringLiteral("%1 not read (%2) in a scan called complete")
                              .arg(id, parameter.error);
             if (parameter.name != expected->name && !(parameter.name.isEmpty() && marked))
@@ -190,9 +196,9 @@ private slots:
         QTest::addColumn<quint32>("seeds");
         // At 5 % most telegrams need several attempts: fewer seeds keep the test quick.
         QTest::newRow("hsp5 1%") << Protocol::Hsp5 << 0.01 << 20u;
-        QTest::newRow("hsp5 5%") << Protocol::Hsp5 << 0.05 << 6u;
+        QTest::newRow("hsp5 5%") << Protocol::Hsp5 << 0.05 << 4u;
         QTest::newRow("din66019ii 1%") << Protocol::Din66019II << 0.01 << 20u;
-        QTest::newRow("din66019ii 5%") << Protocol::Din66019II << 0.05 << 6u;
+        QTest::newRow("din66019ii 5%") << Protocol::Din66019II << 0.05 << 4u;
     }
     void aScanOnANoisyLineIsRightOrSaysWhatItMissed()
     {

@@ -256,6 +256,30 @@ private slots:
                  QStringLiteral("the drive could not be read to the end (link lost); nothing "
                                 "was saved"));
     }
+
+    // A live value cannot be confirmed by reading it again while it moves: a backup, which
+    // restores settings, is saved without it, and the file says why it is missing.
+    void anUnconfirmedLiveValueIsNoGap()
+    {
+        DriveDescription read;
+        GroupDescription group;
+        group.id = QStringLiteral("ru");
+        group.address = 0x0200;
+        ParameterDescription frequency;
+        frequency.address = 0x0203;
+        frequency.name = QStringLiteral("Actual frequency");
+        frequency.properties2 = 1u << 9; // changed by the inverter
+        frequency.error = QStringLiteral("value: not confirmed");
+        group.parameters = { frequency };
+        read.groups = { group };
+        const UploadResult result = checkUpload(read);
+        QVERIFY2(result.isComplete(), qPrintable(result.details().join(QLatin1Char('\n'))));
+        QCOMPARE(result.document.groups[0].parameters[0].error, frequency.error);
+
+        // A setting with the same error is a gap.
+        read.groups[0].parameters[0].properties2 = 0;
+        QCOMPARE(checkUpload(read).outcome, UploadResult::Outcome::Refused);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestUpload)
