@@ -360,6 +360,30 @@
             <numerusform>%n schreibgeschützte Werte weichen ab und werden nie geschrieben</numerusform>
         </translation>
     </message>
+    <message>
+        <source>group %1 %2</source>
+        <translation>Gruppe %1 %2</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>%1 is in the file, not on the drive</source>
+        <translation>%1 ist in der Datei, nicht im Umrichter</translation>
+    </message>
+    <message>
+        <source>%1 is on the drive, not in the file</source>
+        <translation>%1 ist im Umrichter, nicht in der Datei</translation>
+    </message>
+    <message>
+        <source>%1: %2 is %3 in the file, %4 on the drive</source>
+        <translation>%1: %2 ist %3 in der Datei, %4 im Umrichter</translation>
+    </message>
+    <message>
+        <source>the drive has no identification, and the file&apos;s metadata is not the drive&apos;s: %1</source>
+        <translation>der Umrichter hat keine Kennung, und die Metadaten der Datei sind nicht die des Umrichters: %1</translation>
+    </message>
 </context>
 <context>
     <name>DownloadReport</name>
@@ -1985,6 +2009,17 @@
         <source>group %1: %2 of %3 parameters found; no answer for %4 (%5)</source>
         <translation>Gruppe %1: %2 von %3 Parametern gefunden; keine Antwort für %4 (%5)</translation>
     </message>
+    <message numerus="yes">
+        <source>%n parameter(s) without a valid answer (%1)</source>
+        <translation>
+            <numerusform>%n Parameter ohne gültige Antwort (%1)</numerusform>
+            <numerusform>%n Parameter ohne gültige Antwort (%1)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: not confirmed: the drive changes it by itself, and on a line with errors no two reads agreed</source>
+        <translation>%1: nicht bestätigt: der Umrichter ändert den Wert selbst, und auf einer Leitung mit Fehlern stimmten keine zwei Lesungen überein</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::DriveSession</name>
@@ -3123,6 +3158,425 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::PlantDock</name>
+    <message>
+        <source>Plant</source>
+        <translation>Anlage</translation>
+    </message>
+    <message>
+        <source>No plant open. File &gt; New Plant or Open Plant.</source>
+        <translation>Keine Anlage geöffnet. Datei &gt; Neue Anlage oder Anlage öffnen.</translation>
+    </message>
+    <message>
+        <source>Find</source>
+        <translation>Suchen</translation>
+    </message>
+    <message>
+        <source>Search every link for its drives and write the addresses found into the plant file</source>
+        <translation>Jede Verbindung nach ihren Umrichtern durchsuchen und die gefundenen Adressen in die Anlagendatei schreiben</translation>
+    </message>
+    <message>
+        <source>Back Up All</source>
+        <translation>Alle sichern</translation>
+    </message>
+    <message>
+        <source>Read every drive whole and save it to its file in the backup folder</source>
+        <translation>Jeden Umrichter ganz lesen und in seiner Datei im Sicherungsordner speichern</translation>
+    </message>
+    <message>
+        <source>Verify All</source>
+        <translation>Alle prüfen</translation>
+    </message>
+    <message>
+        <source>Check every drive&apos;s settings against its file in the backup folder</source>
+        <translation>Die Einstellungen jedes Umrichters mit seiner Datei im Sicherungsordner vergleichen</translation>
+    </message>
+    <message>
+        <source>Download All...</source>
+        <translation>Alle übertragen...</translation>
+    </message>
+    <message>
+        <source>Write each drive&apos;s file to the drive, after a last look at what each would get</source>
+        <translation>Die Datei jedes Umrichters in den Umrichter schreiben, nach einem letzten Blick auf das, was jeder erhielte</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <source>Stop every link after the value on its way</source>
+        <translation>Jede Verbindung nach dem Wert anhalten, der gerade unterwegs ist</translation>
+    </message>
+    <message>
+        <source>Compare</source>
+        <translation>Vergleichen</translation>
+    </message>
+    <message>
+        <source>Read the two selected drives afresh and compare them side by side</source>
+        <translation>Die zwei gewählten Umrichter neu lesen und nebeneinander vergleichen</translation>
+    </message>
+    <message>
+        <source>Add Link...</source>
+        <translation>Verbindung hinzufügen...</translation>
+    </message>
+    <message>
+        <source>Add a link to the plant file</source>
+        <translation>Der Anlagendatei eine Verbindung hinzufügen</translation>
+    </message>
+    <message>
+        <source>Backup Folder...</source>
+        <translation>Sicherungsordner...</translation>
+    </message>
+    <message>
+        <source>Choose where the drives&apos; files are</source>
+        <translation>Wählen, wo die Dateien der Umrichter liegen</translation>
+    </message>
+    <message>
+        <source>Cannot make the folder %1.</source>
+        <translation>Der Ordner %1 kann nicht angelegt werden.</translation>
+    </message>
+    <message>
+        <source>The backup folder %1 does not exist: back the drives up first, or choose another folder.</source>
+        <translation>Der Sicherungsordner %1 existiert nicht: erst die Umrichter sichern oder einen anderen Ordner wählen.</translation>
+    </message>
+    <message>
+        <source>The backup folder %1 does not exist.</source>
+        <translation>Der Sicherungsordner %1 existiert nicht.</translation>
+    </message>
+    <message>
+        <source>A job is running on the plant shown; stop it first.</source>
+        <translation>Auf der gezeigten Anlage läuft ein Auftrag; erst anhalten.</translation>
+    </message>
+    <message>
+        <source>Backup Folder</source>
+        <translation>Sicherungsordner</translation>
+    </message>
+    <message>
+        <source>Link %1 added to %2.</source>
+        <translation>Verbindung %1 zu %2 hinzugefügt.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt; &amp;mdash; %2 &amp;mdash; backups in %3</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt; &amp;mdash; %2 &amp;mdash; Sicherungen in %3</translation>
+    </message>
+    <message>
+        <source>Plant: %1</source>
+        <translation>Anlage: %1</translation>
+    </message>
+    <message>
+        <source>%1 opens in the editor.</source>
+        <translation>%1 wird im Editor geöffnet.</translation>
+    </message>
+    <message>
+        <source>Select two drives to compare.</source>
+        <translation>Zwei Umrichter zum Vergleichen wählen.</translation>
+    </message>
+    <message>
+        <source>Searching every link for its drives...</source>
+        <translation>Jede Verbindung wird nach ihren Umrichtern durchsucht...</translation>
+    </message>
+    <message>
+        <source>Backing up every drive...</source>
+        <translation>Jeder Umrichter wird gesichert...</translation>
+    </message>
+    <message>
+        <source>Verifying every drive against its file...</source>
+        <translation>Jeder Umrichter wird mit seiner Datei verglichen...</translation>
+    </message>
+    <message>
+        <source>Reading every drive to see what a download would write...</source>
+        <translation>Jeder Umrichter wird gelesen, um zu sehen, was eine Übertragung schriebe...</translation>
+    </message>
+    <message>
+        <source>Downloading to every drive...</source>
+        <translation>Übertragung zu jedem Umrichter...</translation>
+    </message>
+    <message>
+        <source>Reading the two drives to compare...</source>
+        <translation>Die zwei Umrichter werden zum Vergleich gelesen...</translation>
+    </message>
+    <message>
+        <source>reading</source>
+        <translation>liest</translation>
+    </message>
+    <message>
+        <source>downloaded or already equal</source>
+        <translation>übertragen oder schon gleich</translation>
+    </message>
+    <message>
+        <source>Download All: Report</source>
+        <translation>Alle übertragen: Bericht</translation>
+    </message>
+    <message>
+        <source>The addresses found were written to %1.</source>
+        <translation>Die gefundenen Adressen wurden in %1 geschrieben.</translation>
+    </message>
+    <message>
+        <source>No drive would be written to: each is already equal to its file, or cannot take it (see why).</source>
+        <translation>In keinen Umrichter würde geschrieben: jeder gleicht schon seiner Datei oder kann sie nicht aufnehmen (siehe Grund).</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n drive(s) would be written to. Look at what each gets, then write.</source>
+        <translation>
+            <numerusform>In %n Umrichter würde geschrieben. Sehen Sie an, was jeder erhält, dann schreiben.</numerusform>
+            <numerusform>In %n Umrichter würde geschrieben. Sehen Sie an, was jeder erhält, dann schreiben.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Download All: Last Look</source>
+        <translation>Alle übertragen: letzter Blick</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>The drives could not be compared: %1</source>
+        <translation>Die Umrichter konnten nicht verglichen werden: %1</translation>
+    </message>
+    <message>
+        <source>%1 and %2 read; the compare window shows them side by side.</source>
+        <translation>%1 und %2 gelesen; das Vergleichsfenster zeigt sie nebeneinander.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n drive(s) %2</source>
+        <translation>
+            <numerusform>%1 von %n Umrichter %2</numerusform>
+            <numerusform>%1 von %n Umrichtern %2</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not: %1</source>
+        <translation>nicht: %1</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::PlantFeature</name>
+    <message>
+        <source>Plant files (*.json);;All files (*)</source>
+        <translation>Anlagendateien (*.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>&amp;New Plant...</source>
+        <translation>&amp;Neue Anlage...</translation>
+    </message>
+    <message>
+        <source>Name a machine and its first link, and save it as a plant file</source>
+        <translation>Eine Maschine und ihre erste Verbindung benennen und als Anlagendatei speichern</translation>
+    </message>
+    <message>
+        <source>Open &amp;Plant...</source>
+        <translation>Anla&amp;ge öffnen...</translation>
+    </message>
+    <message>
+        <source>Show a plant file&apos;s links and drives in the plant view</source>
+        <translation>Die Verbindungen und Umrichter einer Anlagendatei in der Anlagenansicht zeigen</translation>
+    </message>
+    <message>
+        <source>Open Plant</source>
+        <translation>Anlage öffnen</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent Plant</source>
+        <translation>&amp;Zuletzt geöffnete Anlagen</translation>
+    </message>
+    <message>
+        <source>Pla&amp;nt View</source>
+        <translation>An&amp;lagenansicht</translation>
+    </message>
+    <message>
+        <source>Could not open the plant: %1</source>
+        <translation>Die Anlage konnte nicht geöffnet werden: %1</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Maschine</translation>
+    </message>
+    <message>
+        <source>Save New Plant</source>
+        <translation>Neue Anlage speichern</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::PlantLinkDialog</name>
+    <message>
+        <source>New Plant</source>
+        <translation>Neue Anlage</translation>
+    </message>
+    <message>
+        <source>Add Link</source>
+        <translation>Verbindung hinzufügen</translation>
+    </message>
+    <message>
+        <source>&amp;Machine:</source>
+        <translation>&amp;Maschine:</translation>
+    </message>
+    <message>
+        <source>cabinet</source>
+        <translation>Schrank</translation>
+    </message>
+    <message>
+        <source>Names the link in reports and in the names of the drives&apos; files</source>
+        <translation>Benennt die Verbindung in Berichten und in den Dateinamen der Umrichter</translation>
+    </message>
+    <message>
+        <source>Link &amp;name:</source>
+        <translation>&amp;Name der Verbindung:</translation>
+    </message>
+    <message>
+        <source>tcp:HOST:PORT, serial:DEVICE or sim</source>
+        <translation>tcp:HOST:PORT, serial:GERÄT oder sim</translation>
+    </message>
+    <message>
+        <source>Connec&amp;t:</source>
+        <translation>&amp;Verbindung:</translation>
+    </message>
+    <message>
+        <source>&amp;Protocol:</source>
+        <translation>&amp;Protokoll:</translation>
+    </message>
+    <message>
+        <source>the protocol&apos;s default</source>
+        <translation>Vorgabe des Protokolls</translation>
+    </message>
+    <message>
+        <source>&amp;Baud rate:</source>
+        <translation>&amp;Baudrate:</translation>
+    </message>
+    <message>
+        <source>2, 5, 9; empty: search the bus</source>
+        <translation>2, 5, 9; leer: den Bus durchsuchen</translation>
+    </message>
+    <message>
+        <source>DIN66019(II): the drive addresses on the bus. HSP5 has one drive a line and no addresses.</source>
+        <translation>DIN66019(II): die Umrichteradressen am Bus. HSP5 hat einen Umrichter je Leitung und keine Adressen.</translation>
+    </message>
+    <message>
+        <source>&amp;Addresses:</source>
+        <translation>&amp;Adressen:</translation>
+    </message>
+    <message>
+        <source>The baud rate &apos;%1&apos; is not a whole number.</source>
+        <translation>Die Baudrate &apos;%1&apos; ist keine ganze Zahl.</translation>
+    </message>
+    <message>
+        <source>The address &apos;%1&apos; is not a whole number.</source>
+        <translation>Die Adresse &apos;%1&apos; ist keine ganze Zahl.</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::PlantModel</name>
+    <message>
+        <source>not searched</source>
+        <translation>nicht gesucht</translation>
+    </message>
+    <message>
+        <source>answering</source>
+        <translation>antwortet</translation>
+    </message>
+    <message>
+        <source>unreachable</source>
+        <translation>nicht erreichbar</translation>
+    </message>
+    <message>
+        <source>, %1 baud</source>
+        <translation>, %1 Baud</translation>
+    </message>
+    <message>
+        <source>%1 on %2%3</source>
+        <translation>%1 über %2%3</translation>
+    </message>
+    <message>
+        <source>Double-click to open the drive in the editor</source>
+        <translation>Doppelklick öffnet den Umrichter im Editor</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message numerus="yes">
+        <source>differs from its file: %n setting(s)</source>
+        <translation>
+            <numerusform>weicht von seiner Datei ab: %n Einstellung</numerusform>
+            <numerusform>weicht von seiner Datei ab: %n Einstellungen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>saved, %n parameter(s)</source>
+        <translation>
+            <numerusform>gesichert, %n Parameter</numerusform>
+            <numerusform>gesichert, %n Parameter</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source> set %1</source>
+        <translation> Satz %1</translation>
+    </message>
+    <message>
+        <source>%1 %2%3: file %4, drive %5</source>
+        <translation>%1 %2%3: Datei %4, Umrichter %5</translation>
+    </message>
+    <message>
+        <source>%1 %2: %3</source>
+        <translation>%1 %2: %3</translation>
+    </message>
+    <message>
+        <source>only in the file</source>
+        <translation>nur in der Datei</translation>
+    </message>
+    <message>
+        <source>only on the drive</source>
+        <translation>nur im Umrichter</translation>
+    </message>
+    <message>
+        <source>Link / drive</source>
+        <translation>Verbindung / Umrichter</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Identification</source>
+        <translation>Kennung</translation>
+    </message>
+    <message>
+        <source>Last backup</source>
+        <translation>Letzte Sicherung</translation>
+    </message>
+    <message>
+        <source>Last result</source>
+        <translation>Letztes Ergebnis</translation>
+    </message>
+    <message>
+        <source>Progress</source>
+        <translation>Fortschritt</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::PlantReportDialog</name>
+    <message>
+        <source>Drive</source>
+        <translation>Umrichter</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Ergebnis</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>&amp;Write to the Drives</source>
+        <translation>In die Umrichter &amp;schreiben</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::PlantRun</name>
     <message>
         <source>cannot connect: %1</source>
@@ -3175,6 +3629,10 @@
     <message>
         <source>not everything was written; the report says what the drive holds</source>
         <translation>nicht alles wurde geschrieben; der Bericht sagt, was der Umrichter enthält</translation>
+    </message>
+    <message>
+        <source>the file&apos;s metadata is not the drive&apos;s: %1</source>
+        <translation>die Metadaten der Datei sind nicht die des Umrichters: %1</translation>
     </message>
 </context>
 <context>
@@ -3742,10 +4200,6 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
         <source>Cannot save %1: %2</source>
         <translation>%1 kann nicht gespeichert werden: %2</translation>
     </message>
-    <message>
-        <source>&amp;Replace</source>
-        <translation>&amp;Ersetzen</translation>
-    </message>
     <message numerus="yes">
         <source>Shot of %n sample(s) around the trigger.</source>
         <translation>
@@ -3764,6 +4218,22 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
     <message>
         <source>The recording shown is not saved. The offline records replace it.</source>
         <translation>Die angezeigte Aufzeichnung ist nicht gesichert. Die Offline-Aufzeichnungen ersetzen sie.</translation>
+    </message>
+    <message>
+        <source>The recording shown is not saved. The recording opened replaces it.</source>
+        <translation>Die gezeigte Aufzeichnung ist nicht gespeichert. Die geöffnete Aufzeichnung ersetzt sie.</translation>
+    </message>
+    <message>
+        <source>Save it first?</source>
+        <translation>Erst speichern?</translation>
+    </message>
+    <message>
+        <source>&amp;Save...</source>
+        <translation>&amp;Speichern...</translation>
+    </message>
+    <message>
+        <source>The recording shown is not saved. A new recording replaces it.</source>
+        <translation>Die gezeigte Aufzeichnung ist nicht gespeichert. Eine neue Aufzeichnung ersetzt sie.</translation>
     </message>
 </context>
 <context>
@@ -4263,6 +4733,41 @@ Verbindungsdialog.
     </message>
 </context>
 <context>
+    <name>MetadataMatch</name>
+    <message>
+        <source>divisor %1, multiplier %2, offset %3, flags %4h</source>
+        <translation>Teiler %1, Multiplikator %2, Offset %3, Flags %4h</translation>
+    </message>
+    <message>
+        <source>name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>properties 1</source>
+        <translation>Eigenschaften 1</translation>
+    </message>
+    <message>
+        <source>properties 2</source>
+        <translation>Eigenschaften 2</translation>
+    </message>
+    <message>
+        <source>display scaling</source>
+        <translation>Anzeigeskalierung</translation>
+    </message>
+    <message>
+        <source>lower limit</source>
+        <translation>untere Grenze</translation>
+    </message>
+    <message>
+        <source>upper limit</source>
+        <translation>obere Grenze</translation>
+    </message>
+    <message>
+        <source>id</source>
+        <translation>Kürzel</translation>
+    </message>
+</context>
+<context>
     <name>ParameterComparison</name>
     <message>
         <source>?</source>
@@ -4426,6 +4931,11 @@ Verbindungsdialog.
     <message>
         <source>%1: appears twice in one object (line %2, column %3)</source>
         <translation>%1: kommt in einem Objekt zweimal vor (Zeile %2, Spalte %3)</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <comment>a parameter id, then a set or a field of it</comment>
+        <translation>%1, %2</translation>
     </message>
 </context>
 <context>

@@ -360,6 +360,30 @@
             <numerusform>%n read-only values differ and are never written</numerusform>
         </translation>
     </message>
+    <message>
+        <source>group %1 %2</source>
+        <translation>group %1 %2</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>%1 is in the file, not on the drive</source>
+        <translation>%1 is in the file, not on the drive</translation>
+    </message>
+    <message>
+        <source>%1 is on the drive, not in the file</source>
+        <translation>%1 is on the drive, not in the file</translation>
+    </message>
+    <message>
+        <source>%1: %2 is %3 in the file, %4 on the drive</source>
+        <translation>%1: %2 is %3 in the file, %4 on the drive</translation>
+    </message>
+    <message>
+        <source>the drive has no identification, and the file&apos;s metadata is not the drive&apos;s: %1</source>
+        <translation>the drive has no identification, and the file&apos;s metadata is not the drive&apos;s: %1</translation>
+    </message>
 </context>
 <context>
     <name>DownloadReport</name>
@@ -1985,6 +2009,17 @@
         <source>group %1: %2 of %3 parameters found; no answer for %4 (%5)</source>
         <translation>group %1: %2 of %3 parameters found; no answer for %4 (%5)</translation>
     </message>
+    <message numerus="yes">
+        <source>%n parameter(s) without a valid answer (%1)</source>
+        <translation>
+            <numerusform>%n parameter without a valid answer (%1)</numerusform>
+            <numerusform>%n parameters without a valid answer (%1)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: not confirmed: the drive changes it by itself, and on a line with errors no two reads agreed</source>
+        <translation>%1: not confirmed: the drive changes it by itself, and on a line with errors no two reads agreed</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::DriveSession</name>
@@ -3123,6 +3158,425 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::PlantDock</name>
+    <message>
+        <source>Plant</source>
+        <translation>Plant</translation>
+    </message>
+    <message>
+        <source>No plant open. File &gt; New Plant or Open Plant.</source>
+        <translation>No plant open. File &gt; New Plant or Open Plant.</translation>
+    </message>
+    <message>
+        <source>Find</source>
+        <translation>Find</translation>
+    </message>
+    <message>
+        <source>Search every link for its drives and write the addresses found into the plant file</source>
+        <translation>Search every link for its drives and write the addresses found into the plant file</translation>
+    </message>
+    <message>
+        <source>Back Up All</source>
+        <translation>Back Up All</translation>
+    </message>
+    <message>
+        <source>Read every drive whole and save it to its file in the backup folder</source>
+        <translation>Read every drive whole and save it to its file in the backup folder</translation>
+    </message>
+    <message>
+        <source>Verify All</source>
+        <translation>Verify All</translation>
+    </message>
+    <message>
+        <source>Check every drive&apos;s settings against its file in the backup folder</source>
+        <translation>Check every drive&apos;s settings against its file in the backup folder</translation>
+    </message>
+    <message>
+        <source>Download All...</source>
+        <translation>Download All...</translation>
+    </message>
+    <message>
+        <source>Write each drive&apos;s file to the drive, after a last look at what each would get</source>
+        <translation>Write each drive&apos;s file to the drive, after a last look at what each would get</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stop</translation>
+    </message>
+    <message>
+        <source>Stop every link after the value on its way</source>
+        <translation>Stop every link after the value on its way</translation>
+    </message>
+    <message>
+        <source>Compare</source>
+        <translation>Compare</translation>
+    </message>
+    <message>
+        <source>Read the two selected drives afresh and compare them side by side</source>
+        <translation>Read the two selected drives afresh and compare them side by side</translation>
+    </message>
+    <message>
+        <source>Add Link...</source>
+        <translation>Add Link...</translation>
+    </message>
+    <message>
+        <source>Add a link to the plant file</source>
+        <translation>Add a link to the plant file</translation>
+    </message>
+    <message>
+        <source>Backup Folder...</source>
+        <translation>Backup Folder...</translation>
+    </message>
+    <message>
+        <source>Choose where the drives&apos; files are</source>
+        <translation>Choose where the drives&apos; files are</translation>
+    </message>
+    <message>
+        <source>Cannot make the folder %1.</source>
+        <translation>Cannot make the folder %1.</translation>
+    </message>
+    <message>
+        <source>The backup folder %1 does not exist: back the drives up first, or choose another folder.</source>
+        <translation>The backup folder %1 does not exist: back the drives up first, or choose another folder.</translation>
+    </message>
+    <message>
+        <source>The backup folder %1 does not exist.</source>
+        <translation>The backup folder %1 does not exist.</translation>
+    </message>
+    <message>
+        <source>A job is running on the plant shown; stop it first.</source>
+        <translation>A job is running on the plant shown; stop it first.</translation>
+    </message>
+    <message>
+        <source>Backup Folder</source>
+        <translation>Backup Folder</translation>
+    </message>
+    <message>
+        <source>Link %1 added to %2.</source>
+        <translation>Link %1 added to %2.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt; &amp;mdash; %2 &amp;mdash; backups in %3</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt; &amp;mdash; %2 &amp;mdash; backups in %3</translation>
+    </message>
+    <message>
+        <source>Plant: %1</source>
+        <translation>Plant: %1</translation>
+    </message>
+    <message>
+        <source>%1 opens in the editor.</source>
+        <translation>%1 opens in the editor.</translation>
+    </message>
+    <message>
+        <source>Select two drives to compare.</source>
+        <translation>Select two drives to compare.</translation>
+    </message>
+    <message>
+        <source>Searching every link for its drives...</source>
+        <translation>Searching every link for its drives...</translation>
+    </message>
+    <message>
+        <source>Backing up every drive...</source>
+        <translation>Backing up every drive...</translation>
+    </message>
+    <message>
+        <source>Verifying every drive against its file...</source>
+        <translation>Verifying every drive against its file...</translation>
+    </message>
+    <message>
+        <source>Reading every drive to see what a download would write...</source>
+        <translation>Reading every drive to see what a download would write...</translation>
+    </message>
+    <message>
+        <source>Downloading to every drive...</source>
+        <translation>Downloading to every drive...</translation>
+    </message>
+    <message>
+        <source>Reading the two drives to compare...</source>
+        <translation>Reading the two drives to compare...</translation>
+    </message>
+    <message>
+        <source>reading</source>
+        <translation>reading</translation>
+    </message>
+    <message>
+        <source>downloaded or already equal</source>
+        <translation>downloaded or already equal</translation>
+    </message>
+    <message>
+        <source>Download All: Report</source>
+        <translation>Download All: Report</translation>
+    </message>
+    <message>
+        <source>The addresses found were written to %1.</source>
+        <translation>The addresses found were written to %1.</translation>
+    </message>
+    <message>
+        <source>No drive would be written to: each is already equal to its file, or cannot take it (see why).</source>
+        <translation>No drive would be written to: each is already equal to its file, or cannot take it (see why).</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n drive(s) would be written to. Look at what each gets, then write.</source>
+        <translation>
+            <numerusform>%n drive would be written to. Look at what each gets, then write.</numerusform>
+            <numerusform>%n drives would be written to. Look at what each gets, then write.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Download All: Last Look</source>
+        <translation>Download All: Last Look</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>The drives could not be compared: %1</source>
+        <translation>The drives could not be compared: %1</translation>
+    </message>
+    <message>
+        <source>%1 and %2 read; the compare window shows them side by side.</source>
+        <translation>%1 and %2 read; the compare window shows them side by side.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n drive(s) %2</source>
+        <translation>
+            <numerusform>%1 of %n drive %2</numerusform>
+            <numerusform>%1 of %n drives %2</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not: %1</source>
+        <translation>not: %1</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::PlantFeature</name>
+    <message>
+        <source>Plant files (*.json);;All files (*)</source>
+        <translation>Plant files (*.json);;All files (*)</translation>
+    </message>
+    <message>
+        <source>&amp;New Plant...</source>
+        <translation>&amp;New Plant...</translation>
+    </message>
+    <message>
+        <source>Name a machine and its first link, and save it as a plant file</source>
+        <translation>Name a machine and its first link, and save it as a plant file</translation>
+    </message>
+    <message>
+        <source>Open &amp;Plant...</source>
+        <translation>Open &amp;Plant...</translation>
+    </message>
+    <message>
+        <source>Show a plant file&apos;s links and drives in the plant view</source>
+        <translation>Show a plant file&apos;s links and drives in the plant view</translation>
+    </message>
+    <message>
+        <source>Open Plant</source>
+        <translation>Open Plant</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent Plant</source>
+        <translation>Open &amp;Recent Plant</translation>
+    </message>
+    <message>
+        <source>Pla&amp;nt View</source>
+        <translation>Pla&amp;nt View</translation>
+    </message>
+    <message>
+        <source>Could not open the plant: %1</source>
+        <translation>Could not open the plant: %1</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Machine</translation>
+    </message>
+    <message>
+        <source>Save New Plant</source>
+        <translation>Save New Plant</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::PlantLinkDialog</name>
+    <message>
+        <source>New Plant</source>
+        <translation>New Plant</translation>
+    </message>
+    <message>
+        <source>Add Link</source>
+        <translation>Add Link</translation>
+    </message>
+    <message>
+        <source>&amp;Machine:</source>
+        <translation>&amp;Machine:</translation>
+    </message>
+    <message>
+        <source>cabinet</source>
+        <translation>cabinet</translation>
+    </message>
+    <message>
+        <source>Names the link in reports and in the names of the drives&apos; files</source>
+        <translation>Names the link in reports and in the names of the drives&apos; files</translation>
+    </message>
+    <message>
+        <source>Link &amp;name:</source>
+        <translation>Link &amp;name:</translation>
+    </message>
+    <message>
+        <source>tcp:HOST:PORT, serial:DEVICE or sim</source>
+        <translation>tcp:HOST:PORT, serial:DEVICE or sim</translation>
+    </message>
+    <message>
+        <source>Connec&amp;t:</source>
+        <translation>Connec&amp;t:</translation>
+    </message>
+    <message>
+        <source>&amp;Protocol:</source>
+        <translation>&amp;Protocol:</translation>
+    </message>
+    <message>
+        <source>the protocol&apos;s default</source>
+        <translation>the protocol&apos;s default</translation>
+    </message>
+    <message>
+        <source>&amp;Baud rate:</source>
+        <translation>&amp;Baud rate:</translation>
+    </message>
+    <message>
+        <source>2, 5, 9; empty: search the bus</source>
+        <translation>2, 5, 9; empty: search the bus</translation>
+    </message>
+    <message>
+        <source>DIN66019(II): the drive addresses on the bus. HSP5 has one drive a line and no addresses.</source>
+        <translation>DIN66019(II): the drive addresses on the bus. HSP5 has one drive a line and no addresses.</translation>
+    </message>
+    <message>
+        <source>&amp;Addresses:</source>
+        <translation>&amp;Addresses:</translation>
+    </message>
+    <message>
+        <source>The baud rate &apos;%1&apos; is not a whole number.</source>
+        <translation>The baud rate &apos;%1&apos; is not a whole number.</translation>
+    </message>
+    <message>
+        <source>The address &apos;%1&apos; is not a whole number.</source>
+        <translation>The address &apos;%1&apos; is not a whole number.</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::PlantModel</name>
+    <message>
+        <source>not searched</source>
+        <translation>not searched</translation>
+    </message>
+    <message>
+        <source>answering</source>
+        <translation>answering</translation>
+    </message>
+    <message>
+        <source>unreachable</source>
+        <translation>unreachable</translation>
+    </message>
+    <message>
+        <source>, %1 baud</source>
+        <translation>, %1 baud</translation>
+    </message>
+    <message>
+        <source>%1 on %2%3</source>
+        <translation>%1 on %2%3</translation>
+    </message>
+    <message>
+        <source>Double-click to open the drive in the editor</source>
+        <translation>Double-click to open the drive in the editor</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message numerus="yes">
+        <source>differs from its file: %n setting(s)</source>
+        <translation>
+            <numerusform>differs from its file: %n setting</numerusform>
+            <numerusform>differs from its file: %n settings</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>saved, %n parameter(s)</source>
+        <translation>
+            <numerusform>saved, %n parameter</numerusform>
+            <numerusform>saved, %n parameters</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source> set %1</source>
+        <translation> set %1</translation>
+    </message>
+    <message>
+        <source>%1 %2%3: file %4, drive %5</source>
+        <translation>%1 %2%3: file %4, drive %5</translation>
+    </message>
+    <message>
+        <source>%1 %2: %3</source>
+        <translation>%1 %2: %3</translation>
+    </message>
+    <message>
+        <source>only in the file</source>
+        <translation>only in the file</translation>
+    </message>
+    <message>
+        <source>only on the drive</source>
+        <translation>only on the drive</translation>
+    </message>
+    <message>
+        <source>Link / drive</source>
+        <translation>Link / drive</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>State</translation>
+    </message>
+    <message>
+        <source>Identification</source>
+        <translation>Identification</translation>
+    </message>
+    <message>
+        <source>Last backup</source>
+        <translation>Last backup</translation>
+    </message>
+    <message>
+        <source>Last result</source>
+        <translation>Last result</translation>
+    </message>
+    <message>
+        <source>Progress</source>
+        <translation>Progress</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::PlantReportDialog</name>
+    <message>
+        <source>Drive</source>
+        <translation>Drive</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Result</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>&amp;Write to the Drives</source>
+        <translation>&amp;Write to the Drives</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::PlantRun</name>
     <message>
         <source>cannot connect: %1</source>
@@ -3175,6 +3629,10 @@
     <message>
         <source>not everything was written; the report says what the drive holds</source>
         <translation>not everything was written; the report says what the drive holds</translation>
+    </message>
+    <message>
+        <source>the file&apos;s metadata is not the drive&apos;s: %1</source>
+        <translation>the file&apos;s metadata is not the drive&apos;s: %1</translation>
     </message>
 </context>
 <context>
@@ -3742,10 +4200,6 @@ Home: the whole recording; End: follow the newest samples; A: fit the values; Sp
         <source>Cannot save %1: %2</source>
         <translation>Cannot save %1: %2</translation>
     </message>
-    <message>
-        <source>&amp;Replace</source>
-        <translation>&amp;Replace</translation>
-    </message>
     <message numerus="yes">
         <source>Shot of %n sample(s) around the trigger.</source>
         <translation>
@@ -3764,6 +4218,22 @@ Home: the whole recording; End: follow the newest samples; A: fit the values; Sp
     <message>
         <source>The recording shown is not saved. The offline records replace it.</source>
         <translation>The recording shown is not saved. The offline records replace it.</translation>
+    </message>
+    <message>
+        <source>The recording shown is not saved. The recording opened replaces it.</source>
+        <translation>The recording shown is not saved. The recording opened replaces it.</translation>
+    </message>
+    <message>
+        <source>Save it first?</source>
+        <translation>Save it first?</translation>
+    </message>
+    <message>
+        <source>&amp;Save...</source>
+        <translation>&amp;Save...</translation>
+    </message>
+    <message>
+        <source>The recording shown is not saved. A new recording replaces it.</source>
+        <translation>The recording shown is not saved. A new recording replaces it.</translation>
     </message>
 </context>
 <context>
@@ -4263,6 +4733,41 @@ dialog.
     </message>
 </context>
 <context>
+    <name>MetadataMatch</name>
+    <message>
+        <source>divisor %1, multiplier %2, offset %3, flags %4h</source>
+        <translation>divisor %1, multiplier %2, offset %3, flags %4h</translation>
+    </message>
+    <message>
+        <source>name</source>
+        <translation>name</translation>
+    </message>
+    <message>
+        <source>properties 1</source>
+        <translation>properties 1</translation>
+    </message>
+    <message>
+        <source>properties 2</source>
+        <translation>properties 2</translation>
+    </message>
+    <message>
+        <source>display scaling</source>
+        <translation>display scaling</translation>
+    </message>
+    <message>
+        <source>lower limit</source>
+        <translation>lower limit</translation>
+    </message>
+    <message>
+        <source>upper limit</source>
+        <translation>upper limit</translation>
+    </message>
+    <message>
+        <source>id</source>
+        <translation>id</translation>
+    </message>
+</context>
+<context>
     <name>ParameterComparison</name>
     <message>
         <source>?</source>
@@ -4426,6 +4931,11 @@ dialog.
     <message>
         <source>%1: appears twice in one object (line %2, column %3)</source>
         <translation>%1: appears twice in one object (line %2, column %3)</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <comment>a parameter id, then a set or a field of it</comment>
+        <translation>%1, %2</translation>
     </message>
 </context>
 <context>
