@@ -9,6 +9,8 @@
 #include "plant/PlantModel.h"
 #include "plant/PlantReportDialog.h"
 
+#include "Translations.h"
+
 #include <QAbstractItemModelTester>
 #include <QAction>
 #include <QApplication>
@@ -111,6 +113,11 @@ private:
 private slots:
     void initTestCase()
     {
+        // The screenshot in docs/plant.md shows the texts as a user reads them.
+        if (qEnvironmentVariableIsSet("DRIVEDESK_PLANT_SCREENSHOT")) {
+            QVERIFY(installTranslations(
+                qEnvironmentVariable("DRIVEDESK_PLANT_SCREENSHOT_LANGUAGE", QStringLiteral("en"))));
+        }
         m_settings.clear();
         QVERIFY(m_dir.isValid());
         m_cabinet = std::make_unique<ServedDrive>(Protocol::Din66019II, bus({ 2, 5 }));
