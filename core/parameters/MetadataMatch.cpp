@@ -148,4 +148,26 @@ std::optional<MetadataDifference> MetadataMatch::firstDifference(const DriveDesc
     return missing;
 }
 
+// The texts keep the context of the download, which showed them first.
+QString MetadataMatch::text(const MetadataDifference &difference)
+{
+    using Presence = MetadataDifference::Presence;
+    const QString what = difference.isGroup
+        ? QCoreApplication::translate("DownloadPlan", "group %1 %2")
+              .arg(difference.id, difference.name)
+        : QCoreApplication::translate("DownloadPlan", "%1 %2").arg(difference.id, difference.name);
+    switch (difference.presence) {
+    case Presence::OnlyInA:
+        return QCoreApplication::translate("DownloadPlan", "%1 is in the file, not on the drive")
+            .arg(what);
+    case Presence::OnlyInB:
+        return QCoreApplication::translate("DownloadPlan", "%1 is on the drive, not in the file")
+            .arg(what);
+    case Presence::Both:
+        break;
+    }
+    return QCoreApplication::translate("DownloadPlan", "%1: %2 is %3 in the file, %4 on the drive")
+        .arg(what, difference.field, difference.a, difference.b);
+}
+
 } // namespace DriveDesk

@@ -44,6 +44,10 @@ public:
     static std::optional<MetadataDifference> firstDifference(const DriveDescription &a,
                                                              const DriveDescription &b,
                                                              Scope scope = Scope::Whole);
+
+    // The difference as a download or a check names it, A being the file and B the drive:
+    // "op.28 Ramp time: upper limit is 10.00 s in the file, 5.00 s on the drive".
+    static QString text(const MetadataDifference &difference);
 };
 
 } // namespace DriveDesk

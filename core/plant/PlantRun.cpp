@@ -3,6 +3,7 @@
 #include "PlantLinkState.h"
 #include "client/FindDrivesJob.h"
 #include "parameters/DriveIdentity.h"
+#include "parameters/MetadataMatch.h"
 #include "parameters/ParameterDocument.h"
 #include "session/DownloadRun.h"
 #include "session/UploadRun.h"
@@ -293,11 +294,19 @@ void PlantRun::readDrive(LinkState &state, int address)
                     } else {
                         const auto fileKind = DriveIdentity::kind(state.file);
                         const auto driveKind = DriveIdentity::kind(result.document);
+                        // Without a kind on one side, the metadata says whether it is one.
+                        const auto difference = fileKind && driveKind
+                            ? std::nullopt
+                            : MetadataMatch::firstDifference(state.file, result.document);
                         if (fileKind && driveKind && *fileKind != *driveKind) {
                             drive.outcome = PlantDrive::Outcome::OtherKind;
                             drive.reason = tr("the file is of %1, the drive %2")
                                                .arg(DriveIdentity::summary(state.file),
                                                     DriveIdentity::summary(result.document));
+                        } else if (difference) {
+                            drive.outcome = PlantDrive::Outcome::OtherKind;
+                            drive.reason = tr("the file's metadata is not the drive's: %1")
+                                               .arg(MetadataMatch::text(*difference));
                         } else {
                             drive.differences
                                 = compareDescriptions(state.file, result.document).differences;

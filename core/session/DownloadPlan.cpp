@@ -42,24 +42,6 @@ bool hasVariableLimits(const ParameterDescription &parameter)
         || p.upperLimitType() != ParameterProperties::LimitType::Constant;
 }
 
-QString metadataDifferenceText(const MetadataDifference &difference)
-{
-    using Presence = MetadataDifference::Presence;
-    const QString what = difference.isGroup
-        ? DownloadPlan::tr("group %1 %2").arg(difference.id, difference.name)
-        : DownloadPlan::tr("%1 %2").arg(difference.id, difference.name);
-    switch (difference.presence) {
-    case Presence::OnlyInA:
-        return DownloadPlan::tr("%1 is in the file, not on the drive").arg(what);
-    case Presence::OnlyInB:
-        return DownloadPlan::tr("%1 is on the drive, not in the file").arg(what);
-    case Presence::Both:
-        break;
-    }
-    return DownloadPlan::tr("%1: %2 is %3 in the file, %4 on the drive")
-        .arg(what, difference.field, difference.a, difference.b);
-}
-
 // An identification parameter the drive has whose value was not read: its kind is unknown,
 // not absent.
 bool hasUnreadIdentification(const DriveDescription &drive)
@@ -98,7 +80,7 @@ void checkKind(const DriveDescription &file, const DriveDescription &drive, bool
         if (difference) {
             problems << DownloadPlan::tr("the drive has no identification, and the file's "
                                          "metadata is not the drive's: %1")
-                            .arg(metadataDifferenceText(*difference));
+                            .arg(MetadataMatch::text(*difference));
         }
         return;
     }

@@ -324,6 +324,14 @@ private slots:
                                                  "no identification, and the file's metadata is not the "
                                                  "drive's: In.00 ")),
                  qPrintable(run.out));
+        // A check against that file finds the same: not settings that differ, another kind.
+        run = cli({QStringLiteral("plant"), QStringLiteral("verify"), plant, directory,
+                   QStringLiteral("--quiet")});
+        QVERIFY2(run.exitCode == 1, qPrintable(explain(run)));
+        QVERIFY2(run.out.contains(QStringLiteral("cabinet-11: another kind of drive: the file's metadata "
+                                                 "is not the drive's: In.00 ")),
+                 qPrintable(run.out));
+        QVERIFY2(run.out.contains(QStringLiteral("cabinet-9: equal\n")), qPrintable(run.out));
     }
 
     // Ctrl+C while the bus is searched: every link stops, what was done is reported, the run
