@@ -12,6 +12,7 @@
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QFutureWatcher>
+#include <QStringList>
 #include <QTemporaryDir>
 #include <QTimer>
 
@@ -84,6 +85,16 @@ public:
             } else if (record.kind == TrafficRecord::Kind::Received) {
                 m_traffic.received += record.bytes.size();
             }
+            if (m_writing && m_telegrams) {
+                const QChar way = record.kind == TrafficRecord::Kind::Sent       ? u'>'
+                                : record.kind == TrafficRecord::Kind::Received ? u'<'
+                                                                               : u'!';
+                m_log << QStringLiteral("%1 ms  %2 %3  %4")
+                             .arg(m_timer.nsecsElapsed() / 1e6, 7, 'f', 2)
+                             .arg(way)
+                             .arg(record.bytes.size(), 2)
+                             .arg(record.meaning);
+            }
         });
         connect(m_client.get(), &DriveClient::connectionFailed, this, [](const QString &reason) {
             std::fprintf(stderr, "cannot connect: %s\n", qPrintable(reason));
@@ -131,6 +142,8 @@ private:
             m_timer.start();
             m_traffic = {};
             m_values = plan.valueCount();
+            m_writing = true;
+            m_log.clear();
             run->write();
         });
         connect(run, &DownloadRun::failed, this, [](const QString &reason) {
@@ -139,6 +152,9 @@ private:
         });
         connect(run, &DownloadRun::finished, this, [this, run](const DownloadReport &report) {
             print("download: write", m_values);
+            m_writing = false;
+            for (const QString &line : std::as_const(m_log))
+                std::printf("    %s\n", qPrintable(line));
             if (!report.isComplete())
                 std::printf("  INCOMPLETE:\n%s", qPrintable(report.text()));
             run->deleteLater();
@@ -178,6 +194,11 @@ private:
     QElapsedTimer m_timer;
     Traffic m_traffic;
     int m_values = 0;
+    // BENCH_TRANSFER_TELEGRAMS=1: each telegram of the write, as the client reported it, with
+    // the time it reached this thread.
+    const bool m_telegrams = qEnvironmentVariableIsSet("BENCH_TRANSFER_TELEGRAMS");
+    bool m_writing = false;
+    QStringList m_log;
 };
 
 } // namespace

@@ -109,8 +109,11 @@ void DownloadRun::onWritten()
         if (!future.isResultReadyAt(i))
             continue;
         outcomes[i] = future.resultAt(i);
-        if (outcomes[i]->connectionFailed)
-            stopReason = outcomes[i]->error;
+        // A change whose writes were answered may have lost its read-back.
+        if (outcomes[i]->connectionFailed) {
+            stopReason = outcomes[i]->error.isEmpty() ? outcomes[i]->readBackError
+                                                      : outcomes[i]->error;
+        }
     }
     if (m_stopped)
         stopReason = tr("stopped by the user");

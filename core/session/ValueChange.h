@@ -61,7 +61,10 @@ struct WriteOutcome
 
 // Sends the change's steps one after the other on `sink`, then reads back every set the drive
 // acknowledged; `stepsDone` (if given) runs once when the last step is answered, before the
-// read-back, and `done` runs once with the outcome. Thread: the sink's.
+// read-back, and `done` runs once with the outcome. Over HSP5 a step's sets are read right
+// behind its write, without waiting for its answer, so that the line carries both at once; such
+// a read counts only once the write was answered OK and only when it shows the value written,
+// else the set is read again. Thread: the sink's.
 void sendValueChange(RequestSink &sink, Protocol protocol, ValueChange change,
                      std::function<void(const WriteOutcome &)> done,
                      std::function<void()> stepsDone = {});

@@ -20,6 +20,15 @@ public:
 
     bool isPassing() const { return m_passing; }
 
+    // While gathering, what is submitted is only held: the writes of the changes started
+    // together then go on the line ahead of the read-backs that follow each of them.
+    void gather() { m_gathering = true; }
+    void release()
+    {
+        m_gathering = false;
+        pass();
+    }
+
     // Submitted and not finished, held here or on the client's queue.
     int outstanding() const { return m_onQueue + int(m_held.size()); }
 
@@ -52,7 +61,7 @@ private:
     {
         // A request that cannot be sent answers at once, and its callback may submit more:
         // the outermost call passes those on too.
-        if (m_passing)
+        if (m_passing || m_gathering)
             return;
         m_passing = true;
         while (m_onQueue < kJobRequestWindow && !m_held.empty()) {
@@ -72,6 +81,7 @@ private:
     RequestSink &m_sink;
     const std::function<void()> m_idle;
     bool m_passing = false;
+    bool m_gathering = false;
     int m_onQueue = 0;
     std::deque<Held> m_held;
 };
@@ -114,24 +124,32 @@ bool WriteChangesJob::mayStart(qsizetype index) const
 
 void WriteChangesJob::sendMore()
 {
-    // A change's callback may run at once (a request that cannot be sent answers at once):
-    // the loop below then goes on with what that callback changed, and ends the job itself.
-    if (m_sending)
+    // A change's callback may run at once (a request that cannot be sent answers at once, as
+    // the window lets it go): the loop below then goes round again with what that callback
+    // changed, and ends the job itself.
+    if (m_sending) {
+        m_sendAgain = true;
         return;
-    m_sending = true;
-    while (!isCancelled() && !isStopRequested() && !m_connectionFailed
-           && m_next < m_changes.size() && mayStart(m_next)) {
-        const qsizetype index = m_next++;
-        m_onTheWay << index;
-        m_writing << index;
-        sendValueChange(
-            *m_window, m_protocol, m_changes.at(index),
-            [this, index](const WriteOutcome &outcome) { finished(index, outcome); },
-            [this, index] {
-                m_writing.removeOne(index);
-                sendMore();
-            });
     }
+    m_sending = true;
+    do {
+        m_sendAgain = false;
+        m_window->gather();
+        while (!isCancelled() && !isStopRequested() && !m_connectionFailed
+               && m_next < m_changes.size() && mayStart(m_next)) {
+            const qsizetype index = m_next++;
+            m_onTheWay << index;
+            m_writing << index;
+            sendValueChange(
+                *m_window, m_protocol, m_changes.at(index),
+                [this, index](const WriteOutcome &outcome) { finished(index, outcome); },
+                [this, index] {
+                    m_writing.removeOne(index);
+                    sendMore();
+                });
+        }
+        m_window->release();
+    } while (m_sendAgain);
     m_sending = false;
     endIfDone();
 }

@@ -20,10 +20,11 @@ struct WriteOrder
 // Writes a list of changes, each read back; result i is the outcome of changes[i]. Over HSP5
 // changes to different parameters go on their way together, up to kJobRequestWindow requests,
 // so that the drive's pipeline stays full, as far as each change's WriteOrder lets them (the
-// read-backs go on meanwhile). DIN66019II (half duplex) writes one
-// change after the other. A lost connection stops the job. requestStop() sends nothing more
-// and still reports every change on its way, so that every change without a result was never
-// sent. Copying a set and downloading a parameter file both write this way.
+// read-backs go on meanwhile, each change's right behind its writes: sendValueChange()); the
+// writes of changes started together go out ahead of their read-backs. DIN66019II (half
+// duplex) writes one change after the other. A lost connection stops the job. requestStop()
+// sends nothing more and still reports every change on its way, so that every change without
+// a result was never sent. Copying a set and downloading a parameter file both write this way.
 class WriteChangesJob : public RequestJob<WriteOutcome>
 {
 public:
@@ -53,6 +54,7 @@ private:
     int m_done = 0;
     bool m_connectionFailed = false;
     bool m_sending = false;
+    bool m_sendAgain = false; // a callback asked for more while the loop was sending
 };
 
 } // namespace DriveDesk

@@ -4,6 +4,12 @@ drivedesk_add_test(NAME tst_sessionjobs LABELS unit TIMEOUT 300
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_sessionjobs.cpp
     LIBS drivedesk_session drivedesk_bus)
 
+# One change written and read back, against a sink the test answers in any order: when a
+# read-back sent before its write's answer counts.
+drivedesk_add_test(NAME tst_valuechange LABELS unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_valuechange.cpp
+    LIBS drivedesk_session)
+
 # Parameter file downloads: the plan (flags, sets, checks, order) and the report, against the
 # simulated drive, interrupted by the user and by a lost link.
 drivedesk_add_test(NAME tst_download LABELS integration TIMEOUT 300
