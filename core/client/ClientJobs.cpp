@@ -2,10 +2,7 @@
 // its future, so that cancelling the future reaches the request.
 #include "ClientWorker.h"
 
-#include "DriveScanner.h"
-
 #include <QFutureWatcher>
-#include <QPointer>
 
 namespace DriveDesk {
 
@@ -26,60 +23,12 @@ void ClientWorker::submitForFuture(const Telegram &request,
     watcher->setFuture(promise->future());
 }
 
-void ClientWorker::scan(const ScanOptions &options,
-                        std::shared_ptr<QPromise<DriveDescription>> promise)
+void ClientWorker::finishJobsEarly()
 {
-    promise->setProgressRange(0, 1000);
-    if (promise->future().isCanceled()) {
-        promise->finish();
-        return;
-    }
-    // The scanner keeps a reference to its sink: both live until the scan finished.
-    auto sink = std::make_shared<OwnedSink>(*this);
-    ScanOptions scanning = options;
-    // The switch that says the drive has DriveDesk's services also lets the scan ask service 13.
-    scanning.identificationText = scanning.identificationText || m_settings.hsp5Extensions;
-    auto *scanner = new DriveScanner(*sink, scanning, m_settings.language, this);
-    auto *watcher = new QFutureWatcher<DriveDescription>(scanner);
-    const QPointer<DriveScanner> guard(scanner);
-    connect(watcher, &QFutureWatcherBase::canceled, this, [guard] {
-        if (guard)
-            guard->cancel();
-    });
-    auto best = std::make_shared<int>(0);
-    connect(scanner, &DriveScanner::progress, this,
-            [promise, best](int done, int total, const QString &what) {
-                // The total grows as the scan learns; the bar never runs backwards.
-                const int value = total > 0 ? int(qint64(done) * 1000 / total) : 0;
-                *best = std::max(*best, std::min(value, 999));
-                promise->setProgressValueAndText(*best, what);
-            });
-    connect(scanner, &DriveScanner::finished, this,
-            [this, promise, sink, scanner](const DriveDescription &found) {
-                DriveDescription description = found;
-                if (description.protocol.isEmpty())
-                    description.protocol = protocolName(m_settings.protocol);
-                if (description.connection.isEmpty())
-                    description.connection = connectionDescription();
-                if (description.driveAddress < 0 && isDin())
-                    description.driveAddress = m_settings.driveAddress;
-                promise->setProgressValueAndText(1000, description.incompleteReason);
-                promise->addResult(description);
-                promise->finish();
-                scanner->deleteLater();
-            });
-    watcher->setFuture(promise->future());
-    m_scanners.removeAll(QPointer<DriveScanner>()); // the finished ones
-    m_scanners.append(scanner);
-    scanner->start();
-}
-
-void ClientWorker::stopScans()
-{
-    const QList<QPointer<DriveScanner>> running = m_scanners;
-    for (const QPointer<DriveScanner> &scanner : running) {
-        if (scanner)
-            scanner->cancel();
+    const std::vector<std::weak_ptr<RequestJobBase>> running = m_jobs;
+    for (const std::weak_ptr<RequestJobBase> &weak : running) {
+        if (const auto job = weak.lock())
+            job->finishEarly();
     }
 }
 
@@ -93,6 +42,8 @@ void ClientWorker::runJob(std::shared_ptr<RequestJobBase> job)
             running->cancel();
     });
     watcher->setFuture(job->untypedFuture());
+    std::erase_if(m_jobs, [](const std::weak_ptr<RequestJobBase> &j) { return j.expired(); });
+    m_jobs.push_back(job);
     RequestJobBase *const raw = job.get();
     raw->begin(*sink, [this, job, sink, watcher]() mutable {
         watcher->deleteLater();

@@ -20,7 +20,6 @@ class QTimer;
 namespace DriveDesk {
 
 class BaudRateSearch;
-class DriveScanner;
 
 // The protocol work of a DriveClient: the link, the request queue with timeouts and retries,
 // invoke ids, the DIN66019II drive selection, and the check of every answer against its
@@ -52,10 +51,9 @@ public:
     // The facade's requests: the result goes to the promise; cancelling its future drops the
     // request from the queue, or has its answer ignored when it is already on the wire.
     void submitForFuture(const Telegram &request, std::shared_ptr<QPromise<Reply>> promise);
-    void scan(const ScanOptions &options, std::shared_ptr<QPromise<DriveDescription>> promise);
-    // Ends every running scan now with what it has read (incompleteReason "cancelled"), unlike
-    // a cancelled future, which drops the result.
-    void stopScans();
+    // Every running job that can ends now with what it has (RequestJobBase::finishEarly): a
+    // scan with what it read, unlike a cancelled future, which drops the result.
+    void finishJobsEarly();
     // A job of many requests on a sink of its own, so that its cancel drops only its requests.
     void runJob(std::shared_ptr<RequestJobBase> job);
 
@@ -184,7 +182,7 @@ private:
     qint64 m_firstUnansweredMs = 0;
     int m_unansweredInARow = 0;
     bool m_driveStopped = false;
-    QList<QPointer<DriveScanner>> m_scanners; // running
+    std::vector<std::weak_ptr<RequestJobBase>> m_jobs; // running
     bool m_recovering = false;
     quint8 m_lastInvokeId = 0;
     int m_selectedDrive = -1; // DIN66019(II): the drive the last EOT selected, -1 unknown

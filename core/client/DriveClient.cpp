@@ -1,6 +1,7 @@
 #include "DriveClient.h"
 
 #include "ClientWorker.h"
+#include "ScanJob.h"
 #include "ValueRequests.h"
 
 #include <QThread>
@@ -146,18 +147,15 @@ void DriveClient::start(std::shared_ptr<RequestJobBase> job)
 void DriveClient::stopScan()
 {
     ClientWorker *worker = m_worker;
-    QMetaObject::invokeMethod(worker, [worker] { worker->stopScans(); }, Qt::QueuedConnection);
+    QMetaObject::invokeMethod(worker, [worker] { worker->finishJobsEarly(); },
+                              Qt::QueuedConnection);
 }
 
 QFuture<DriveDescription> DriveClient::scan(ScanOptions options)
 {
-    auto promise = startedPromise<DriveDescription>();
-    QFuture<DriveDescription> future = promise->future();
     ClientWorker *worker = m_worker;
-    QMetaObject::invokeMethod(
-        worker, [worker, options, promise] { worker->scan(options, promise); },
-        Qt::QueuedConnection);
-    return future;
+    return run(std::make_shared<ScanJob>(std::move(options), m_settings,
+                                         [worker] { return worker->connectionDescription(); }));
 }
 
 } // namespace DriveDesk

@@ -33,6 +33,9 @@ public:
     // for a job whose every result matters once its request was sent (a write that took effect
     // must reach the undo history). Thread: any.
     void requestStop() { m_stopRequested = true; }
+    // Ends the job now with what it has, for a job whose partial result is worth having (a scan:
+    // what it read, incompleteReason "cancelled"); others go on. Thread: the client's.
+    virtual void finishEarly() {}
 
 protected:
     virtual void start() = 0;
