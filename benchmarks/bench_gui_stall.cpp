@@ -147,7 +147,7 @@ int main(int argc, char **argv)
         window.findChild<QAction *>(QStringLiteral("pollingAction"))->setChecked(true);
         meter.start();
         QTimer::singleShot(kPollingMs, &app, [&] {
-            PollingController *polling = window.session()->pollingController();
+            auto *polling = window.findChild<PollingController *>();
             report(qPrintable(QStringLiteral("polling ru every %1 ms (%2 rounds, %3 skipped)")
                                   .arg(kPollingIntervalMs)
                                   .arg(polling->roundsCompleted())

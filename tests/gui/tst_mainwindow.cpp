@@ -291,7 +291,7 @@ private slots:
             polling->trigger();
         QTRY_VERIFY_WITH_TIMEOUT(traffic.size() > 1000, kWaitMs);
         // Polling's requests are in the traffic too once a few of its rounds came back.
-        const PollingController *rounds = m_window->session()->pollingController();
+        const PollingController *rounds = m_window->findChild<PollingController *>();
         QTRY_VERIFY_WITH_TIMEOUT(rounds->roundsCompleted() >= 3, kWaitMs);
 
         const auto decoder
@@ -403,7 +403,7 @@ private slots:
         QVERIFY2(read, qPrintable(m_window->noticeBar()->text()));
         auto *polling = m_window->findChild<QAction *>(QStringLiteral("pollingAction"));
         polling->setChecked(true);
-        PollingController *controller = m_window->session()->pollingController();
+        PollingController *controller = m_window->findChild<PollingController *>();
         QTRY_VERIFY_WITH_TIMEOUT(controller->roundsCompleted() > 0, kWaitMs);
         const QModelIndex live = m_window->model()->valueIndex(kInverterState, 0);
         QVERIFY(!live.data(ParameterModel::StaleRole).toBool());
@@ -430,6 +430,33 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(!live.data(ParameterModel::StaleRole).toBool(), kWaitMs);
         QVERIFY(!statusLabel("connectionState").contains(QStringLiteral("not answering")));
         QVERIFY(statusLabel("connectionState").startsWith(QStringLiteral("Connected")));
+        QVERIFY(m_window->isReady());
+    }
+
+    // Polling off, nobody asking the drive anything: a frozen drive does not go on reading
+    // "Connected". The client's check of the idle line finds it (within 5 s, docs/client.md).
+    void aFrozenDriveIsShownWithoutPolling()
+    {
+        SimulationOptions options;
+        options.replyLatencyUs = 0;
+        ServedDrive server(Protocol::Hsp5, options);
+        QString error;
+        QVERIFY2(server.listen(0, &error), qPrintable(error));
+        QVERIFY(connectAndRead(*m_window, server.settings(Protocol::Hsp5)));
+        auto *polling = m_window->findChild<QAction *>(QStringLiteral("pollingAction"));
+        QVERIFY(!polling->isChecked());
+        QVERIFY(statusLabel("connectionState").startsWith(QStringLiteral("Connected")));
+
+        server.setSilent(true);
+        const QString notAnswering = QStringLiteral("not answering");
+        QTRY_VERIFY_WITH_TIMEOUT(statusLabel("connectionState").contains(notAnswering), 5000);
+        QCOMPARE(m_window->noticeBar()->kind(), NoticeBar::Kind::Problem);
+        QVERIFY(m_window->noticeBar()->isVisible());
+
+        // Back: the next check is answered, and the window says so by itself.
+        server.setSilent(false);
+        QTRY_VERIFY_WITH_TIMEOUT(!statusLabel("connectionState").contains(notAnswering), kWaitMs);
+        QTRY_VERIFY_WITH_TIMEOUT(!m_window->noticeBar()->isVisible(), kWaitMs);
         QVERIFY(m_window->isReady());
     }
 

@@ -16,6 +16,9 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMenu>
+#include <QMenuBar>
+#include <QStatusBar>
+#include <QToolBar>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -223,6 +226,57 @@ private slots:
         QCOMPARE(menu->actions().size(), 2);
         for (QAction *action : menu->actions())
             QVERIFY(action->toolTip().contains(QLatin1String("starts again")));
+    }
+
+    // Where the frame and its features put their actions and fields: the menus, the toolbar
+    // and the status bar read in this order whatever makes them.
+    void theWindowsActionsAndFieldsKeepTheirPlaces()
+    {
+        MainWindow window;
+        const auto names = [](const QList<QAction *> &actions) {
+            QStringList shown;
+            for (QAction *action : actions) {
+                if (action->isSeparator())
+                    shown << QStringLiteral("|");
+                else if (!action->objectName().isEmpty())
+                    shown << action->objectName();
+                else
+                    shown << action->text().remove(QLatin1Char('&'));
+            }
+            return shown.join(QLatin1Char(' '));
+        };
+        const auto menu = [&](const char *name) {
+            for (QAction *action : window.menuBar()->actions()) {
+                if (action->text() == QLatin1String(name))
+                    return names(action->menu()->actions());
+            }
+            return QString();
+        };
+        QCOMPARE(menu("&File"),
+                 QStringLiteral("openFileAction saveFileAction saveFileAsAction | saveDriveAction "
+                                "| exportCsvAction | newPlantAction openPlantAction Open Recent "
+                                "Plant | quitAction"));
+        QCOMPARE(menu("&Drive"),
+                 QStringLiteral("connectAction disconnectAction findDrivesAction | refreshAction "
+                                "readMetadataAction | downloadAction pollingAction Polling "
+                                "Interval | driveInfoAction"));
+        QCOMPARE(menu("&Edit"),
+                 QStringLiteral("findAction | undoAction redoAction | resetAction "
+                                "writeSetsAction copySetAction | passwordAction"));
+        QCOMPARE(names(window.toolBar()->actions()),
+                 QStringLiteral("connectAction disconnectAction openFileAction saveFileAction | "
+                                "refreshAction pollingAction  | undoAction redoAction resetAction "
+                                "| passwordAction monitorAction scopeViewAction | "
+                                "driveInfoAction"));
+        QStringList fields;
+        for (QWidget *widget :
+             window.statusBar()->findChildren<QWidget *>(Qt::FindDirectChildrenOnly)) {
+            if (!widget->objectName().isEmpty())
+                fields << widget->objectName();
+        }
+        QCOMPARE(fields.join(QLatin1Char(' ')),
+                 QStringLiteral("metadataSource parameterSets refreshProgress passwordLevel "
+                                "connectionState"));
     }
 
     void findDrivesListsWhatAnswersOnTheBus()

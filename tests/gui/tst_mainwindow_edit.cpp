@@ -278,14 +278,14 @@ private slots:
         ParameterModel *model = m_window->model();
         QCOMPARE(model->value(kCalibration, 0), std::nullopt);
         QVERIFY(model->isAboveLevel(kCalibration));
-        QVERIFY(m_window->session()->accessController());
-        m_window->session()->accessController()->enterPassword(7070);
+        QVERIFY(m_window->findChild<AccessController *>());
+        m_window->findChild<AccessController *>()->enterPassword(7070);
         // No refresh asked for: the level's change reads what it opened.
         QTRY_VERIFY_WITH_TIMEOUT(model->value(kCalibration, 0).has_value(), kWaitMs);
         QCOMPARE(model->valueIndex(kCalibration, 0).data().toString(), QStringLiteral("5A5Ah"));
         QVERIFY(!model->isAboveLevel(kCalibration));
 
-        m_window->session()->accessController()->enterPassword(440);
+        m_window->findChild<AccessController *>()->enterPassword(440);
         QTRY_VERIFY_WITH_TIMEOUT(model->isAboveLevel(kCalibration), kWaitMs);
         QCOMPARE(model->valueIndex(kCalibration, 0).data(Qt::ForegroundRole).value<QColor>(),
                  QGuiApplication::palette().color(QPalette::Disabled, QPalette::Text));

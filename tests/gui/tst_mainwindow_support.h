@@ -8,6 +8,7 @@
 #include "main/ParameterView.h"
 #include "model/ParameterFilterModel.h"
 #include "model/ParameterModel.h"
+#include "transfer/SaveDriveFeature.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -147,8 +148,9 @@ template<typename T> bool waitFinished(const QFuture<T> &future)
 // read ended and a file is at `path`.
 inline bool saveDriveAndWait(MainWindow &window, const QString &path)
 {
-    return window.saveDriveToFile(path)
-        && QTest::qWaitFor([&window] { return !window.isSavingDrive(); }, kWaitMs)
+    auto *feature = window.findChild<SaveDriveFeature *>();
+    return feature && feature->saveDriveToFile(path)
+        && QTest::qWaitFor([feature] { return !feature->isSavingDrive(); }, kWaitMs)
         && QFileInfo::exists(path);
 }
 

@@ -1,6 +1,6 @@
 #include "tst_mainwindow_support.h"
 
-#include "edit/ParameterEditing.h"
+#include "main/ParameterEditing.h"
 #include "main/NoticeBar.h"
 #include "main/StartupOptions.h"
 #include "parameters/ParameterAccess.h"

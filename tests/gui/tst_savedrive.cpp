@@ -26,6 +26,8 @@ private:
     std::unique_ptr<MainWindow> m_window;
 
     QString path(const QString &name) const { return m_dir.filePath(name); }
+    SaveDriveFeature *saveDrive() const { return m_window->findChild<SaveDriveFeature *>(); }
+
     QAction *saveDriveAction() const
     {
         return m_window->findChild<QAction *>(QStringLiteral("saveDriveAction"));
@@ -51,7 +53,7 @@ private:
             return false;
         dialog->selectFile(file);
         static_cast<QDialog *>(dialog)->accept(); // QFileDialog::accept() is protected
-        return m_window->isSavingDrive();
+        return saveDrive()->isSavingDrive();
     }
 
     // The drive's parameter list as an upload reads it, past the window.
@@ -105,7 +107,7 @@ private slots:
                  qPrintable(m_window->noticeBar()->text()));
         QVERIFY(!saveDriveAction()->isEnabled());
         QVERIFY(!m_window->findChild<QAction *>(QStringLiteral("refreshAction"))->isEnabled());
-        QTRY_VERIFY_WITH_TIMEOUT(!m_window->isSavingDrive(), 120000);
+        QTRY_VERIFY_WITH_TIMEOUT(!saveDrive()->isSavingDrive(), 120000);
 
         // Whole, or nothing: never the part the table shows.
         QVERIFY2(QFileInfo::exists(file), qPrintable(statusMessage()));
@@ -153,7 +155,7 @@ private slots:
         server.setSilent(true);
         QTRY_VERIFY_WITH_TIMEOUT(speed.data(ParameterModel::StaleRole).toBool(), kWaitMs);
         const QString whileSilent = path(QStringLiteral("silent.json"));
-        QVERIFY(m_window->saveDriveToFile(whileSilent));
+        QVERIFY(saveDrive()->saveDriveToFile(whileSilent));
         QMessageBox *refusal = nullptr;
         QTRY_VERIFY_WITH_TIMEOUT(
             (refusal = m_window->findChild<QMessageBox *>(QStringLiteral("uploadRefused")))
@@ -163,7 +165,7 @@ private slots:
                      && refusal->text().contains(QStringLiteral("nothing was saved")),
                  qPrintable(refusal->text()));
         QVERIFY(!QFileInfo::exists(whileSilent));
-        QVERIFY(!m_window->isSavingDrive());
+        QVERIFY(!saveDrive()->isSavingDrive());
         refusal->accept();
 
         // Back, with a value changed that the table has not read since.
@@ -190,12 +192,12 @@ private slots:
         m_window->connectTo(settings);
         QTRY_VERIFY_WITH_TIMEOUT(m_window->isReady(), 120000);
         const QString file = path(QStringLiteral("cancelled.json"));
-        QVERIFY(m_window->saveDriveToFile(file));
+        QVERIFY(saveDrive()->saveDriveToFile(file));
         QTRY_VERIFY_WITH_TIMEOUT(noticeProgress()->value() > 100, 60000);
         QTest::mouseClick(
             m_window->noticeBar()->findChild<QPushButton *>(QStringLiteral("noticeCancel")),
             Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(!m_window->isSavingDrive(), kWaitMs);
+        QTRY_VERIFY_WITH_TIMEOUT(!saveDrive()->isSavingDrive(), kWaitMs);
         QVERIFY2(statusMessage().contains(QStringLiteral("cancelled"))
                      && statusMessage().contains(QStringLiteral("nothing was saved")),
                  qPrintable(statusMessage()));

@@ -2,8 +2,8 @@
 
 #include "CompareWindow.h"
 
-#include "edit/EditController.h"
 #include "main/DriveSession.h"
+#include "main/ParameterEditing.h"
 #include "model/ParameterModel.h"
 
 #include <QAction>
@@ -40,20 +40,21 @@ CompareWindow *CompareFeature::showCompareWindow()
 
 void CompareFeature::attach(DriveSession *session)
 {
-    if (session) {
-        // The window reads the drive again after a download, and the edit controller is idle
-        // once it has: the compare window then sees what the drive holds now.
-        connect(session->editController(), &EditController::busyChanged, this, [this](bool busy) {
-            if (!busy && m_window)
-                m_window->driveReadAgain();
-        });
-    }
+    Q_UNUSED(session)
+    m_editsBusy = false;
     if (m_window)
         m_window->updateSources();
 }
 
 void CompareFeature::updateActions()
 {
+    // The window reads the drive again after a download, and its edits are idle once it has:
+    // the compare window then sees what the drive holds now.
+    const ParameterEditing *editing = frame().session() ? frame().editing() : nullptr;
+    const bool busy = editing && editing->isBusy();
+    if (m_editsBusy && !busy && m_window)
+        m_window->driveReadAgain();
+    m_editsBusy = busy;
     if (m_window)
         m_window->updateSources();
 }

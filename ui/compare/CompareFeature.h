@@ -47,6 +47,7 @@ signals:
 private:
     QAction *m_compareAction = nullptr;
     QPointer<CompareWindow> m_window;
+    bool m_editsBusy = false; // the drive's edits were busy at the last updateActions()
 };
 
 } // namespace DriveDesk

@@ -1,3 +1,4 @@
+// CompareWindow: its sides, filters and table, and what they show.
 #include "CompareWindow.h"
 
 #include "CompareHost.h"
@@ -7,13 +8,10 @@
 #include "main/FrameSupport.h"
 #include "model/ParameterModel.h"
 #include "parameters/ParameterComparison.h"
-#include "parameters/ParameterDocument.h"
 
 #include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
-#include <QDir>
-#include <QFileInfo>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -35,17 +33,6 @@ constexpr ComparisonRow::State kStates[] = {
     ComparisonRow::State::OnlyInA, ComparisonRow::State::OnlyInB,
     ComparisonRow::State::ReadOnly, ComparisonRow::State::NotASetting,
 };
-
-QString shownPath(const QString &path)
-{
-    return QDir::toNativeSeparators(path);
-}
-
-bool samePath(const QString &a, const QString &b)
-{
-    return !a.isEmpty() && !b.isEmpty()
-        && QFileInfo(a).absoluteFilePath() == QFileInfo(b).absoluteFilePath();
-}
 
 } // namespace
 
@@ -323,117 +310,6 @@ void CompareWindow::chooseFile(bool a)
                        [this, a](const QString &path) { setSide(a, Source::File, path); });
 }
 
-std::optional<CompareWindow::Side> CompareWindow::readSide(bool a, const Side *sideA,
-                                                           QString *error) const
-{
-    const SideWidgets &widgets = a ? m_sideA : m_sideB;
-    const QString letter = a ? tr("A") : tr("B");
-    Side side;
-    side.source = sourceOf(a);
-    switch (side.source) {
-    case Source::Drive:
-        if (!m_host || !m_host->hasDrive()) {
-            *error = tr("Side %1: no drive is connected and read.").arg(letter);
-            return std::nullopt;
-        }
-        side.description = m_host->drive();
-        side.name = tr("the drive");
-        break;
-    case Source::ShownFile:
-        if (!m_host || m_host->shownFilePath().isEmpty()) {
-            *error = tr("Side %1: the window shows no parameter file.").arg(letter);
-            return std::nullopt;
-        }
-        side.path = m_host->shownFilePath();
-        side.description = m_host->shownFile();
-        side.name = tr("%1 (shown)").arg(QFileInfo(side.path).fileName());
-        break;
-    case Source::File: {
-        side.path = widgets.path->text().trimmed();
-        if (side.path.isEmpty()) {
-            *error = tr("Side %1: choose a parameter file.").arg(letter);
-            return std::nullopt;
-        }
-        QString problem;
-        const std::optional<DriveDescription> drive = ParameterDocument::load(side.path, &problem);
-        if (!drive) {
-            *error = tr("Side %1: could not read %2: %3")
-                         .arg(letter, shownPath(side.path), problem);
-            return std::nullopt;
-        }
-        side.description = *drive;
-        side.name = QFileInfo(side.path).fileName();
-        // The window's own file is compared as the window holds it, unsaved changes and all.
-        if (m_host && samePath(side.path, m_host->shownFilePath())) {
-            side.source = Source::ShownFile;
-            side.description = m_host->shownFile();
-            side.name = tr("%1 (shown)").arg(side.name);
-        }
-        break;
-    }
-    case Source::Defaults:
-        side = *sideA;
-        side.source = Source::Defaults;
-        side.description = defaultsOf(sideA->origin);
-        side.name = tr("defaults of %1").arg(sideA->name);
-        side.writable = false;
-        return side;
-    case Source::SameAsA:
-        return *sideA;
-    }
-    side.origin = side.description;
-    return side;
-}
-
-bool CompareWindow::compare()
-{
-    QString error;
-    std::optional<Side> a = readSide(true, nullptr, &error);
-    std::optional<Side> b = a ? readSide(false, &*a, &error) : std::nullopt;
-    if (!a || !b) {
-        showMessage(error);
-        return false;
-    }
-    // Against its defaults a side shows only the values a user sets, as the command line's
-    // diff does: live values and counters have no default to go back to.
-    if (b->source == Source::Defaults)
-        a->description = userSettingsOf(a->origin);
-    const bool setAgainstSet = m_setAgainstSet->isChecked();
-    const ComparisonTable table = setAgainstSet
-        ? compareSets(a->description, m_sideA.set->value(), b->description, m_sideB.set->value())
-        : compareAll(a->description, b->description);
-    m_a = a;
-    m_b = b;
-    m_model->setComparison(table, a->description, b->description);
-    QString nameA = a->name;
-    QString nameB = b->name;
-    if (setAgainstSet) {
-        nameA = tr("%1, set %2").arg(nameA).arg(m_sideA.set->value());
-        nameB = tr("%1, set %2").arg(nameB).arg(m_sideB.set->value());
-    }
-    m_model->setSideNames(nameA, nameB);
-
-    const QString group = m_groupBox->currentData().toString();
-    m_groupBox->blockSignals(true);
-    m_groupBox->clear();
-    m_groupBox->addItem(tr("All groups"), QString());
-    for (int g = 0; g < m_model->rowCount(); ++g) {
-        const QModelIndex index = m_model->index(g, 0);
-        m_groupBox->addItem(index.data().toString(),
-                            index.data(ParameterModel::GroupIdRole).toString());
-    }
-    m_groupBox->setCurrentIndex(std::max(0, m_groupBox->findData(group)));
-    m_groupBox->blockSignals(false);
-    m_filter->setGroup(m_groupBox->currentData().toString());
-
-    expandGroups();
-    updateWriteButtons();
-    showMessage(tr("Compared %1 with %2: %n value(s) differ.", nullptr,
-                   table.count(ComparisonRow::State::Different))
-                    .arg(nameA, nameB));
-    return true;
-}
-
 void CompareWindow::expandGroups()
 {
     m_view->expandAll();
@@ -458,29 +334,6 @@ void CompareWindow::updateCounts()
                            .arg(m_model->chosenRows().size()));
 }
 
-void CompareWindow::updateWriteButtons()
-{
-    const QList<ComparisonRow> chosen = m_model->chosenRows();
-    for (bool toA : { true, false }) {
-        QPushButton *button = toA ? m_writeA : m_writeB;
-        const std::optional<Side> &target = toA ? m_a : m_b;
-        const int count = int(ChosenValues::from(chosen, toA).size());
-        if (!target)
-            button->setText(toA ? tr("Write to A") : tr("Write to B"));
-        else if (toA)
-            button->setText(tr("Write %n Value(s) to A (%1)", nullptr, count).arg(target->name));
-        else
-            button->setText(tr("Write %n Value(s) to B (%1)", nullptr, count).arg(target->name));
-        bool can = target && target->writable && count > 0;
-        if (can && target->source == Source::Drive)
-            can = m_host && m_host->canWriteToDrive();
-        if (can && target->source == Source::ShownFile)
-            can = m_host && samePath(target->path, m_host->shownFilePath());
-        button->setEnabled(can);
-        button->setVisible(!target || target->writable);
-    }
-}
-
 void CompareWindow::showMessage(const QString &text)
 {
     m_message->setText(text);
@@ -503,88 +356,6 @@ void CompareWindow::showRefusals(const QString &text, const QStringList &refusal
         tr("%n value(s) were not written:", nullptr, int(refusals.size())));
     box->setDetailedText(refusals.join(QLatin1Char('\n')));
     openDialog(box);
-}
-
-void CompareWindow::writeChosen(bool toA)
-{
-    if (!m_a || !m_b)
-        return;
-    // Copies: writing compares again, which replaces both sides.
-    const Side target = toA ? *m_a : *m_b;
-    const Side source = toA ? *m_b : *m_a;
-    const QList<ChosenValue> values = ChosenValues::from(m_model->chosenRows(), toA);
-    if (values.isEmpty() || !target.writable)
-        return;
-    switch (target.source) {
-    case Source::Drive: {
-        if (!m_host || !m_host->canWriteToDrive()) {
-            showMessage(tr("Nothing written: no drive is connected that takes a download."));
-            return;
-        }
-        m_host->writeToDrive(ChosenValues::selectionFor(source.origin, values));
-        m_waitingForDrive = true;
-        showMessage(tr("%n value(s) handed to the window's download to the drive; it shows "
-                       "what it writes before it does.",
-                       nullptr, int(values.size())));
-        return;
-    }
-    case Source::ShownFile: {
-        if (!m_host || !samePath(target.path, m_host->shownFilePath())) {
-            showMessage(tr("Nothing written: the window no longer shows %1.")
-                            .arg(shownPath(target.path)));
-            return;
-        }
-        QStringList refusals;
-        const int written = m_host->writeToShownFile(values, &refusals);
-        compare();
-        showRefusals(tr("%n value(s) changed in %1 as one undoable edit of the window; save the "
-                        "file there to keep them.",
-                        nullptr, written)
-                         .arg(QFileInfo(target.path).fileName()),
-                     refusals);
-        return;
-    }
-    case Source::File:
-        writeToFile(target, values);
-        return;
-    case Source::Defaults:
-    case Source::SameAsA:
-        return; // never a side's source once read
-    }
-}
-
-void CompareWindow::driveReadAgain()
-{
-    if (!m_waitingForDrive)
-        return;
-    m_waitingForDrive = false;
-    const bool driveCompared
-        = (m_a && m_a->source == Source::Drive) || (m_b && m_b->source == Source::Drive);
-    if (driveCompared && m_host && m_host->hasDrive())
-        compare();
-}
-
-void CompareWindow::writeToFile(const Side &target, const QList<ChosenValue> &values)
-{
-    // Read again: only the chosen values change, whatever else happened to the file meanwhile.
-    QString error;
-    std::optional<DriveDescription> drive = ParameterDocument::load(target.path, &error);
-    if (!drive) {
-        showMessage(tr("Nothing written: could not read %1: %2")
-                        .arg(shownPath(target.path), error));
-        return;
-    }
-    QStringList refusals;
-    const int written = ChosenValues::apply(*drive, values, &refusals);
-    if (written > 0 && !ParameterDocument::save(target.path, *drive, &error)) {
-        showRefusals(tr("Could not save %1: %2. The file on disk is as it was.")
-                         .arg(shownPath(target.path), error),
-                     refusals);
-        return;
-    }
-    compare();
-    showRefusals(tr("%n value(s) written into %1.", nullptr, written).arg(shownPath(target.path)),
-                 refusals);
 }
 
 } // namespace DriveDesk

@@ -12,8 +12,6 @@ namespace DriveDesk {
 
 namespace {
 
-constexpr quintptr kGroupId = 0; // internal id of a group row; a value row has its group's + 1
-
 // What the parameter table searches for this parameter (ParameterRow::searchText), on each side
 // that has it: the id, the address, the name and every value as shown.
 QString searchTextOf(const ComparisonRow &row, const DriveDescription &a,
@@ -30,7 +28,7 @@ QString searchTextOf(const ComparisonRow &row, const DriveDescription &a,
 } // namespace
 
 ComparisonModel::ComparisonModel(QObject *parent)
-    : QAbstractItemModel(parent)
+    : GroupTreeModel(parent)
 { }
 
 void ComparisonModel::setComparison(const ComparisonTable &table, const DriveDescription &a,
@@ -127,34 +125,8 @@ const ComparisonRow *ComparisonModel::rowAt(const QModelIndex &index) const
 
 int ComparisonModel::tableRowAt(const QModelIndex &index) const
 {
-    if (!index.isValid() || index.internalId() == kGroupId)
-        return -1;
-    return m_groups[index.internalId() - 1].rows[index.row()];
-}
-
-QModelIndex ComparisonModel::index(int row, int column, const QModelIndex &parent) const
-{
-    if (!hasIndex(row, column, parent))
-        return {};
-    if (!parent.isValid())
-        return createIndex(row, column, kGroupId);
-    return createIndex(row, column, quintptr(parent.row()) + 1);
-}
-
-QModelIndex ComparisonModel::parent(const QModelIndex &child) const
-{
-    if (!child.isValid() || child.internalId() == kGroupId)
-        return {};
-    return createIndex(int(child.internalId() - 1), 0, kGroupId);
-}
-
-int ComparisonModel::rowCount(const QModelIndex &parent) const
-{
-    if (!parent.isValid())
-        return int(m_groups.size());
-    if (parent.internalId() != kGroupId || parent.column() != 0)
-        return 0;
-    return int(m_groups[std::size_t(parent.row())].rows.size());
+    const int group = groupOf(index);
+    return group < 0 ? -1 : m_groups[std::size_t(group)].rows[index.row()];
 }
 
 int ComparisonModel::columnCount(const QModelIndex &) const
@@ -166,7 +138,7 @@ QVariant ComparisonModel::data(const QModelIndex &index, int role) const
 {
     if (!index.isValid())
         return {};
-    if (index.internalId() == kGroupId)
+    if (isGroup(index))
         return groupData(m_groups[std::size_t(index.row())], index.column(), role);
     return rowData(tableRowAt(index), index.column(), role);
 }

@@ -1,8 +1,8 @@
 #pragma once
 
+#include "model/GroupTreeModel.h"
 #include "parameters/ParameterComparison.h"
 
-#include <QAbstractItemModel>
 #include <QList>
 
 #include <vector>
@@ -13,7 +13,7 @@ namespace DriveDesk {
 // ComparisonTable below, each with a check box where a value may be written into a side. It
 // answers ParameterModel's roles for what ParameterFilterModel reads (groups, addresses, the
 // search text), so the compare view searches as the parameter table does.
-class ComparisonModel : public QAbstractItemModel
+class ComparisonModel : public GroupTreeModel
 {
     Q_OBJECT
 public:
@@ -44,9 +44,6 @@ public:
     // only these have a check box.
     bool isChoosable(const QModelIndex &index) const;
 
-    QModelIndex index(int row, int column, const QModelIndex &parent = {}) const override;
-    QModelIndex parent(const QModelIndex &child) const override;
-    int rowCount(const QModelIndex &parent = {}) const override;
     int columnCount(const QModelIndex &parent = {}) const override;
     QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
     bool setData(const QModelIndex &index, const QVariant &value, int role = Qt::EditRole) override;
@@ -56,6 +53,13 @@ public:
 
 signals:
     void chosenChanged();
+
+protected:
+    int groupCount() const override { return int(m_groups.size()); }
+    int rowCountOf(int group) const override
+    {
+        return int(m_groups[std::size_t(group)].rows.size());
+    }
 
 private:
     struct Group

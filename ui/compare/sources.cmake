@@ -3,7 +3,9 @@
 target_sources(drivedesk_ui PRIVATE
     compare/CompareFeature.cpp compare/CompareFeature.h
     compare/CompareHost.h
-    compare/CompareWindow.cpp compare/CompareWindow.h
+    compare/ComparePaths.h
+    compare/CompareWindow.cpp compare/CompareWindowSides.cpp compare/CompareWindowWrite.cpp
+    compare/CompareWindow.h
     compare/ComparisonFilterModel.cpp compare/ComparisonFilterModel.h
     compare/ComparisonModel.cpp compare/ComparisonModel.h
 )

@@ -46,9 +46,17 @@ AccessFeature::AccessFeature(WindowFrame &frame, QObject *parent)
 void AccessFeature::attach(DriveSession *session)
 {
     m_levelLabel->clear();
+    // It holds the old session's client, which goes after this.
+    delete m_access;
+    m_access = nullptr;
     if (!session)
         return;
-    connect(session->accessController(), &AccessController::levelChanged, this,
+    m_access = new AccessController(session->client(), frame().model(), this);
+    connect(m_access, &AccessController::message, this,
+            [this](const QString &text) { frame().showMessage(text); });
+    connect(m_access, &AccessController::levelRaised, this, &AccessFeature::levelRaised);
+    connect(session, &DriveSession::ready, m_access, &AccessController::readLevel);
+    connect(m_access, &AccessController::levelChanged, this,
             [this](PasswordLevel level) {
                 m_levelLabel->setText(tr("Password level: %1")
                                           .arg(passwordLevelName(level)));
@@ -62,18 +70,18 @@ void AccessFeature::updateActions()
 
 void AccessFeature::enterPassword()
 {
-    if (!frame().isReady())
+    if (!frame().isReady() || !m_access)
         return;
-    const AccessController *access = frame().session()->accessController();
+    const AccessController *access = m_access;
     auto *dialog = new PasswordDialog(frame().frameWidget());
     dialog->setLevel(access->isLevelKnown() ? std::optional<PasswordLevel>(access->level())
                                             : std::nullopt);
     connect(dialog, &PasswordDialog::passwordEntered, this, [this, dialog](int password) {
-        if (!frame().isReady()) {
+        if (!frame().isReady() || !m_access) {
             dialog->passwordRefused(tr("not connected"));
             return;
         }
-        frame().session()->accessController()->enterPassword(password);
+        m_access->enterPassword(password);
     });
     // The session's answer reaches only a dialog that is waiting for one.
     connect(access, &AccessController::passwordAnswered, dialog,

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "DocumentValueCommand.h"
-#include "ParameterEditing.h"
+#include "main/ParameterEditing.h"
 
 #include <QHash>
 #include <QObject>

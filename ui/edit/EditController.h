@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ParameterEditing.h"
+#include "main/ParameterEditing.h"
 #include "ValueReadBatch.h"
 #include "WriteValueCommand.h"
 

@@ -1,15 +1,16 @@
 #include "EditingFeature.h"
 
-#include "ParameterEditing.h"
-#include "SetsDialog.h"
-
+#include "DocumentEditor.h"
 #include "EditController.h"
+#include "SetsDialog.h"
 
 #include "main/DriveSession.h"
 #include "main/FrameSupport.h"
 #include "main/ParameterBrowser.h"
+#include "main/ParameterEditing.h"
 #include "main/ParameterView.h"
 #include "model/ParameterModel.h"
+#include "session/ValueReads.h"
 
 #include <QAction>
 #include <QMenu>
@@ -92,9 +93,17 @@ EditingFeature::EditingFeature(WindowFrame &frame, QObject *parent)
 void EditingFeature::attach(DriveSession *session)
 {
     m_busy->hide();
+    // It holds the old session's client, which goes after this.
+    delete m_edit;
+    m_edit = nullptr;
     if (!session)
         return;
-    EditController *edit = session->editController();
+    auto *edit = new EditController(session->client(), frame().model(), frame().undoStack(), this);
+    m_edit = edit;
+    connect(edit, &EditController::message, this,
+            [this](const QString &text) { frame().showMessage(text); });
+    connect(session, &DriveSession::valuesRequested, edit, &EditController::refresh);
+    connect(session, &DriveSession::writesLost, edit, &EditController::forgetWrites);
     connect(edit, &EditController::busyChanged, this, [this](bool busy) {
         m_busy->setVisible(busy);
         frame().updateActions();
@@ -103,6 +112,30 @@ void EditingFeature::attach(DriveSession *session)
         m_busy->setRange(0, total);
         m_busy->setValue(done);
     });
+}
+
+void EditingFeature::attachFile(const QString &path)
+{
+    delete m_document;
+    m_document = nullptr;
+    if (path.isEmpty())
+        return;
+    m_document = new DocumentEditor(frame().model(), frame().undoStack(), this);
+    connect(m_document, &DocumentEditor::message, this,
+            [this](const QString &text) { frame().showMessage(text); });
+}
+
+ParameterEditing *EditingFeature::editing() const
+{
+    if (m_document)
+        return m_document;
+    return m_edit && frame().isReady() ? m_edit : nullptr;
+}
+
+void EditingFeature::readOpenedValues(PasswordLevel from, PasswordLevel to)
+{
+    if (m_edit)
+        m_edit->readAgain(valuesOpenedBy(frame().model()->description(), from, to));
 }
 
 void EditingFeature::updateActions()

@@ -1,14 +1,19 @@
 #pragma once
 
 #include "main/WindowFeature.h"
+#include "parameters/PasswordLevel.h"
 
 class QProgressBar;
 
 namespace DriveDesk {
 
+class DocumentEditor;
+class EditController;
+
 // Editing in the window, of the drive or of the parameter file open instead: undo and redo,
 // reset to default, write to several sets, copy a set, and the progress of the edit
-// controller's long jobs.
+// controller's long jobs. The drive's edits go through an EditController made for each session,
+// the file's through a DocumentEditor made for each file shown.
 class EditingFeature : public WindowFeature
 {
     Q_OBJECT
@@ -16,7 +21,12 @@ public:
     explicit EditingFeature(WindowFrame &frame, QObject *parent = nullptr);
 
     void attach(DriveSession *session) override;
+    void attachFile(const QString &path) override;
     void updateActions() override;
+    ParameterEditing *editing() const override;
+    // A higher password level opens values the drive refused until now: they are read at once,
+    // not left as "?" until the next refresh.
+    void readOpenedValues(DriveDesk::PasswordLevel from, DriveDesk::PasswordLevel to);
 
 private:
     void resetToDefault();
@@ -30,6 +40,8 @@ private:
     QAction *m_writeSetsAction = nullptr;
     QAction *m_copySetAction = nullptr;
     QProgressBar *m_busy = nullptr;
+    EditController *m_edit = nullptr; // child, of the session of the moment
+    DocumentEditor *m_document = nullptr; // child while a parameter file is shown
 };
 
 } // namespace DriveDesk

@@ -18,6 +18,7 @@ namespace {
 
 const QString kPollingKey = QStringLiteral("polling/enabled");
 const QString kIntervalKey = QStringLiteral("polling/intervalMs");
+const QString kLiveGroup = QStringLiteral("ru"); // the run display
 const int kIntervalsMs[] = { 100, 200, 500, 1000, 2000, 5000 };
 
 QString intervalText(int ms)
@@ -37,10 +38,7 @@ PollingFeature::PollingFeature(WindowFrame &frame, QObject *parent)
     m_pollingAction->setCheckable(true);
     m_pollingAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
     m_pollingAction->setToolTip(tr("Read the run display (ru) again and again"));
-    connect(m_pollingAction, &QAction::toggled, this, [this](bool on) {
-        if (DriveSession *session = this->frame().session())
-            session->setPollingWanted(on);
-    });
+    connect(m_pollingAction, &QAction::toggled, this, &PollingFeature::applyPolling);
     m_intervalGroup = new QActionGroup(this);
     for (int ms : kIntervalsMs) {
         QAction *action = m_intervalGroup->addAction(tr("Every %1").arg(intervalText(ms)));
@@ -70,10 +68,38 @@ PollingFeature::PollingFeature(WindowFrame &frame, QObject *parent)
 
 void PollingFeature::attach(DriveSession *session)
 {
+    // It holds the old session's client, which goes after this.
+    delete m_polling;
+    m_polling = nullptr;
     if (!session)
         return;
-    session->pollingController()->setIntervalMs(m_intervalMs);
-    session->setPollingWanted(m_pollingAction->isChecked());
+    m_polling = new PollingController(session->client(), frame().model(), this);
+    m_polling->setGroup(kLiveGroup);
+    m_polling->setIntervalMs(m_intervalMs);
+    connect(m_polling, &PollingController::message, this,
+            [this](const QString &text) { frame().showMessage(text); });
+    // Off at once when the link is to close or a scan starts; on again once the drive is read.
+    connect(session, &DriveSession::closing, m_polling,
+            [polling = m_polling] { polling->setEnabled(false); });
+    connect(session, &DriveSession::ready, this, &PollingFeature::applyPolling);
+    connect(session, &DriveSession::scanStarted, this, &PollingFeature::applyPolling);
+    // Back after a lost link it starts with ready(), not as soon as the link stands.
+    connect(session->client(), &DriveClient::stateChanged, this, [this](DriveClient::State state) {
+        if (state != DriveClient::State::Connected)
+            applyPolling();
+    });
+    connect(session->client(), &DriveClient::linkLost, this, &PollingFeature::applyPolling);
+    connect(session, &DriveSession::scanFinished, this, &PollingFeature::applyPolling);
+    connect(session, &DriveSession::scanDiscarded, this, &PollingFeature::applyPolling);
+    applyPolling();
+}
+
+void PollingFeature::applyPolling()
+{
+    if (!m_polling)
+        return;
+    const DriveSession *session = frame().session();
+    m_polling->setEnabled(m_pollingAction->isChecked() && session && session->isReady());
 }
 
 // Switched on without a connection it would do nothing, and say nothing: off until there is one.
@@ -100,8 +126,8 @@ void PollingFeature::setInterval(int ms)
     const int index = m_intervalBox->findData(m_intervalMs);
     if (index >= 0)
         m_intervalBox->setCurrentIndex(index);
-    if (DriveSession *session = frame().session())
-        session->pollingController()->setIntervalMs(m_intervalMs);
+    if (m_polling)
+        m_polling->setIntervalMs(m_intervalMs);
 }
 
 } // namespace DriveDesk

@@ -7,11 +7,11 @@ target_sources(drivedesk_ui PRIVATE
     edit/DocumentValueCommand.cpp edit/DocumentValueCommand.h
     edit/EditController.cpp edit/EditJobs.cpp edit/EditController.h
     edit/EditingFeature.cpp edit/EditingFeature.h
-    edit/ParameterEditing.h
     edit/PasswordDialog.cpp edit/PasswordDialog.h
     edit/PollingController.cpp edit/PollingController.h
     edit/PollingFeature.cpp edit/PollingFeature.h
     edit/SetsDialog.cpp edit/SetsDialog.h
+    edit/SetsFeature.cpp edit/SetsFeature.h
     edit/ValueReadBatch.cpp edit/ValueReadBatch.h
     edit/WriteValueCommand.cpp edit/WriteValueCommand.h
 )

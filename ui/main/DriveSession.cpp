@@ -1,16 +1,12 @@
 #include "DriveSession.h"
 
 #include "bus/LinkFactory.h"
-#include "edit/AccessController.h"
-#include "edit/EditController.h"
-#include "edit/PollingController.h"
 #include "model/ParameterModel.h"
 
 namespace DriveDesk {
 
 namespace {
 
-const QString kLiveGroup = QStringLiteral("ru");
 const QString kSetGroup = QStringLiteral("Fr");
 constexpr quint8 kActiveSetNumber = 2; // Fr.02
 constexpr quint8 kSetPointerNumber = 9; // Fr.09
@@ -18,39 +14,22 @@ constexpr quint8 kSetPointerNumber = 9; // Fr.09
 } // namespace
 
 DriveSession::DriveSession(const ConnectionSettings &settings, ParameterModel *model,
-                           QUndoStack *undoStack, QObject *parent)
+                           QObject *parent)
     : QObject(parent)
     , m_model(model)
 {
-    m_client = new DriveClient(settings, everyLink());
-    m_edit = new EditController(m_client, model, undoStack, this);
-    m_polling = new PollingController(m_client, model, this);
-    m_polling->setGroup(kLiveGroup);
-    m_access = new AccessController(m_client, model, this);
+    // A drive that freezes while the window only shows it is reported, not left "Connected".
+    ClientOptions options;
+    options.idleCheckMs = ClientOptions::kInteractiveIdleCheckMs;
+    m_client = new DriveClient(settings, everyLink(), options);
 
     connect(m_client, &DriveClient::stateChanged, this, [this](DriveClient::State state) {
-        emit stateChanged(state);
         if (m_reconnecting && state == DriveClient::State::Disconnected) {
             m_reconnecting = false;
             m_client->connectToDrive();
         }
     });
-    connect(m_client, &DriveClient::driveSilentChanged, this, &DriveSession::driveSilentChanged);
     connect(m_client, &DriveClient::connected, this, &DriveSession::onConnected);
-    connect(m_client, &DriveClient::connectionFailed, this, &DriveSession::connectionFailed);
-    connect(m_client, &DriveClient::linkLost, this, [this](const QString &reason) {
-        m_polling->setEnabled(false);
-        emit linkLost(reason);
-    });
-    connect(m_edit, &EditController::message, this, &DriveSession::message);
-    connect(m_access, &AccessController::message, this, &DriveSession::message);
-    connect(m_polling, &PollingController::message, this, &DriveSession::message);
-    // A higher level opens values the drive refused until now: they are read at once, not left
-    // as "?" until the next refresh. What a lower level closes the model greys.
-    connect(m_access, &AccessController::levelRaised, this,
-            [this](PasswordLevel from, PasswordLevel to) {
-                m_edit->readAgain(valuesOpenedBy(m_model->description(), from, to));
-            });
     connect(&m_scan, &QFutureWatcherBase::progressValueChanged, this, [this](int value) {
         emit scanProgress(value, m_scan.progressMaximum(), m_scan.progressText());
     });
@@ -65,10 +44,6 @@ DriveSession::~DriveSession()
     m_scan.disconnect(this);
     if (m_scan.isRunning())
         m_scan.cancel();
-    // The controllers hold the client: they go first.
-    delete m_access;
-    delete m_polling;
-    delete m_edit;
     delete m_client;
 }
 
@@ -91,7 +66,7 @@ void DriveSession::reconnect()
 void DriveSession::disconnectFromDrive()
 {
     cancelScan();
-    m_polling->setEnabled(false);
+    emit closing();
     m_client->disconnectFromDrive();
 }
 
@@ -106,7 +81,6 @@ void DriveSession::rescan(MetadataSource metadata)
 {
     if (m_scan.isRunning() || m_client->state() != DriveClient::State::Connected)
         return;
-    m_polling->setEnabled(false);
     ScanOptions options;
     options.metadata = metadata;
     m_scan.setFuture(m_client->scan(options));
@@ -124,15 +98,16 @@ void DriveSession::onConnected()
     // The built-in simulated drive is made anew on every connection, with its values from
     // scratch: what was written to the old one is not there to undo.
     if (settings().kind == ConnectionSettings::Kind::Simulated)
-        m_edit->forgetWrites();
+        emit writesLost();
     // A table read only in part holds parameters whose metadata never came (no limits, no
     // scaling, no properties): refreshing their values would pass them off as the drive's.
     if (!m_incompleteReason.isEmpty()) {
         rescan();
         return;
     }
-    afterRead();
-    m_edit->refresh();
+    readSetPointers();
+    emit ready();
+    emit valuesRequested();
 }
 
 void DriveSession::onScanFinished()
@@ -143,13 +118,11 @@ void DriveSession::onScanFinished()
             emit scanDiscarded(tr("the scan was cancelled"));
         else
             emit scanFinished(tr("the scan was cancelled"));
-        applyPolling();
         return;
     }
     const DriveDescription drive = future.result();
     if (!drive.incompleteReason.isEmpty() && m_described && m_incompleteReason.isEmpty()) {
         emit scanDiscarded(drive.incompleteReason);
-        applyPolling();
         return;
     }
     m_activeSet.reset();
@@ -166,15 +139,9 @@ void DriveSession::onScanFinished()
     m_described = true;
     m_incompleteReason = drive.incompleteReason;
     emit described(drive);
-    afterRead();
-    emit scanFinished(drive.incompleteReason);
-}
-
-void DriveSession::afterRead()
-{
-    m_access->readLevel();
     readSetPointers();
-    applyPolling();
+    emit ready();
+    emit scanFinished(drive.incompleteReason);
 }
 
 void DriveSession::readSetPointers()
@@ -194,16 +161,20 @@ int DriveSession::activeSet() const
     return m_activeSet ? m_model->value(*m_activeSet, 0).value_or(-1) : -1;
 }
 
-void DriveSession::setPollingWanted(bool on)
+bool DriveSession::isReady() const
 {
-    m_pollingWanted = on;
-    applyPolling();
+    return m_client->state() == DriveClient::State::Connected && m_described
+        && !m_scan.isRunning();
 }
 
-void DriveSession::applyPolling()
+void DriveSession::readValuesAgain()
 {
-    m_polling->setEnabled(m_pollingWanted && m_described && !m_scan.isRunning()
-                          && m_client->state() == DriveClient::State::Connected);
+    if (m_client->state() != DriveClient::State::Connected)
+        return;
+    if (!m_described)
+        rescan();
+    else
+        emit valuesRequested();
 }
 
 } // namespace DriveDesk

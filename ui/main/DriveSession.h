@@ -7,33 +7,26 @@
 
 #include <optional>
 
-class QUndoStack;
-
 namespace DriveDesk {
 
-class AccessController;
-class EditController;
 class ParameterModel;
-class PollingController;
 
 // One connection to one drive and the way from connecting over the scan to a filled model:
-// the client (working in its own thread) and the edit, polling and access controllers that
-// work through it. A lost link leaves the model as it is; reconnecting re-reads the values, or
-// the whole drive where the model holds it only in part. A scan that stops early never replaces
-// a complete description: the model keeps the metadata and values read before.
+// the client (working in its own thread), which the features' controllers (edits, polling, the
+// password level) work through; they follow the session's signals. A lost link leaves the model
+// as it is; reconnecting re-reads the values, or the whole drive where the model holds it only in
+// part. A scan that stops early never replaces a complete description: the model keeps the
+// metadata and values read before.
 // Lives in the GUI thread.
 class DriveSession : public QObject
 {
     Q_OBJECT
 public:
-    DriveSession(const ConnectionSettings &settings, ParameterModel *model, QUndoStack *undoStack,
+    DriveSession(const ConnectionSettings &settings, ParameterModel *model,
                  QObject *parent = nullptr);
     ~DriveSession() override;
 
     DriveClient *client() const { return m_client; }
-    EditController *editController() const { return m_edit; }
-    PollingController *pollingController() const { return m_polling; }
-    AccessController *accessController() const { return m_access; }
     const ConnectionSettings &settings() const { return m_client->settings(); }
     DriveClient::State state() const { return m_client->state(); }
     // Connected, but the drive does not answer (DriveClient::isDriveSilent()).
@@ -56,9 +49,11 @@ public:
     // missed something); empty when it is complete or there is none.
     QString incompleteReason() const { return m_incompleteReason; }
 
-    // Polling of the live values runs while this is on and the drive is connected and read.
-    void setPollingWanted(bool on);
-    bool isPollingWanted() const { return m_pollingWanted; }
+    // Connected, the model holds the drive, and no scan runs: values may be read and written.
+    bool isReady() const;
+    // Refresh: the values shown are read again (valuesRequested()); the whole drive where the
+    // model does not hold it yet.
+    void readValuesAgain();
 
     // Fr.02 (active set) and Fr.09 (set pointer) where the drive has them.
     std::optional<quint16> activeSetAddress() const { return m_activeSet; }
@@ -67,12 +62,10 @@ public:
     int activeSet() const;
 
 signals:
-    void stateChanged(DriveDesk::DriveClient::State state);
+    // The link's own signals (its state, a failed connection, a lost link, a silent drive) come
+    // from client(); these say what the session makes of them.
+    // Connected: the drive is read next (scanned, or its values read again).
     void connected();
-    void connectionFailed(const QString &reason);
-    void linkLost(const QString &reason);
-    // The drive stopped answering while the link stays open (true), or answers again.
-    void driveSilentChanged(bool silent);
     void scanStarted();
     void scanProgress(int value, int maximum, const QString &text);
     // The model holds the drive now. `drive` is the scan's result (metadata and values).
@@ -82,26 +75,30 @@ signals:
     // A re-read stopped early (`reason`): what it read is dropped, the model keeps the complete
     // description it held. Comes instead of described() and scanFinished().
     void scanDiscarded(const QString &reason);
-    void message(const QString &text);
+    // Connected and the model holds the drive, after a scan or back after a lost link: what
+    // goes with a drive read (its password level, polling) starts now.
+    void ready();
+    // The values shown are to be read from the drive again (Refresh, back after a lost link,
+    // after a download).
+    void valuesRequested();
+    // The drive holds none of what was written to it (the built-in simulated drive, made anew
+    // on every connection): the written marks and the undo history go.
+    void writesLost();
+    // The link is about to close: what runs on its own (polling) stops now.
+    void closing();
 
 private:
     void onConnected();
     void onScanFinished();
-    void afterRead();
     void readSetPointers();
-    void applyPolling();
 
-    DriveClient *m_client = nullptr; // owned; deleted after the controllers that use it
-    EditController *m_edit = nullptr;
-    PollingController *m_polling = nullptr;
-    AccessController *m_access = nullptr;
+    DriveClient *m_client = nullptr; // owned; the features drop their controllers before it goes
     ParameterModel *m_model = nullptr;
     QFutureWatcher<DriveDescription> m_scan;
     std::optional<quint16> m_activeSet;
     std::optional<quint16> m_setPointer;
     bool m_described = false;
     QString m_incompleteReason; // of the description in the model
-    bool m_pollingWanted = false;
     bool m_reconnecting = false; // reconnect(): connect once the old link is closed
 };
 

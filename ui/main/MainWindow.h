@@ -1,5 +1,6 @@
 #pragma once
 
+#include "DriveFavourites.h"
 #include "WindowFeature.h"
 
 #include "client/DriveClient.h"
@@ -18,13 +19,10 @@ class QMessageBox;
 namespace DriveDesk {
 
 class ConnectionDialog;
-class DocumentEditor;
 class DriveSession;
 class NoticeBar;
 class ParameterBrowser;
 class ParameterModel;
-class UploadRun;
-struct UploadResult;
 
 // DriveDesk's window, a frame: the parameter browser of the connected drive or of a parameter
 // file shown instead of one (one thing at a time), the connection's state where the user looks
@@ -59,21 +57,11 @@ public:
     // in a message (the file on disk is left as it was).
     bool saveParameterFile();
     bool saveParameterFileAs(const QString &path);
-    // Reads the connected drive afresh as an upload does (core's UploadRun, as
-    // `drivedesk-cli upload`) with progress and Cancel in the notice bar, and saves it to `path`
-    // once the read is whole; an incomplete read is refused with a dialog naming what is
-    // missing, and nothing is saved. What the table shows is not what is saved. False when it
-    // cannot start (no drive connected, a scan or another save on its way). The window goes on
-    // with the drive.
-    bool saveDriveToFile(const QString &path);
-    // Save Drive to File is reading the drive.
-    bool isSavingDrive() const { return !m_upload.isNull(); }
     // The parameter file shown instead of a drive, absolute; empty while none is.
     QString parameterFilePath() const override { return m_filePath; }
     // The file shown was changed since it was opened or saved (undoing back clears this).
     bool hasUnsavedChanges() const;
 
-    NoticeBar *noticeBar() const { return m_notice; }
 
     // WindowFrame
     QWidget *frameWidget() override { return this; }
@@ -81,6 +69,7 @@ public:
     QToolBar *toolBar() override { return m_toolBar; }
     void addStatusWidget(QWidget *widget) override;
     void addDock(QDockWidget *dock) override;
+    NoticeBar *noticeBar() const override { return m_notice; }
     ParameterModel *model() const override { return m_model; }
     ParameterBrowser *browser() const override { return m_browser; }
     QUndoStack *undoStack() const override { return m_undoStack; }
@@ -119,7 +108,6 @@ private:
     // MainWindowFiles.cpp
     void chooseFileToOpen();
     void chooseFileToSaveAs();
-    void chooseDriveFile();
     // `name`: a file name to suggest; empty for a dialog that opens a file.
     QFileDialog *fileDialog(const QString &title, const QString &name = {},
                            const QString &filter = {});
@@ -133,12 +121,11 @@ private:
     void confirmReplace(const QString &path, const std::function<void()> &proceed);
     void updateFileTitle();
     bool reportFileProblem(const QString &title, const QString &text);
-    void driveFileRead(const UploadResult &result, const QString &path);
     // MainWindow.cpp
     void openNextSession();
     // The session goes at once: its link closes, its undo history goes.
     void closeSession();
-    void restoreFavourites(const DriveDescription &drive, const ConnectionSettings *settings);
+    // MainWindowSession.cpp
     void onStateChanged(DriveClient::State state);
     void onScanProgress(int value, int maximum, const QString &text);
     void onScanFinished(const QString &problem);
@@ -146,11 +133,12 @@ private:
     void onLinkLost(const QString &reason);
     void onConnectionFailed(const QString &reason);
     void onDriveSilentChanged(bool silent);
-    void updateSetsLabel();
+    // MainWindow.cpp
     void reconnect();
     void disconnectFromDrive();
     void refresh();
-    void saveFavourites();
+    // A feature reads the whole drive (WindowFeature::isReadingDrive()).
+    bool isReadingDrive() const;
     void restoreSettings();
     void saveSettings();
 
@@ -160,15 +148,13 @@ private:
     ParameterBrowser *m_browser = nullptr;
     NoticeBar *m_notice = nullptr;
     DriveSession *m_session = nullptr; // owned; replaced on every connectTo()
-    DocumentEditor *m_document = nullptr; // child while a parameter file is shown, or nullptr
-    QString m_filePath; // of the parameter file shown
+    QString m_filePath; // of the parameter file shown; empty while none is
     QPointer<QMessageBox> m_unsavedQuestion; // asking Save / Discard / Cancel, at most one
-    QPointer<UploadRun> m_upload; // Save Drive to File reading the drive; a child of its session
     bool m_closeAnyway = false; // the file's changes were saved or discarded on closing
     // connectTo() while connected: where to connect once the old link is closed.
     std::optional<ConnectionSettings> m_nextSettings;
     QList<WindowFeature *> m_features; // children
-    QString m_favouritesKey; // the drive's key in QSettings "favourites/"
+    DriveFavourites m_favourites;
     QString m_silenceNotice; // the notice shown while the drive does not answer
 
     QMenu *m_fileMenu = nullptr;
@@ -177,13 +163,11 @@ private:
     QMenu *m_viewMenu = nullptr;
     QToolBar *m_toolBar = nullptr;
     QLabel *m_stateLabel = nullptr;
-    QLabel *m_setsLabel = nullptr;
     QLabel *m_metadataLabel = nullptr;
 
     QAction *m_openFileAction = nullptr;
     QAction *m_saveFileAction = nullptr;
     QAction *m_saveFileAsAction = nullptr;
-    QAction *m_saveDriveAction = nullptr;
     QAction *m_connectAction = nullptr;
     QAction *m_disconnectAction = nullptr;
     QAction *m_findDrivesAction = nullptr;

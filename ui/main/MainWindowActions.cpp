@@ -37,13 +37,6 @@ void MainWindow::createActions()
     m_saveFileAsAction->setToolTip(tr("Save the parameter file shown under another name"));
     connect(m_saveFileAsAction, &QAction::triggered, this, &MainWindow::chooseFileToSaveAs);
 
-    m_saveDriveAction = new QAction(tr("Save &Drive to File..."), this);
-    m_saveDriveAction->setObjectName(QStringLiteral("saveDriveAction"));
-    m_saveDriveAction->setToolTip(tr("Read the drive afresh and save it to a parameter file "
-                                     "once every value was read; the window goes on with the "
-                                     "drive"));
-    connect(m_saveDriveAction, &QAction::triggered, this, &MainWindow::chooseDriveFile);
-
     m_connectAction = new QAction(themedIcon("network-connect", QStyle::SP_DriveNetIcon),
                                   tr("&Connect..."), this);
     m_connectAction->setObjectName(QStringLiteral("connectAction"));
@@ -115,8 +108,6 @@ void MainWindow::createMenus()
     m_fileMenu->addAction(m_openFileAction);
     m_fileMenu->addAction(m_saveFileAction);
     m_fileMenu->addAction(m_saveFileAsAction);
-    m_fileMenu->addSeparator();
-    m_fileMenu->addAction(m_saveDriveAction);
 
     m_driveMenu = menuBar()->addMenu(tr("&Drive"));
     m_driveMenu->addAction(m_connectAction);
@@ -198,11 +189,6 @@ void MainWindow::createStatusBar()
 {
     m_stateLabel = new QLabel;
     m_stateLabel->setObjectName(QStringLiteral("connectionState"));
-    m_setsLabel = new QLabel;
-    m_setsLabel->setObjectName(QStringLiteral("parameterSets"));
-    m_setsLabel->setToolTip(tr("Fr.02: the set the drive works with. Fr.09: the set that "
-                               "indirect addressing reaches."));
-    m_setsLabel->hide();
     m_metadataLabel = new QLabel(tr("Metadata from cache"));
     m_metadataLabel->setObjectName(QStringLiteral("metadataSource"));
     m_metadataLabel->setToolTip(tr("The groups, names, limits and texts come from the metadata "
@@ -210,7 +196,6 @@ void MainWindow::createStatusBar()
                                    "drive. Drive > Read Metadata Again reads everything."));
     m_metadataLabel->hide();
     addStatusWidget(m_metadataLabel);
-    addStatusWidget(m_setsLabel);
 }
 
 void MainWindow::addStatusWidget(QWidget *widget)
@@ -237,12 +222,12 @@ void MainWindow::updateActions()
     const bool connecting = session && m_session->state() == DriveClient::State::Connecting;
     m_disconnectAction->setEnabled(connected || connecting);
     // Save Drive to File reads the drive with progress in the notice bar: one read at a time.
-    m_refreshAction->setEnabled(connected && !m_session->isScanning() && !isSavingDrive());
-    m_readMetadataAction->setEnabled(connected && !m_session->isScanning() && !isSavingDrive());
+    const bool reading = isReadingDrive();
+    m_refreshAction->setEnabled(connected && !m_session->isScanning() && !reading);
+    m_readMetadataAction->setEnabled(connected && !m_session->isScanning() && !reading);
     m_driveInfoAction->setEnabled(session && m_session->hasDescription());
-    m_saveDriveAction->setEnabled(connected && !m_session->isScanning() && !isSavingDrive());
-    m_saveFileAction->setEnabled(m_document != nullptr);
-    m_saveFileAsAction->setEnabled(m_document != nullptr);
+    m_saveFileAction->setEnabled(!m_filePath.isEmpty());
+    m_saveFileAsAction->setEnabled(!m_filePath.isEmpty());
     m_browser->setEditingEnabled(editing() != nullptr);
     for (WindowFeature *feature : std::as_const(m_features))
         feature->updateActions();

@@ -1,5 +1,5 @@
-// MainWindow: parameter files. Opening one shows it with no drive and edits it; saving writes it
-// atomically; "Save Drive to File" reads the drive afresh and saves it only when read whole.
+// MainWindow: parameter files. Opening one shows it with no drive and edits it (the features'
+// attachFile()); saving writes it atomically; the file dialogs of the window and its features.
 #include "MainWindow.h"
 
 #include "DriveSession.h"
@@ -8,12 +8,9 @@
 #include "ParameterBrowser.h"
 #include "RecentConnections.h"
 
-#include "edit/DocumentEditor.h"
 #include "model/ParameterModel.h"
 #include "parameters/ParameterDocument.h"
-#include "session/UploadRun.h"
 
-#include <QDate>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -43,7 +40,7 @@ void rememberDirectory(const QString &path)
 
 bool MainWindow::hasUnsavedChanges() const
 {
-    return m_document && !m_undoStack->isClean();
+    return !m_filePath.isEmpty() && !m_undoStack->isClean();
 }
 
 bool MainWindow::openParameterFile(const QString &path)
@@ -78,10 +75,11 @@ void MainWindow::showParameterFile(const DriveDescription &drive, const QString 
     m_model->setActiveSet(-1);
     m_model->setPasswordLevel(PasswordLevel::Supervisor);
     m_model->setDescription(drive);
-    m_document = new DocumentEditor(m_model, m_undoStack, this);
-    connect(m_document, &DocumentEditor::message, this, &MainWindow::showMessage);
     m_filePath = QFileInfo(path).absoluteFilePath();
-    restoreFavourites(drive, nullptr);
+    // The file's edits are a feature's, as the drive's are.
+    for (WindowFeature *feature : std::as_const(m_features))
+        feature->attachFile(m_filePath);
+    m_favourites.restore(drive, nullptr);
 
     m_metadataLabel->hide();
     m_stateLabel->setText(tr("No drive: parameter file"));
@@ -98,13 +96,13 @@ void MainWindow::showParameterFile(const DriveDescription &drive, const QString 
 
 void MainWindow::closeParameterFile()
 {
-    if (!m_document)
+    if (m_filePath.isEmpty())
         return;
-    delete m_document;
-    m_document = nullptr;
+    for (WindowFeature *feature : std::as_const(m_features))
+        feature->attachFile({});
     m_undoStack->clear();
     m_filePath.clear();
-    m_favouritesKey.clear();
+    m_favourites.forget();
     m_model->clear();
     setWindowModified(false);
     setWindowTitle(tr("DriveDesk"));
@@ -119,7 +117,7 @@ bool MainWindow::saveParameterFile()
 
 bool MainWindow::saveParameterFileAs(const QString &path)
 {
-    if (!m_document)
+    if (m_filePath.isEmpty())
         return false;
     QString error;
     if (!ParameterDocument::save(path, m_model->description(), &error)) {
@@ -133,88 +131,6 @@ bool MainWindow::saveParameterFileAs(const QString &path)
     updateFileTitle();
     showMessage(tr("Saved %1.").arg(shownPath(m_filePath)));
     return true;
-}
-
-bool MainWindow::saveDriveToFile(const QString &path)
-{
-    if (!m_session || m_session->state() != DriveClient::State::Connected
-        || m_session->isScanning() || m_upload)
-        return false;
-    // The table may hold a scan stopped halfway or values gone stale: a backup reads the drive
-    // afresh, as the command line's upload does.
-    auto *upload = new UploadRun(m_session->client(), m_session);
-    m_upload = upload;
-    const QString name = QFileInfo(path).fileName();
-    // What the notice said before comes back unless something newer took its place.
-    const bool noticeShown = m_notice->isVisible();
-    const NoticeBar::Kind noticeKind = m_notice->kind();
-    const QString noticeText = m_notice->text();
-    connect(upload, &UploadRun::progress, this,
-            [this, name](int value, int maximum, const QString &what) {
-                m_notice->showProgress(tr("Saving the drive to %1: %2").arg(name, what), value,
-                                       maximum);
-            });
-    connect(upload, &UploadRun::finished, this,
-            [this, upload, path, noticeShown, noticeKind, noticeText](const UploadResult &result) {
-                upload->deleteLater();
-                m_upload.clear(); // done: the next save may start
-                if (m_notice->kind() == NoticeBar::Kind::Progress) {
-                    if (!noticeShown)
-                        m_notice->hide();
-                    else if (noticeKind == NoticeBar::Kind::Problem)
-                        m_notice->showProblem(noticeText);
-                    else if (noticeKind == NoticeBar::Kind::Information)
-                        m_notice->showInformation(noticeText);
-                }
-                driveFileRead(result, path);
-                updateActions();
-            });
-    m_notice->showProgress(tr("Saving the drive to %1: reading the drive...").arg(name), 0, 1000);
-    ScanOptions reading;
-    reading.metadata = MetadataSource::Cache;
-    upload->start(reading);
-    updateActions();
-    return true;
-}
-
-void MainWindow::driveFileRead(const UploadResult &result, const QString &path)
-{
-    if (result.outcome == UploadResult::Outcome::Cancelled) {
-        showMessage(tr("Save Drive to File cancelled: nothing was saved to %1.")
-                        .arg(shownPath(path)));
-        return;
-    }
-    if (!result.isComplete()) {
-        const QString text = tr("The drive was not saved to %1: %2.")
-                                 .arg(shownPath(path), result.summary());
-        showMessage(text);
-        auto *box = new QMessageBox(QMessageBox::Warning, tr("Save Drive to File"), text,
-                                    QMessageBox::Ok, this);
-        box->setObjectName(QStringLiteral("uploadRefused"));
-        const QStringList details = result.details();
-        constexpr int kShown = 8;
-        QString missing = tr("Not read:") + QLatin1Char('\n')
-                          + details.mid(0, kShown).join(QLatin1Char('\n'));
-        if (details.size() > kShown) {
-            const int more = int(details.size()) - kShown;
-            missing += QLatin1Char('\n') + tr("... and %n more (Show Details...)", nullptr, more);
-        }
-        box->setInformativeText(missing);
-        box->setDetailedText(details.join(QLatin1Char('\n')));
-        openDialog(box);
-        return;
-    }
-    QString error;
-    if (!saveUpload(path, result, &error)) {
-        reportFileProblem(tr("Save Drive to File"),
-                          tr("Could not save %1: %2. The file on disk is as it was.")
-                              .arg(shownPath(path), error));
-        return;
-    }
-    rememberDirectory(path);
-    showMessage(tr("Saved %n parameter(s) of the drive to %1.", nullptr,
-                   result.document.parameterCount())
-                    .arg(shownPath(path)));
 }
 
 bool MainWindow::reportFileProblem(const QString &title, const QString &text)
@@ -347,25 +263,12 @@ void MainWindow::chooseFileToOpen()
 
 void MainWindow::chooseFileToSaveAs()
 {
-    if (!m_document)
+    if (m_filePath.isEmpty())
         return;
     QFileDialog *dialog
         = fileDialog(tr("Save Parameter File As"), QFileInfo(m_filePath).fileName());
     connect(dialog, &QFileDialog::fileSelected, this, [this](const QString &path) {
         confirmReplace(path, [this, path] { saveParameterFileAs(path); });
-    });
-    openDialog(dialog);
-}
-
-void MainWindow::chooseDriveFile()
-{
-    if (!m_session || m_session->state() != DriveClient::State::Connected)
-        return;
-    const QString name
-        = QStringLiteral("drive-%1.json").arg(QDate::currentDate().toString(Qt::ISODate));
-    QFileDialog *dialog = fileDialog(tr("Save Drive to File"), name);
-    connect(dialog, &QFileDialog::fileSelected, this, [this](const QString &path) {
-        confirmReplace(path, [this, path] { saveDriveToFile(path); });
     });
     openDialog(dialog);
 }

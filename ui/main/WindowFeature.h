@@ -1,75 +1,10 @@
 #pragma once
 
-#include "link/ConnectionSettings.h"
+#include "WindowFrame.h"
 
 #include <QObject>
 
-#include <functional>
-
-class QAction;
-class QDockWidget;
-class QMenu;
-class QToolBar;
-class QUndoStack;
-class QWidget;
-
 namespace DriveDesk {
-
-class DriveClient;
-class DriveSession;
-class ParameterBrowser;
-class ParameterEditing;
-class ParameterModel;
-
-// What a feature sees of the window it works in: the places for its actions and widgets, what
-// the window shows, and the drive session of the moment. MainWindow is the one frame.
-class WindowFrame
-{
-public:
-    enum class Menu { File, Drive, Edit, View };
-
-    virtual ~WindowFrame() = default;
-
-    virtual QWidget *frameWidget() = 0; // the parent of the feature's dialogs and docks
-    virtual QMenu *menu(Menu menu) = 0;
-    virtual QToolBar *toolBar() = 0;
-    virtual void addStatusWidget(QWidget *widget) = 0;
-    virtual void addDock(QDockWidget *dock) = 0; // at the bottom, hidden until asked for
-
-    virtual ParameterModel *model() const = 0;
-    virtual ParameterBrowser *browser() const = 0;
-    virtual QUndoStack *undoStack() const = 0;
-    // The UI's language, the one the drives' texts are read in.
-    virtual Language language() const = 0;
-    // Closes the connection of the moment (if any) and connects to `settings`, reading the
-    // drive (its metadata from the cache where its kind was read before).
-    virtual void connectTo(ConnectionSettings settings) = 0;
-    // The connection and its controllers; nullptr before the first connect.
-    virtual DriveSession *session() const = 0;
-    // Connected to a drive and read.
-    virtual bool isReady() const = 0;
-    // The parameter file the window shows instead of a drive; empty while it shows none.
-    virtual QString parameterFilePath() const = 0;
-    // Where edits go now: the drive's edit controller (connected and read) or the editor of the
-    // parameter file shown instead of a drive; nullptr while nothing may be edited.
-    virtual ParameterEditing *editing() const = 0;
-
-    virtual void showMessage(const QString &text) = 0;
-    // Asks for a parameter file to read, in a dialog that does not block; `chosen` runs with
-    // its path once the user picked one.
-    virtual void chooseParameterFile(const QString &title,
-                                     std::function<void(const QString &path)> chosen) = 0;
-    // The same for any kind of file (`filter` like "Scope recordings (*.ddscope)").
-    virtual void chooseFileToRead(const QString &title, const QString &filter,
-                                  std::function<void(const QString &path)> chosen) = 0;
-    // Asks where to write a file (`filter` like "CSV files (*.csv)"), and whether to replace one
-    // that is there; `chosen` runs with the path once the user agreed.
-    virtual void chooseFileToWrite(const QString &title, const QString &name,
-                                   const QString &filter,
-                                   std::function<void(const QString &path)> chosen) = 0;
-    // Something an action depends on changed: every feature's actions enable as they apply.
-    virtual void updateActions() = 0;
-};
 
 // One feature of the window (editing, polling, the password level, the telegram monitor): it
 // owns its actions and widgets, puts them in the frame when it is made, and follows the drive
@@ -85,11 +20,20 @@ public:
 
     // A new session replaces the old one (already gone), or nullptr: none any more.
     virtual void attach(DriveSession *session) { Q_UNUSED(session) }
+    // The window shows the parameter file at `path` (absolute; the model holds it) instead of a
+    // drive, or none any more (empty). No session is attached while a file is shown.
+    virtual void attachFile(const QString &path) { Q_UNUSED(path) }
     // A client besides the session's talks on a bus for a while (finding drives before
     // connecting); it goes away on its own.
     virtual void followClient(DriveClient *client) { Q_UNUSED(client) }
     // The connection, the scan, the selection or a job changed.
     virtual void updateActions() { }
+    // Where the window's edits go while this feature takes them (the drive's edits once it is
+    // read, the parameter file shown); nullptr otherwise. WindowFrame::editing() asks each.
+    virtual ParameterEditing *editing() const { return nullptr; }
+    // The feature reads the whole drive on its own (Save Drive to File): the frame's Refresh and
+    // Read Metadata Again wait for it.
+    virtual bool isReadingDrive() const { return false; }
     // The window closes: what the feature remembers goes to QSettings.
     virtual void saveSettings() { }
 

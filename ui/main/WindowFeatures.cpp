@@ -4,11 +4,13 @@
 #include "edit/AccessFeature.h"
 #include "edit/EditingFeature.h"
 #include "edit/PollingFeature.h"
+#include "edit/SetsFeature.h"
 #include "monitor/MonitorFeature.h"
 #include "plant/PlantFeature.h"
 #include "scope/ScopeFeature.h"
 #include "transfer/DownloadFeature.h"
 #include "transfer/ExportFeature.h"
+#include "transfer/SaveDriveFeature.h"
 
 namespace DriveDesk {
 
@@ -22,10 +24,19 @@ QList<WindowFeature *> makeWindowFeatures(WindowFrame &frame)
                      [download](const DriveDescription &selection) {
                          download->downloadSelection(selection);
                      });
+    // The others add their actions and status fields in this order.
     QList<WindowFeature *> features{
+        new SaveDriveFeature(frame),
+        new SetsFeature(frame),
         new PollingFeature(frame),
-        new EditingFeature(frame),
-        new AccessFeature(frame),
+    };
+    auto *editing = new EditingFeature(frame);
+    auto *access = new AccessFeature(frame);
+    // A higher password level reads at once what it opened, not at the next refresh.
+    QObject::connect(access, &AccessFeature::levelRaised, editing,
+                     &EditingFeature::readOpenedValues);
+    features << editing << access;
+    features << QList<WindowFeature *>{
         new MonitorFeature(frame),
         new ScopeFeature(frame),
         download,

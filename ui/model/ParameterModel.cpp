@@ -11,13 +11,8 @@
 
 namespace DriveDesk {
 
-namespace {
-
-constexpr quintptr kGroupId = 0; // internal id of group rows; parameters carry group row + 1
-} // namespace
-
 ParameterModel::ParameterModel(QObject *parent)
-    : QAbstractItemModel(parent)
+    : GroupTreeModel(parent)
 { }
 
 void ParameterModel::setDescription(const DriveDescription &drive)
@@ -71,9 +66,8 @@ void ParameterModel::clear()
 
 const ParameterRow *ParameterModel::rowAt(const QModelIndex &index) const
 {
-    if (!index.isValid() || index.internalId() == kGroupId)
-        return nullptr;
-    return &m_groups[std::size_t(index.internalId() - 1)].rows[std::size_t(index.row())];
+    const int group = groupOf(index);
+    return group < 0 ? nullptr : &m_groups[std::size_t(group)].rows[std::size_t(index.row())];
 }
 
 ParameterRow *ParameterModel::rowAt(quint16 address)
@@ -231,118 +225,6 @@ EditText ParameterModel::editText(quint16 address) const
                : EditText(ParameterId::hexAddress(address), nullptr);
 }
 
-void ParameterModel::showOutcome(const WriteOutcome &outcome, bool superseded)
-{
-    const quint16 address = outcome.address;
-    if (outcome.refusedMask && !superseded)
-        markFailed(address, outcome.refusedMask, outcome.error);
-    for (int set = 0; set < kParameterSets; ++set) {
-        if (!(outcome.acknowledgedMask & (1u << set)))
-            continue;
-        if (const std::optional<qint32> value = outcome.readBack[std::size_t(set)]) {
-            if (superseded)
-                setValue(address, set, *value);
-            else
-                confirmReadBack(address, set, *value);
-        } else if (!superseded) {
-            // The drive acknowledged the write; only the confirmation is missing.
-            markWritten(address, quint8(1u << set));
-        }
-    }
-}
-
-template<typename Change>
-void ParameterModel::changeCells(quint16 address, quint8 setMask, Change change)
-{
-    ParameterRow *row = rowAt(address);
-    if (!row)
-        return;
-    int first = kParameterSets;
-    int last = -1;
-    for (int set = 0; set < kParameterSets; ++set) {
-        if (!(setMask & (1u << set)))
-            continue;
-        const int cell = row->cellOf(set);
-        first = std::min(first, cell);
-        last = std::max(last, cell);
-        change(*row, cell);
-    }
-    if (last >= 0)
-        emit dataChanged(indexOf(address, columnOfSet(first)), indexOf(address, columnOfSet(last)));
-}
-
-void ParameterModel::markPending(quint16 address, quint8 setMask, qint32 raw)
-{
-    changeCells(address, setMask,
-                [raw](ParameterRow &row, int cell) { row.markPending(cell, raw); });
-}
-
-void ParameterModel::markWritten(quint16 address, quint8 setMask)
-{
-    changeCells(address, setMask, [](ParameterRow &row, int cell) {
-        if (row.requestedValue(cell))
-            row.markWritten(cell);
-    });
-}
-
-void ParameterModel::markFailed(quint16 address, quint8 setMask, const QString &reason)
-{
-    changeCells(address, setMask,
-                [&reason](ParameterRow &row, int cell) { row.markFailed(cell, reason); });
-}
-
-void ParameterModel::markChanged(quint16 address, quint8 setMask)
-{
-    changeCells(address, setMask, [](ParameterRow &row, int cell) { row.markChanged(cell); });
-}
-
-void ParameterModel::confirmReadBack(quint16 address, int set, qint32 raw)
-{
-    if (set < 0 || set >= kParameterSets)
-        return;
-    changeCells(address, quint8(1u << set), [this, raw](ParameterRow &row, int cell) {
-        const std::optional<qint32> requested = row.requestedValue(cell);
-        row.setValue(cell, raw);
-        if (!requested)
-            return;
-        if (readBackMayDiffer(row.description())) {
-            row.markWritten(cell, raw);
-            return;
-        }
-        if (*requested == raw) {
-            row.markWritten(cell);
-            return;
-        }
-        row.markFailed(
-            cell,
-            tr("the drive holds %1, not %2").arg(valueText(row, raw), valueText(row, *requested)));
-    });
-}
-
-void ParameterModel::clearEditStates()
-{
-    for (Group &group : m_groups) {
-        for (ParameterRow &row : group.rows) {
-            for (int cell = 0; cell < row.cellCount(); ++cell)
-                row.clearEditState(cell);
-        }
-    }
-    emitAllChanged();
-}
-
-void ParameterModel::clearEditState(quint16 address, quint8 setMask)
-{
-    changeCells(address, setMask, [](ParameterRow &row, int cell) { row.clearEditState(cell); });
-}
-
-EditState ParameterModel::editState(quint16 address, int set) const
-{
-    const ParameterRow *row = rowAt(address);
-    if (!row || set < 0 || set >= kParameterSets)
-        return EditState::None;
-    return row->editState(row->cellOf(set));
-}
-
 void ParameterModel::setPasswordLevel(PasswordLevel level)
 {
     if (level == m_level)
@@ -411,8 +293,8 @@ void ParameterModel::emitAllChanged(const QList<int> &roles)
         const int rows = int(m_groups[g].rows.size());
         if (rows == 0)
             continue;
-        emit dataChanged(createIndex(0, 0, quintptr(g + 1)),
-                         createIndex(rows - 1, ColumnCount - 1, quintptr(g + 1)), roles);
+        emit dataChanged(rowIndex(int(g), 0, 0), rowIndex(int(g), rows - 1, ColumnCount - 1),
+                         roles);
     }
 }
 
@@ -421,7 +303,7 @@ QModelIndex ParameterModel::indexOf(quint16 address, int column) const
     const auto it = m_locations.constFind(address);
     if (it == m_locations.constEnd() || column < 0 || column >= ColumnCount)
         return {};
-    return createIndex(it->row, column, quintptr(it->group + 1));
+    return rowIndex(it->group, it->row, column);
 }
 
 QModelIndex ParameterModel::valueIndex(quint16 address, int set) const
@@ -437,44 +319,9 @@ int ParameterModel::setOfColumn(int column)
     return column >= FirstSetColumn && column <= LastSetColumn ? column - FirstSetColumn : -1;
 }
 
-QModelIndex ParameterModel::index(int row, int column, const QModelIndex &parent) const
-{
-    if (row < 0 || column < 0 || column >= ColumnCount)
-        return {};
-    if (!parent.isValid()) {
-        return row < int(m_groups.size()) ? createIndex(row, column, kGroupId) : QModelIndex();
-    }
-    if (parent.internalId() != kGroupId || parent.column() != 0)
-        return {};
-    if (row >= int(m_groups[std::size_t(parent.row())].rows.size()))
-        return {};
-    return createIndex(row, column, quintptr(parent.row() + 1));
-}
-
-QModelIndex ParameterModel::parent(const QModelIndex &child) const
-{
-    if (!child.isValid() || child.internalId() == kGroupId)
-        return {};
-    return createIndex(int(child.internalId() - 1), 0, kGroupId);
-}
-
-int ParameterModel::rowCount(const QModelIndex &parent) const
-{
-    if (!parent.isValid())
-        return int(m_groups.size());
-    if (parent.internalId() != kGroupId || parent.column() != 0)
-        return 0;
-    return int(m_groups[std::size_t(parent.row())].rows.size());
-}
-
 int ParameterModel::columnCount(const QModelIndex &) const
 {
     return ColumnCount;
-}
-
-bool ParameterModel::hasChildren(const QModelIndex &parent) const
-{
-    return rowCount(parent) > 0;
 }
 
 } // namespace DriveDesk

@@ -1,13 +1,13 @@
 #pragma once
 
 #include "CellDecoration.h"
+#include "GroupTreeModel.h"
 #include "ParameterRow.h"
 
 #include "parameters/DriveDescription.h"
 #include "parameters/PasswordLevel.h"
 #include "session/EditText.h"
 
-#include <QAbstractItemModel>
 #include <QHash>
 #include <QSet>
 
@@ -21,7 +21,7 @@ struct WriteOutcome;
 // Values are held raw and shown as the drive shows them (scaled with unit, or the plaintext).
 // The model never talks to the drive: edits leave as valueEdited(), values arrive through
 // setValue(). Lives in the GUI thread.
-class ParameterModel : public QAbstractItemModel
+class ParameterModel : public GroupTreeModel
 {
     Q_OBJECT
 public:
@@ -138,11 +138,7 @@ public:
     static int columnOfSet(int set) { return FirstSetColumn + set; }
     static int setOfColumn(int column); // -1 for columns that hold no value
 
-    QModelIndex index(int row, int column, const QModelIndex &parent = {}) const override;
-    QModelIndex parent(const QModelIndex &child) const override;
-    int rowCount(const QModelIndex &parent = {}) const override;
     int columnCount(const QModelIndex &parent = {}) const override;
-    bool hasChildren(const QModelIndex &parent = {}) const override;
     QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
     bool setData(const QModelIndex &index, const QVariant &value, int role = Qt::EditRole) override;
     Qt::ItemFlags flags(const QModelIndex &index) const override;
@@ -154,6 +150,13 @@ signals:
     void valueEdited(quint16 address, quint8 setMask, qint32 raw);
     void favouritesChanged();
     void passwordLevelChanged(DriveDesk::PasswordLevel level);
+
+protected:
+    int groupCount() const override { return int(m_groups.size()); }
+    int rowCountOf(int group) const override
+    {
+        return int(m_groups[std::size_t(group)].rows.size());
+    }
 
 private:
     struct Group

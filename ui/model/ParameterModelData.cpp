@@ -12,7 +12,7 @@ QVariant ParameterModel::data(const QModelIndex &index, int role) const
 {
     if (!index.isValid() || index.model() != this)
         return {};
-    if (index.internalId() == 0)
+    if (isGroup(index))
         return groupData(m_groups[std::size_t(index.row())], index.column(), role);
     return parameterData(*rowAt(index), index.column(), role);
 }

@@ -3,7 +3,6 @@
 #include "DownloadDialog.h"
 #include "FileProblem.h"
 
-#include "edit/EditController.h"
 #include "main/DriveSession.h"
 #include "main/FrameSupport.h"
 #include "parameters/ParameterDocument.h"
@@ -90,7 +89,7 @@ void DownloadFeature::download(const DriveDescription &file, const DownloadOptio
     connect(m_dialog, &DownloadDialog::wrote, this, [this] {
         // The table shows what the drive holds now, read again.
         if (frame().isReady())
-            frame().session()->editController()->refresh();
+            frame().session()->readValuesAgain();
         frame().showMessage(tr("Download finished; the values are read again."));
     });
     connect(m_dialog, &QDialog::finished, this, [this] { frame().updateActions(); });
