@@ -1204,10 +1204,6 @@
         <translation>Seite %1: eine Parameterdatei wählen.</translation>
     </message>
     <message>
-        <source>Side %1: could not read %2: %3</source>
-        <translation>Seite %1: %2 konnte nicht gelesen werden: %3</translation>
-    </message>
-    <message>
         <source>defaults of %1</source>
         <translation>Vorgabewerte von %1</translation>
     </message>
@@ -1305,10 +1301,6 @@
         </translation>
     </message>
     <message>
-        <source>Nothing written: could not read %1: %2</source>
-        <translation>Nichts geschrieben: %1 konnte nicht gelesen werden: %2</translation>
-    </message>
-    <message>
         <source>Could not save %1: %2. The file on disk is as it was.</source>
         <translation>%1 konnte nicht gespeichert werden: %2. Die Datei auf dem Datenträger ist unverändert.</translation>
     </message>
@@ -1330,6 +1322,14 @@
     <message>
         <source>Chosen onl&amp;y</source>
         <translation>N&amp;ur gewählte</translation>
+    </message>
+    <message>
+        <source>Side %1: could not read the file: %2</source>
+        <translation>Seite %1: die Datei konnte nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <source>Nothing written: could not read the file: %1</source>
+        <translation>Nichts geschrieben: die Datei konnte nicht gelesen werden: %1</translation>
     </message>
 </context>
 <context>
@@ -2772,10 +2772,6 @@
         <source>Open Parameter File</source>
         <translation>Parameterdatei öffnen</translation>
     </message>
-    <message>
-        <source>Could not open %1: %2</source>
-        <translation>%1 konnte nicht geöffnet werden: %2</translation>
-    </message>
     <message numerus="yes">
         <source>Opened %1: %n parameter(s), no drive connected.</source>
         <translation>
@@ -2904,6 +2900,10 @@
             <numerusform>… und %n weiterer (Details anzeigen …)</numerusform>
             <numerusform>… und %n weitere (Details anzeigen …)</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Could not open the file: %1</source>
+        <translation>Die Datei konnte nicht geöffnet werden: %1</translation>
     </message>
 </context>
 <context>

@@ -1204,10 +1204,6 @@
         <translation>Side %1: choose a parameter file.</translation>
     </message>
     <message>
-        <source>Side %1: could not read %2: %3</source>
-        <translation>Side %1: could not read %2: %3</translation>
-    </message>
-    <message>
         <source>defaults of %1</source>
         <translation>defaults of %1</translation>
     </message>
@@ -1305,10 +1301,6 @@
         </translation>
     </message>
     <message>
-        <source>Nothing written: could not read %1: %2</source>
-        <translation>Nothing written: could not read %1: %2</translation>
-    </message>
-    <message>
         <source>Could not save %1: %2. The file on disk is as it was.</source>
         <translation>Could not save %1: %2. The file on disk is as it was.</translation>
     </message>
@@ -1330,6 +1322,14 @@
     <message>
         <source>Chosen onl&amp;y</source>
         <translation>Chosen onl&amp;y</translation>
+    </message>
+    <message>
+        <source>Side %1: could not read the file: %2</source>
+        <translation>Side %1: could not read the file: %2</translation>
+    </message>
+    <message>
+        <source>Nothing written: could not read the file: %1</source>
+        <translation>Nothing written: could not read the file: %1</translation>
     </message>
 </context>
 <context>
@@ -2772,10 +2772,6 @@
         <source>Open Parameter File</source>
         <translation>Open Parameter File</translation>
     </message>
-    <message>
-        <source>Could not open %1: %2</source>
-        <translation>Could not open %1: %2</translation>
-    </message>
     <message numerus="yes">
         <source>Opened %1: %n parameter(s), no drive connected.</source>
         <translation>
@@ -2904,6 +2900,10 @@
             <numerusform>... and %n more (Show Details...)</numerusform>
             <numerusform>... and %n more (Show Details...)</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Could not open the file: %1</source>
+        <translation>Could not open the file: %1</translation>
     </message>
 </context>
 <context>

@@ -53,8 +53,7 @@ std::optional<CompareWindow::Side> CompareWindow::readSide(bool a, const Side *s
         QString problem;
         const std::optional<DriveDescription> drive = ParameterDocument::load(side.path, &problem);
         if (!drive) {
-            *error = tr("Side %1: could not read %2: %3")
-                         .arg(letter, shownPath(side.path), problem);
+            *error = tr("Side %1: could not read the file: %2").arg(letter, problem);
             return std::nullopt;
         }
         side.description = *drive;

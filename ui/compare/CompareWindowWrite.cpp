@@ -102,8 +102,7 @@ void CompareWindow::writeToFile(const Side &target, const QList<ChosenValue> &va
     QString error;
     std::optional<DriveDescription> drive = ParameterDocument::load(target.path, &error);
     if (!drive) {
-        showMessage(tr("Nothing written: could not read %1: %2")
-                        .arg(shownPath(target.path), error));
+        showMessage(tr("Nothing written: could not read the file: %1").arg(error));
         return;
     }
     QStringList refusals;

@@ -49,7 +49,7 @@ bool MainWindow::openParameterFile(const QString &path)
     const std::optional<DriveDescription> drive = ParameterDocument::load(path, &error);
     if (!drive) {
         return reportFileProblem(tr("Open Parameter File"),
-                                 tr("Could not open %1: %2").arg(shownPath(path), error));
+                                 tr("Could not open the file: %1").arg(error));
     }
     rememberDirectory(path);
     settleUnsavedChanges([this, shown = *drive, path] { showParameterFile(shown, path); });
