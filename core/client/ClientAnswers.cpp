@@ -361,9 +361,12 @@ void ClientWorker::complete(PendingRequest &request, Reply::Status status, const
     const bool stops = reply.status == Reply::Status::DriveSilent && !m_driveStopped;
     const Completion done = std::move(request.done);
     request.done = nullptr;
-    done(reply, request.heard);
+    const bool heard = request.heard;
+    // The news that the drive stopped answering goes out before any request's failure says so:
+    // whoever waits on both (the command line: its scan and the reason) hears them in order.
     if (stops)
         stopAnswering();
+    done(reply, heard);
 }
 
 QString ClientWorker::transportDetail(const PendingRequest &request, Reply::Status status) const
