@@ -4,3 +4,7 @@ drivedesk_add_test(NAME tst_plantfile LABELS unit
 # The job that works through every drive of a plant, against simulated drives in process.
 drivedesk_add_test(NAME tst_plantrun LABELS integration
     SOURCES plant/tst_plantrun.cpp LIBS drivedesk_plant drivedesk_bus)
+# A link cut part-way through a plant's backup and download, against drives behind TCP ports:
+# the other links go through and what is said of each drive is true of it, read again.
+drivedesk_add_test(NAME tst_plantcut LABELS integration
+    SOURCES plant/tst_plantcut.cpp LIBS drivedesk_plant drivedesk_bus)
