@@ -154,8 +154,9 @@ void DriveClient::stopScan()
 QFuture<DriveDescription> DriveClient::scan(ScanOptions options)
 {
     ClientWorker *worker = m_worker;
-    return run(std::make_shared<ScanJob>(std::move(options), m_settings,
-                                         [worker] { return worker->connectionDescription(); }));
+    return run(std::make_shared<ScanJob>(
+        std::move(options), m_settings, [worker] { return worker->connectionDescription(); },
+        worker));
 }
 
 } // namespace DriveDesk

@@ -5,10 +5,11 @@
 namespace DriveDesk {
 
 ScanJob::ScanJob(ScanOptions options, const ConnectionSettings &settings,
-                 std::function<QString()> connection)
+                 std::function<QString()> connection, QObject *owner)
     : m_options(std::move(options))
     , m_settings(settings)
     , m_connection(std::move(connection))
+    , m_owner(owner)
 {
     promise().setProgressRange(0, 1000);
     // The switch that says the drive has DriveDesk's services also lets the scan ask service 13.
@@ -17,16 +18,16 @@ ScanJob::ScanJob(ScanOptions options, const ConnectionSettings &settings,
 
 ScanJob::~ScanJob()
 {
-    // A finished scanner may still be inside its own signal: it goes once that has unwound.
-    if (m_scanner && m_scannerFinished)
+    // A scan that never finished (its client went first): its handlers point here.
+    if (m_scanner) {
+        m_scanner->disconnect();
         m_scanner->deleteLater();
-    else
-        delete m_scanner;
+    }
 }
 
 void ScanJob::start()
 {
-    m_scanner = new DriveScanner(sink(), m_options, m_settings.language);
+    m_scanner = new DriveScanner(sink(), m_options, m_settings.language, m_owner);
     QObject::connect(m_scanner, &DriveScanner::progress, m_scanner,
                      [this](int done, int total, const QString &what) {
                          // The total grows as the scan learns; the bar never runs backwards.
@@ -41,7 +42,7 @@ void ScanJob::start()
 
 void ScanJob::stopping()
 {
-    if (m_scanner && !m_scannerFinished)
+    if (m_scanner)
         m_scanner->cancel();
 }
 
@@ -52,7 +53,9 @@ void ScanJob::finishEarly()
 
 void ScanJob::onFinished(const DriveDescription &found)
 {
-    m_scannerFinished = true;
+    // Done with it: it goes once its signal has unwound, while the client's thread still runs.
+    m_scanner->deleteLater();
+    m_scanner = nullptr;
     DriveDescription description = found;
     if (description.protocol.isEmpty())
         description.protocol = protocolName(m_settings.protocol);

@@ -3,6 +3,8 @@
 #include "client/DriveClient.h"
 #include "client/RequestJob.h"
 
+#include <QPointer>
+
 #include <functional>
 #include <memory>
 
@@ -18,9 +20,10 @@ class ScanJob : public RequestJob<DriveDescription>
 {
 public:
     // `connection` names the link as the description records it; asked when the scan ends,
-    // in the client's thread.
+    // in the client's thread. `owner` lives in the client's thread and outlives every job there:
+    // the scanner is its child, so a client closed mid-scan leaves nothing behind.
     ScanJob(ScanOptions options, const ConnectionSettings &settings,
-            std::function<QString()> connection);
+            std::function<QString()> connection, QObject *owner);
     ~ScanJob() override;
 
     void finishEarly() override;
@@ -35,8 +38,8 @@ private:
     ScanOptions m_options;
     ConnectionSettings m_settings;
     std::function<QString()> m_connection;
-    DriveScanner *m_scanner = nullptr; // parentless, in the client's thread
-    bool m_scannerFinished = false;
+    QObject *m_owner = nullptr;
+    QPointer<DriveScanner> m_scanner; // until it finished
     int m_shownProgress = 0;
 };
 

@@ -29,7 +29,7 @@ QString JsonObjectReader::indexed(const QString &place, qsizetype index)
 void JsonObjectReader::fail(const QString &place, const QString &message)
 {
     if (m_error->isEmpty())
-        *m_error = JsonFault { place, message };
+        *m_error = JsonFault { place, message, {} };
 }
 
 QJsonValue JsonObjectReader::value(const QString &key)

@@ -3,6 +3,7 @@
 #include "parameters/DriveDescription.h"
 
 #include <QDockWidget>
+#include <QSettings>
 
 #include <memory>
 
@@ -61,6 +62,8 @@ protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:
+    // Where the monitor remembers its columns and the folder it saved to.
+    static QSettings settings();
     QWidget *createToolBar();
     void chooseFileAndSave();
     void updateStatus();

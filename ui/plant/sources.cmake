@@ -4,7 +4,7 @@ target_sources(drivedesk_ui PRIVATE
     plant/PlantDock.cpp plant/PlantDockJobs.cpp plant/PlantDock.h
     plant/PlantFeature.cpp plant/PlantFeature.h
     plant/PlantLinkDialog.cpp plant/PlantLinkDialog.h
-    plant/PlantModel.cpp plant/PlantModel.h
+    plant/PlantModel.cpp plant/PlantModelData.cpp plant/PlantModel.h
     plant/PlantReportDialog.cpp plant/PlantReportDialog.h
 )
 target_link_libraries(drivedesk_ui PUBLIC drivedesk_plant)
