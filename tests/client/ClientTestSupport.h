@@ -1,6 +1,7 @@
 #pragma once
 
 #include "bus/LinkFactory.h"
+#include "bus/SimulatorServer.h"
 #include "client/DriveClient.h"
 #include "protocol/Codec.h"
 
@@ -24,6 +25,17 @@ constexpr quint16 kMotorVoltage = 0x0604;    // dr.04, 120..500, default 400, 8 
 constexpr quint16 kCurrentLimit = 0x0418;    // Pn.24, 0..200, default 150, 8 sets
 constexpr quint16 kRatedCurrent = 0x0E01;    // In.01, read-only, 10.5 A = raw 105
 constexpr quint16 kInverterType = 0x0E00;    // In.00, read-only, 0F50h
+
+// The simulated drive behind a TCP port on loopback, as behind a serial-to-Ethernet gateway.
+inline ConnectionSettings tcpTo(const SimulatorServer &server, Protocol protocol = Protocol::Hsp5)
+{
+    ConnectionSettings settings;
+    settings.kind = ConnectionSettings::Kind::Tcp;
+    settings.host = QStringLiteral("127.0.0.1");
+    settings.port = server.tcpPort();
+    settings.protocol = protocol;
+    return settings;
+}
 
 inline ConnectionSettings simulated(Protocol protocol, SimulationOptions simulation = {})
 {

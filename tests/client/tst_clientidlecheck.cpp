@@ -13,16 +13,6 @@ Q_DECLARE_METATYPE(DriveDesk::Protocol)
 
 namespace {
 
-ConnectionSettings tcpTo(const SimulatorServer &server, Protocol protocol)
-{
-    ConnectionSettings settings;
-    settings.kind = ConnectionSettings::Kind::Tcp;
-    settings.host = QStringLiteral("127.0.0.1");
-    settings.port = server.tcpPort();
-    settings.protocol = protocol;
-    return settings;
-}
-
 ClientOptions checkingIdleLine(int idleCheckMs = ClientOptions::kInteractiveIdleCheckMs)
 {
     ClientOptions options;

@@ -17,16 +17,6 @@ Q_DECLARE_METATYPE(DriveDesk::Protocol)
 
 namespace {
 
-ConnectionSettings tcpTo(const SimulatorServer &server, Protocol protocol)
-{
-    ConnectionSettings settings;
-    settings.kind = ConnectionSettings::Kind::Tcp;
-    settings.host = QStringLiteral("127.0.0.1");
-    settings.port = server.tcpPort();
-    settings.protocol = protocol;
-    return settings;
-}
-
 // How long a job may take from the freeze to its end: the client's bound, the check that goes
 // out after the stop, and room for a busy machine.
 int allowedMs(const ConnectionSettings &settings)

@@ -51,16 +51,6 @@ ScopePollEnd record(ScopeRecorder &recorder, ScopeRecording &recording,
     return finished.first().at(0).value<ScopePollEnd>();
 }
 
-// HSP5 to the simulated drive behind a TCP port, as to a serial-to-Ethernet gateway.
-ConnectionSettings tcpTo(const SimulatorServer &server)
-{
-    ConnectionSettings settings;
-    settings.kind = ConnectionSettings::Kind::Tcp;
-    settings.host = QStringLiteral("127.0.0.1");
-    settings.port = server.tcpPort();
-    return settings;
-}
-
 bool timesAscend(const ScopeRecording &recording)
 {
     for (qsizetype i = 1; i < recording.buffer.count(); ++i) {

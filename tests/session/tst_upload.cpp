@@ -20,15 +20,6 @@ constexpr quint16 kPassword = 0x0801; // ud.01, excluded from the parameter list
 constexpr quint16 kServiceCode = 0x080B; // ud.11, write only: not read, the default saved
 constexpr qint32 kReadOnlyPassword = 100; // opens CpReadOnly: values of level 3 are refused
 
-ConnectionSettings tcpTo(const SimulatorServer &server)
-{
-    ConnectionSettings settings;
-    settings.kind = ConnectionSettings::Kind::Tcp;
-    settings.host = QStringLiteral("127.0.0.1");
-    settings.port = server.tcpPort();
-    return settings;
-}
-
 // Runs an upload to its end; `onProgress` sees each progress step.
 template<typename OnProgress> UploadResult upload(DriveClient *client, OnProgress onProgress)
 {
