@@ -660,17 +660,6 @@
         <source>only on the drive</source>
         <translation>nur im Umrichter</translation>
     </message>
-    <message numerus="yes">
-        <source>%1 of %n drive(s) %2</source>
-        <translation>
-            <numerusform>%1 von %n Umrichter %2</numerusform>
-            <numerusform>%1 von %n Umrichtern %2</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>not: %1</source>
-        <translation>nicht: %1</translation>
-    </message>
     <message>
         <source>checked, nothing written</source>
         <translation>geprüft, nichts geschrieben</translation>
@@ -3338,17 +3327,6 @@
         <source>%1 and %2 read; the compare window shows them side by side.</source>
         <translation>%1 und %2 gelesen; das Vergleichsfenster zeigt sie nebeneinander.</translation>
     </message>
-    <message numerus="yes">
-        <source>%1 of %n drive(s) %2</source>
-        <translation>
-            <numerusform>%1 von %n Umrichter %2</numerusform>
-            <numerusform>%1 von %n Umrichtern %2</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>not: %1</source>
-        <translation>nicht: %1</translation>
-    </message>
 </context>
 <context>
     <name>DriveDesk::PlantFeature</name>
@@ -5462,6 +5440,17 @@ Verbindungsdialog.
     <message>
         <source>dry run</source>
         <translation>Probelauf</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n drive(s) %2</source>
+        <translation>
+            <numerusform>%1 von %n Umrichter %2</numerusform>
+            <numerusform>%1 von %n Umrichtern %2</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not: %1</source>
+        <translation>nicht: %1</translation>
     </message>
 </context>
 <context>

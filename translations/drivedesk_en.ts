@@ -660,17 +660,6 @@
         <source>only on the drive</source>
         <translation>only on the drive</translation>
     </message>
-    <message numerus="yes">
-        <source>%1 of %n drive(s) %2</source>
-        <translation>
-            <numerusform>%1 of %n drive %2</numerusform>
-            <numerusform>%1 of %n drives %2</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>not: %1</source>
-        <translation>not: %1</translation>
-    </message>
     <message>
         <source>checked, nothing written</source>
         <translation>checked, nothing written</translation>
@@ -3338,17 +3327,6 @@
         <source>%1 and %2 read; the compare window shows them side by side.</source>
         <translation>%1 and %2 read; the compare window shows them side by side.</translation>
     </message>
-    <message numerus="yes">
-        <source>%1 of %n drive(s) %2</source>
-        <translation>
-            <numerusform>%1 of %n drive %2</numerusform>
-            <numerusform>%1 of %n drives %2</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>not: %1</source>
-        <translation>not: %1</translation>
-    </message>
 </context>
 <context>
     <name>DriveDesk::PlantFeature</name>
@@ -5462,6 +5440,17 @@ dialog.
     <message>
         <source>dry run</source>
         <translation>dry run</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n drive(s) %2</source>
+        <translation>
+            <numerusform>%1 of %n drive %2</numerusform>
+            <numerusform>%1 of %n drives %2</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not: %1</source>
+        <translation>not: %1</translation>
     </message>
 </context>
 <context>

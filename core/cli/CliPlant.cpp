@@ -206,7 +206,7 @@ void CliPlant::printFind(const QList<PlantDrive> &drives)
                   << '\n';
         }
     }
-    m_out << summary(drives, PlantDrive::outcomeText(PlantDrive::Outcome::Found)) << '\n';
+    m_out << PlantDrive::summary(drives, PlantDrive::outcomeText(PlantDrive::Outcome::Found)) << '\n';
 }
 
 void CliPlant::printBackup(const QList<PlantDrive> &drives)
@@ -222,7 +222,7 @@ void CliPlant::printBackup(const QList<PlantDrive> &drives)
                   << '\n';
         }
     }
-    m_out << summary(drives, PlantDrive::outcomeText(PlantDrive::Outcome::Saved)) << '\n';
+    m_out << PlantDrive::summary(drives, PlantDrive::outcomeText(PlantDrive::Outcome::Saved)) << '\n';
 }
 
 void CliPlant::printVerify(const QList<PlantDrive> &drives)
@@ -255,7 +255,7 @@ void CliPlant::printVerify(const QList<PlantDrive> &drives)
                   << '\n';
         }
     }
-    m_out << summary(drives, PlantDrive::outcomeText(PlantDrive::Outcome::Equal)) << '\n';
+    m_out << PlantDrive::summary(drives, PlantDrive::outcomeText(PlantDrive::Outcome::Equal)) << '\n';
 }
 
 void CliPlant::printDownload(const QList<PlantDrive> &drives)
@@ -268,7 +268,7 @@ void CliPlant::printDownload(const QList<PlantDrive> &drives)
         for (const QString &line : drive.details.split(QLatin1Char('\n'), Qt::SkipEmptyParts))
             m_out << QStringLiteral("  ") << line << '\n';
     }
-    m_out << summary(drives, m_plant.dryRun ? tr("checked, nothing written")
+    m_out << PlantDrive::summary(drives, m_plant.dryRun ? tr("checked, nothing written")
                                             : tr("downloaded or already equal"))
           << '\n';
 }
@@ -309,24 +309,6 @@ void CliPlant::printVerifyJson(const QList<PlantDrive> &drives)
         list.append(entry);
     }
     m_out << QJsonDocument(QJsonObject{{QStringLiteral("drives"), list}}).toJson();
-}
-
-QString CliPlant::summary(const QList<PlantDrive> &drives, const QString &goodText) const
-{
-    const qsizetype good = std::count_if(drives.cbegin(), drives.cend(),
-                                         [](const PlantDrive &d) { return d.isGood(); });
-    QString text = tr("%1 of %n drive(s) %2", nullptr, int(drives.size())).arg(good).arg(goodText);
-    QStringList others;
-    for (const PlantDrive &drive : drives) {
-        if (drive.isGood())
-            continue;
-        const QString why = drive.reason.isEmpty() ? PlantDrive::outcomeText(drive.outcome)
-                                                   : drive.reason;
-        others << QStringLiteral("%1 (%2)").arg(drive.name(), why);
-    }
-    if (!others.isEmpty())
-        text += QStringLiteral("; ") + tr("not: %1").arg(others.join(QStringLiteral(", ")));
-    return text;
 }
 
 void CliPlant::end(int exitCode, const QString &message)

@@ -47,7 +47,6 @@ private:
     void printVerifyJson(const QList<PlantDrive> &drives);
     void printDownload(const QList<PlantDrive> &drives);
     // "3 of 5 drives saved; unreachable: dead (cannot connect ...)".
-    QString summary(const QList<PlantDrive> &drives, const QString &goodText) const;
     void end(int exitCode, const QString &message = {});
 
     CliRequest m_request;

@@ -42,6 +42,23 @@ QString PlantDrive::outcomeText(Outcome outcome)
     return {};
 }
 
+QString PlantDrive::summary(const QList<PlantDrive> &drives, const QString &goodText)
+{
+    const qsizetype good = std::count_if(drives.cbegin(), drives.cend(),
+                                         [](const PlantDrive &d) { return d.isGood(); });
+    QString text = tr("%1 of %n drive(s) %2", nullptr, int(drives.size())).arg(good).arg(goodText);
+    QStringList others;
+    for (const PlantDrive &drive : drives) {
+        if (drive.isGood())
+            continue;
+        const QString why = drive.reason.isEmpty() ? outcomeText(drive.outcome) : drive.reason;
+        others << QStringLiteral("%1 (%2)").arg(drive.name(), why);
+    }
+    if (!others.isEmpty())
+        text += QStringLiteral("; ") + tr("not: %1").arg(others.join(QStringLiteral(", ")));
+    return text;
+}
+
 PlantRun::PlantRun(Plant plant, Task task, QString directory, LinkMaker makeLink, QObject *parent)
     : QObject(parent)
     , m_plant(std::move(plant))

@@ -53,6 +53,9 @@ public:
     }
     // "saved", "equal", "another kind of drive", ...
     static QString outcomeText(Outcome outcome);
+    // One line for a run: "2 of 3 drives equal; not: cabinet-5 (different)", each drive that
+    // did not end well named with its reason (or its outcome where it has none).
+    static QString summary(const QList<PlantDrive> &drives, const QString &goodText);
 };
 
 // Works through every drive of a plant, as `drivedesk-cli plant` and a window both run it:

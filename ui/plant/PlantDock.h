@@ -84,7 +84,6 @@ private:
     void findFinished(const PlantRun &run);
     void downloadPlanned(const QList<PlantDrive> &drives);
     void compareRead(const QList<PlantDrive> &drives);
-    QString summary(const QList<PlantDrive> &drives, const QString &goodText) const;
     void showMessage(const QString &text);
 
     WindowFrame &m_frame;

@@ -90,16 +90,16 @@ void PlantDock::onJobFinished()
         findFinished(*run);
         break;
     case Job::Backup:
-        showMessage(summary(drives, PlantDrive::outcomeText(PlantDrive::Outcome::Saved)));
+        showMessage(PlantDrive::summary(drives, PlantDrive::outcomeText(PlantDrive::Outcome::Saved)));
         break;
     case Job::Verify:
-        showMessage(summary(drives, PlantDrive::outcomeText(PlantDrive::Outcome::Equal)));
+        showMessage(PlantDrive::summary(drives, PlantDrive::outcomeText(PlantDrive::Outcome::Equal)));
         break;
     case Job::DownloadLook:
         downloadPlanned(drives);
         break;
     case Job::Download: {
-        const QString text = summary(drives, tr("downloaded or already equal"));
+        const QString text = PlantDrive::summary(drives, tr("downloaded or already equal"));
         auto *report = new PlantReportDialog(tr("Download All: Report"), text, drives, false, this);
         m_report = report;
         report->setAttribute(Qt::WA_DeleteOnClose);
@@ -123,7 +123,7 @@ void PlantDock::findFinished(const PlantRun &run)
     const bool noneAnswered = std::all_of(drives.cbegin(), drives.cend(), [](const PlantDrive &d) {
         return d.outcome == PlantDrive::Outcome::Unreachable;
     });
-    QString text = summary(drives, PlantDrive::outcomeText(PlantDrive::Outcome::Found));
+    QString text = PlantDrive::summary(drives, PlantDrive::outcomeText(PlantDrive::Outcome::Found));
     // As `plant find --update`: the addresses found on the links searched to the end go into
     // the plant file, and nothing else in it changes.
     if (!noneAnswered && run.plant() != m_jobPlant) {
@@ -178,22 +178,6 @@ void PlantDock::compareRead(const QList<PlantDrive> &drives)
     showMessage(tr("%1 and %2 read; the compare window shows them side by side.")
                     .arg(drives.at(0).name(), drives.at(1).name()));
     emit compareRequested(files.at(0), files.at(1));
-}
-
-QString PlantDock::summary(const QList<PlantDrive> &drives, const QString &goodText) const
-{
-    const qsizetype good = std::count_if(drives.cbegin(), drives.cend(),
-                                         [](const PlantDrive &d) { return d.isGood(); });
-    QString text = tr("%1 of %n drive(s) %2", nullptr, int(drives.size())).arg(good).arg(goodText);
-    QStringList others;
-    for (const PlantDrive &drive : drives) {
-        if (!drive.isGood())
-            others << QStringLiteral("%1 (%2)").arg(drive.name(),
-                                                    PlantDrive::outcomeText(drive.outcome));
-    }
-    if (!others.isEmpty())
-        text += QStringLiteral("; ") + tr("not: %1").arg(others.join(QStringLiteral(", ")));
-    return text;
 }
 
 } // namespace DriveDesk
