@@ -5,9 +5,9 @@
 // Goals: no stall longer than 50 ms; a keystroke under 30 ms. Runs offscreen unless
 // QT_QPA_PLATFORM says otherwise.
 #include "edit/PollingController.h"
-#include "main/DriveSession.h"
+#include "frame/DriveSession.h"
 #include "main/MainWindow.h"
-#include "main/ParameterBrowser.h"
+#include "frame/ParameterBrowser.h"
 #include "model/ParameterModel.h"
 
 #include <QAction>

@@ -2726,40 +2726,12 @@
         <translation>Keine Verbindung zu %1: %2. Was vorher angezeigt wurde, bleibt stehen.</translation>
     </message>
     <message>
-        <source>&amp;Open Parameter File...</source>
-        <translation>Parameterdatei ö&amp;ffnen …</translation>
-    </message>
-    <message>
-        <source>Show and edit a parameter file with no drive</source>
-        <translation>Eine Parameterdatei ohne Umrichter anzeigen und bearbeiten</translation>
-    </message>
-    <message>
-        <source>&amp;Save</source>
-        <translation>&amp;Speichern</translation>
-    </message>
-    <message>
-        <source>Save the changes of the parameter file shown</source>
-        <translation>Die Änderungen der angezeigten Parameterdatei speichern</translation>
-    </message>
-    <message>
-        <source>Save &amp;As...</source>
-        <translation>Speichern &amp;unter …</translation>
-    </message>
-    <message>
-        <source>Save the parameter file shown under another name</source>
-        <translation>Die angezeigte Parameterdatei unter einem anderen Namen speichern</translation>
-    </message>
-    <message>
         <source>Save &amp;Drive to File...</source>
         <translation>Umrichter in &amp;Datei sichern …</translation>
     </message>
     <message>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
-    </message>
-    <message>
-        <source>Open Parameter File</source>
-        <translation>Parameterdatei öffnen</translation>
     </message>
     <message numerus="yes">
         <source>Opened %1: %n parameter(s), no drive connected.</source>
@@ -2781,20 +2753,8 @@
         <translation>Die Parameterdatei enthält keine Parameter.</translation>
     </message>
     <message>
-        <source>No drive is connected: the table shows the parameter file %1, and edits change the file only, once you save it (%2). Nothing is sent to a drive.</source>
-        <translation>Kein Umrichter verbunden: die Tabelle zeigt die Parameterdatei %1, und Änderungen ändern nur die Datei, sobald Sie sie speichern (%2). Nichts wird an einen Umrichter gesendet.</translation>
-    </message>
-    <message>
-        <source>Save Parameter File</source>
-        <translation>Parameterdatei speichern</translation>
-    </message>
-    <message>
         <source>Could not save %1: %2. The file on disk is as it was.</source>
         <translation>%1 konnte nicht gespeichert werden: %2. Die Datei auf dem Datenträger ist unverändert.</translation>
-    </message>
-    <message>
-        <source>Saved %1.</source>
-        <translation>%1 gespeichert.</translation>
     </message>
     <message>
         <source>Save Drive to File</source>
@@ -2812,18 +2772,6 @@
         <translation>%1[*] - DriveDesk</translation>
     </message>
     <message>
-        <source>Unsaved Changes</source>
-        <translation>Ungespeicherte Änderungen</translation>
-    </message>
-    <message>
-        <source>The parameter file %1 has changes that are not saved.</source>
-        <translation>Die Parameterdatei %1 hat Änderungen, die nicht gespeichert sind.</translation>
-    </message>
-    <message>
-        <source>Save them before going on?</source>
-        <translation>Vor dem Fortfahren speichern?</translation>
-    </message>
-    <message>
         <source>Replace File</source>
         <translation>Datei ersetzen</translation>
     </message>
@@ -2838,10 +2786,6 @@
     <message>
         <source>DriveDesk parameter files (*.json)</source>
         <translation>DriveDesk-Parameterdateien (*.json)</translation>
-    </message>
-    <message>
-        <source>Save Parameter File As</source>
-        <translation>Parameterdatei speichern unter</translation>
     </message>
     <message>
         <source>Reconnected to %1; the drive was read only in part: reading it again.</source>
@@ -2889,10 +2833,6 @@
             <numerusform>… und %n weiterer (Details anzeigen …)</numerusform>
             <numerusform>… und %n weitere (Details anzeigen …)</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Could not open the file: %1</source>
-        <translation>Die Datei konnte nicht geöffnet werden: %1</translation>
     </message>
 </context>
 <context>
@@ -2972,6 +2912,73 @@
         <source>%1, %2</source>
         <comment>parameter, set</comment>
         <translation>%1, %2</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ParameterFileFeature</name>
+    <message>
+        <source>&amp;Open Parameter File...</source>
+        <translation>Parameterdatei ö&amp;ffnen …</translation>
+    </message>
+    <message>
+        <source>Show and edit a parameter file with no drive</source>
+        <translation>Eine Parameterdatei ohne Umrichter anzeigen und bearbeiten</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <source>Save the changes of the parameter file shown</source>
+        <translation>Die Änderungen der angezeigten Parameterdatei speichern</translation>
+    </message>
+    <message>
+        <source>Save &amp;As...</source>
+        <translation>Speichern &amp;unter …</translation>
+    </message>
+    <message>
+        <source>Save the parameter file shown under another name</source>
+        <translation>Die angezeigte Parameterdatei unter einem anderen Namen speichern</translation>
+    </message>
+    <message>
+        <source>Open Parameter File</source>
+        <translation>Parameterdatei öffnen</translation>
+    </message>
+    <message>
+        <source>Could not open the file: %1</source>
+        <translation>Die Datei konnte nicht geöffnet werden: %1</translation>
+    </message>
+    <message>
+        <source>No drive is connected: the table shows the parameter file %1, and edits change the file only, once you save it (%2). Nothing is sent to a drive.</source>
+        <translation>Kein Umrichter verbunden: die Tabelle zeigt die Parameterdatei %1, und Änderungen ändern nur die Datei, sobald Sie sie speichern (%2). Nichts wird an einen Umrichter gesendet.</translation>
+    </message>
+    <message>
+        <source>Save Parameter File</source>
+        <translation>Parameterdatei speichern</translation>
+    </message>
+    <message>
+        <source>Could not save %1: %2. The file on disk is as it was.</source>
+        <translation>%1 konnte nicht gespeichert werden: %2. Die Datei auf dem Datenträger ist unverändert.</translation>
+    </message>
+    <message>
+        <source>Saved %1.</source>
+        <translation>%1 gespeichert.</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>The parameter file %1 has changes that are not saved.</source>
+        <translation>Die Parameterdatei %1 hat Änderungen, die nicht gespeichert sind.</translation>
+    </message>
+    <message>
+        <source>Save them before going on?</source>
+        <translation>Vor dem Fortfahren speichern?</translation>
+    </message>
+    <message>
+        <source>Save Parameter File As</source>
+        <translation>Parameterdatei speichern unter</translation>
     </message>
 </context>
 <context>

@@ -2726,40 +2726,12 @@
         <translation>Could not connect to %1: %2. What was shown before stays.</translation>
     </message>
     <message>
-        <source>&amp;Open Parameter File...</source>
-        <translation>&amp;Open Parameter File...</translation>
-    </message>
-    <message>
-        <source>Show and edit a parameter file with no drive</source>
-        <translation>Show and edit a parameter file with no drive</translation>
-    </message>
-    <message>
-        <source>&amp;Save</source>
-        <translation>&amp;Save</translation>
-    </message>
-    <message>
-        <source>Save the changes of the parameter file shown</source>
-        <translation>Save the changes of the parameter file shown</translation>
-    </message>
-    <message>
-        <source>Save &amp;As...</source>
-        <translation>Save &amp;As...</translation>
-    </message>
-    <message>
-        <source>Save the parameter file shown under another name</source>
-        <translation>Save the parameter file shown under another name</translation>
-    </message>
-    <message>
         <source>Save &amp;Drive to File...</source>
         <translation>Save &amp;Drive to File...</translation>
     </message>
     <message>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
-    </message>
-    <message>
-        <source>Open Parameter File</source>
-        <translation>Open Parameter File</translation>
     </message>
     <message numerus="yes">
         <source>Opened %1: %n parameter(s), no drive connected.</source>
@@ -2781,20 +2753,8 @@
         <translation>The parameter file holds no parameters.</translation>
     </message>
     <message>
-        <source>No drive is connected: the table shows the parameter file %1, and edits change the file only, once you save it (%2). Nothing is sent to a drive.</source>
-        <translation>No drive is connected: the table shows the parameter file %1, and edits change the file only, once you save it (%2). Nothing is sent to a drive.</translation>
-    </message>
-    <message>
-        <source>Save Parameter File</source>
-        <translation>Save Parameter File</translation>
-    </message>
-    <message>
         <source>Could not save %1: %2. The file on disk is as it was.</source>
         <translation>Could not save %1: %2. The file on disk is as it was.</translation>
-    </message>
-    <message>
-        <source>Saved %1.</source>
-        <translation>Saved %1.</translation>
     </message>
     <message>
         <source>Save Drive to File</source>
@@ -2812,18 +2772,6 @@
         <translation>%1[*] - DriveDesk</translation>
     </message>
     <message>
-        <source>Unsaved Changes</source>
-        <translation>Unsaved Changes</translation>
-    </message>
-    <message>
-        <source>The parameter file %1 has changes that are not saved.</source>
-        <translation>The parameter file %1 has changes that are not saved.</translation>
-    </message>
-    <message>
-        <source>Save them before going on?</source>
-        <translation>Save them before going on?</translation>
-    </message>
-    <message>
         <source>Replace File</source>
         <translation>Replace File</translation>
     </message>
@@ -2838,10 +2786,6 @@
     <message>
         <source>DriveDesk parameter files (*.json)</source>
         <translation>DriveDesk parameter files (*.json)</translation>
-    </message>
-    <message>
-        <source>Save Parameter File As</source>
-        <translation>Save Parameter File As</translation>
     </message>
     <message>
         <source>Reconnected to %1; the drive was read only in part: reading it again.</source>
@@ -2889,10 +2833,6 @@
             <numerusform>... and %n more (Show Details...)</numerusform>
             <numerusform>... and %n more (Show Details...)</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Could not open the file: %1</source>
-        <translation>Could not open the file: %1</translation>
     </message>
 </context>
 <context>
@@ -2972,6 +2912,73 @@
         <source>%1, %2</source>
         <comment>parameter, set</comment>
         <translation>%1, %2</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ParameterFileFeature</name>
+    <message>
+        <source>&amp;Open Parameter File...</source>
+        <translation>&amp;Open Parameter File...</translation>
+    </message>
+    <message>
+        <source>Show and edit a parameter file with no drive</source>
+        <translation>Show and edit a parameter file with no drive</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Save</translation>
+    </message>
+    <message>
+        <source>Save the changes of the parameter file shown</source>
+        <translation>Save the changes of the parameter file shown</translation>
+    </message>
+    <message>
+        <source>Save &amp;As...</source>
+        <translation>Save &amp;As...</translation>
+    </message>
+    <message>
+        <source>Save the parameter file shown under another name</source>
+        <translation>Save the parameter file shown under another name</translation>
+    </message>
+    <message>
+        <source>Open Parameter File</source>
+        <translation>Open Parameter File</translation>
+    </message>
+    <message>
+        <source>Could not open the file: %1</source>
+        <translation>Could not open the file: %1</translation>
+    </message>
+    <message>
+        <source>No drive is connected: the table shows the parameter file %1, and edits change the file only, once you save it (%2). Nothing is sent to a drive.</source>
+        <translation>No drive is connected: the table shows the parameter file %1, and edits change the file only, once you save it (%2). Nothing is sent to a drive.</translation>
+    </message>
+    <message>
+        <source>Save Parameter File</source>
+        <translation>Save Parameter File</translation>
+    </message>
+    <message>
+        <source>Could not save %1: %2. The file on disk is as it was.</source>
+        <translation>Could not save %1: %2. The file on disk is as it was.</translation>
+    </message>
+    <message>
+        <source>Saved %1.</source>
+        <translation>Saved %1.</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Unsaved Changes</translation>
+    </message>
+    <message>
+        <source>The parameter file %1 has changes that are not saved.</source>
+        <translation>The parameter file %1 has changes that are not saved.</translation>
+    </message>
+    <message>
+        <source>Save them before going on?</source>
+        <translation>Save them before going on?</translation>
+    </message>
+    <message>
+        <source>Save Parameter File As</source>
+        <translation>Save Parameter File As</translation>
     </message>
 </context>
 <context>

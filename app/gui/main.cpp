@@ -1,6 +1,7 @@
 // drivedesk: the parameter editor's window, connected to the drive the command line names,
 // showing the parameter file it names, or opening the connection dialog.
 #include "Translations.h"
+#include "files/ParameterFileFeature.h"
 #include "main/MainWindow.h"
 #include "main/StartupOptions.h"
 
@@ -44,11 +45,14 @@ int main(int argc, char **argv)
 
     DriveDesk::MainWindow window(language);
     window.show();
-    if (!options.parameterFile.isEmpty())
-        window.openParameterFile(options.parameterFile); // a file it cannot read: says why
-    else if (options.connection)
+    if (!options.parameterFile.isEmpty()) {
+        // A file it cannot read: it says why.
+        window.feature<DriveDesk::ParameterFileFeature>()->openParameterFile(
+            options.parameterFile);
+    } else if (options.connection) {
         window.connectTo(*options.connection);
-    else
+    } else {
         QTimer::singleShot(0, &window, &DriveDesk::MainWindow::openConnectionDialog);
+    }
     return app.exec();
 }

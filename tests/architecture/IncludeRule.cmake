@@ -4,8 +4,9 @@
 #
 #   model                  includes no other folder of ui/
 #   delegate               model
-#   main (the frame)       model, delegate: never a feature
-#   a feature folder       model, delegate, main: never another feature
+#   frame                  model, delegate: never the window, never a feature
+#   main (the window)      model, delegate, frame: never a feature
+#   a feature folder       model, delegate, frame: never the window, never another feature
 #
 # One file is the exception: ui/main/WindowFeatures.cpp, the list of the features, includes each.
 # An include "X/Y.h" names a folder of ui/ only where ui/X/Y.h exists: "scope/ScopeRecording.h"
@@ -15,16 +16,17 @@ if(NOT UI_DIR OR NOT IS_DIRECTORY "${UI_DIR}")
     message(FATAL_ERROR "UI_DIR must name the ui/ folder of the sources")
 endif()
 
-set(features edit monitor transfer compare scope plant)
+set(features files edit monitor transfer compare scope plant)
 set(allowed_model model)
 set(allowed_delegate model delegate)
-set(allowed_main model delegate main)
+set(allowed_frame model delegate frame)
+set(allowed_main model delegate frame main)
 foreach(feature IN LISTS features)
-    set(allowed_${feature} model delegate main ${feature})
+    set(allowed_${feature} model delegate frame ${feature})
 endforeach()
 set(exceptions main/WindowFeatures.cpp)
 
-set(folders model delegate main ${features})
+set(folders model delegate frame main ${features})
 set(violations "")
 set(checked 0)
 foreach(folder IN LISTS folders)

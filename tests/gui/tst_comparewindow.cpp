@@ -4,6 +4,7 @@
 #include "compare/CompareWindow.h"
 #include "compare/ComparisonFilterModel.h"
 #include "compare/ComparisonModel.h"
+#include "files/ParameterFileFeature.h"
 #include "transfer/DownloadDialog.h"
 #include "transfer/DownloadFeature.h"
 #include "parameters/ChosenValues.h"
@@ -334,7 +335,7 @@ private slots:
     {
         MainWindow main;
         main.show();
-        QVERIFY(main.openParameterFile(m_pathA));
+        QVERIFY(main.feature<ParameterFileFeature>()->openParameterFile(m_pathA));
         auto *feature = main.findChild<CompareFeature *>();
         QVERIFY(feature);
         CompareWindow *window = feature->showCompareWindow();
@@ -348,13 +349,13 @@ private slots:
         window->writeChosen(true);
         // An unsaved, undoable edit of the window; the file on disk is as it was.
         QCOMPARE(main.model()->value(kFixedSpeed1, 5), -300);
-        QVERIFY(main.hasUnsavedChanges());
+        QVERIFY(main.feature<ParameterFileFeature>()->hasUnsavedChanges());
         QCOMPARE(load(m_pathA), m_a);
         QCOMPARE(window->comparisonModel()->comparison().count(ComparisonRow::State::Different),
                  2);
         main.undoStack()->undo();
         QCOMPARE(main.model()->value(kFixedSpeed1, 5), 100);
-        QVERIFY(!main.hasUnsavedChanges());
+        QVERIFY(!main.feature<ParameterFileFeature>()->hasUnsavedChanges());
         // Chosen by its path, the file shown is still written through the window.
         window->setSide(true, CompareWindow::Source::File, m_pathA);
         QVERIFY(window->compare());

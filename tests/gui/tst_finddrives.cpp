@@ -1,7 +1,7 @@
 #include "tst_mainwindow_support.h"
 
 #include "main/ConnectionDialog.h"
-#include "main/DriveSession.h"
+#include "frame/DriveSession.h"
 #include "main/FindDrivesDialog.h"
 #include "monitor/TelegramMonitor.h"
 #include "monitor/TrafficModel.h"

@@ -1,8 +1,8 @@
 #include "tst_mainwindow_support.h"
 
 #include "edit/PollingController.h"
-#include "main/DriveSession.h"
-#include "main/NoticeBar.h"
+#include "frame/DriveSession.h"
+#include "frame/NoticeBar.h"
 #include "main/RecentConnections.h"
 #include "parameters/ParameterProperties.h"
 #include "protocol/hsp5/Hsp5Codec.h"

@@ -2,7 +2,7 @@
 
 #include "main/ConnectionDialog.h"
 #include "main/DriveInfoDialog.h"
-#include "main/DriveSession.h"
+#include "frame/DriveSession.h"
 #include "main/FindDrivesDialog.h"
 #include "main/RecentConnections.h"
 #include "main/StartupOptions.h"

@@ -4,7 +4,7 @@
 #include "edit/AccessController.h"
 #include "edit/PasswordDialog.h"
 #include "edit/SetsDialog.h"
-#include "main/DriveSession.h"
+#include "frame/DriveSession.h"
 
 #include <QAction>
 #include <QApplication>

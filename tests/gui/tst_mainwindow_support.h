@@ -2,10 +2,10 @@
 
 #include "bus/SimulatedBus.h"
 #include "bus/SimulatorServer.h"
-#include "main/DriveSession.h"
+#include "frame/DriveSession.h"
 #include "main/MainWindow.h"
-#include "main/ParameterBrowser.h"
-#include "main/ParameterView.h"
+#include "frame/ParameterBrowser.h"
+#include "frame/ParameterView.h"
 #include "model/ParameterFilterModel.h"
 #include "model/ParameterModel.h"
 #include "transfer/SaveDriveFeature.h"

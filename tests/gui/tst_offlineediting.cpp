@@ -1,7 +1,8 @@
 #include "tst_mainwindow_support.h"
 
-#include "main/ParameterEditing.h"
-#include "main/NoticeBar.h"
+#include "files/ParameterFileFeature.h"
+#include "frame/NoticeBar.h"
+#include "frame/ParameterEditing.h"
 #include "main/StartupOptions.h"
 #include "parameters/ParameterAccess.h"
 #include "parameters/ParameterDocument.h"
@@ -57,7 +58,7 @@ private:
         QFile::remove(copy);
         if (!QFile::copy(m_driveFile, copy))
             return {};
-        if (!m_window->openParameterFile(copy))
+        if (!files()->openParameterFile(copy))
             return {};
         return copy;
     }
@@ -169,6 +170,8 @@ private slots:
 
     void cleanup() { m_window.reset(); }
 
+    ParameterFileFeature *files() const { return m_window->feature<ParameterFileFeature>(); }
+
     void fileShowsWithNoDrive()
     {
         const QString file = openCopy(QStringLiteral("shown.json"));
@@ -206,7 +209,7 @@ private slots:
                  QStringLiteral("250 1/min"));
         QCOMPARE(stack->count(), 1);
         QVERIFY(m_window->isWindowModified());
-        QVERIFY(m_window->hasUnsavedChanges());
+        QVERIFY(files()->hasUnsavedChanges());
         QVERIFY(statusMessage().contains(QStringLiteral("op.20")));
 
         QVERIFY(action("undoAction")->isEnabled());
@@ -241,7 +244,7 @@ private slots:
         action("undoAction")->trigger();
         QVERIFY(m_window->isWindowModified());
         const QString other = path(QStringLiteral("saved-as.json"));
-        QVERIFY(m_window->saveParameterFileAs(other));
+        QVERIFY(files()->saveParameterFileAs(other));
         QCOMPARE(m_window->parameterFilePath(), other);
         QVERIFY(m_window->windowTitle().contains(QStringLiteral("saved-as.json")));
         QVERIFY(!m_window->isWindowModified());
@@ -351,7 +354,7 @@ private slots:
         }
         const QString file = path(QStringLiteral("unread.json"));
         QVERIFY(ParameterDocument::save(file, unread));
-        QVERIFY(m_window->openParameterFile(file));
+        QVERIFY(files()->openParameterFile(file));
         QVERIFY(m_window->model()->requestWrite(kFixedSpeed1, 0x10, 42));
         QCOMPARE(m_window->model()->value(kFixedSpeed1, 4), 42);
         m_window->undoStack()->undo();
@@ -373,7 +376,7 @@ private slots:
         QVERIFY(out.open(QIODevice::WriteOnly));
         out.write("{\n    \"format\": \"drivedesk-parameters\",\n    \"version\": 1,\n    ]\n}\n");
         out.close();
-        QVERIFY(!m_window->openParameterFile(corrupt));
+        QVERIFY(!files()->openParameterFile(corrupt));
 
         QVERIFY2(statusMessage().contains(QStringLiteral("line 4")), qPrintable(statusMessage()));
         QVERIFY(statusMessage().contains(QStringLiteral("corrupt.json")));
@@ -391,7 +394,7 @@ private slots:
     void corruptFileLeavesTheDriveConnected()
     {
         QVERIFY(connectAndRead(*m_window, simulated()));
-        QVERIFY(!m_window->openParameterFile(path(QStringLiteral("missing.json"))));
+        QVERIFY(!files()->openParameterFile(path(QStringLiteral("missing.json"))));
         QVERIFY(m_window->isReady());
         QVERIFY(m_window->parameterFilePath().isEmpty());
     }
@@ -446,7 +449,7 @@ private slots:
         QVERIFY(QFile::copy(m_driveFile, second));
 
         // Cancel: the first file stays, changed.
-        QVERIFY(m_window->openParameterFile(second));
+        QVERIFY(files()->openParameterFile(second));
         QMessageBox *box = messageBox("unsavedChangesQuestion");
         QVERIFY(box);
         box->button(QMessageBox::Cancel)->click();
@@ -454,12 +457,22 @@ private slots:
         QCOMPARE(m_window->model()->value(kDemoPeriod, 0), 300);
 
         // Discard: the second file shows; the first is as it was on disk.
-        QVERIFY(m_window->openParameterFile(second));
+        QVERIFY(files()->openParameterFile(second));
         box = messageBox("unsavedChangesQuestion");
         QVERIFY(box);
         box->button(QMessageBox::Discard)->click();
         QCOMPARE(m_window->parameterFilePath(), second);
         QCOMPARE(ParameterDocument::load(first), m_driveDocument);
+
+        // Connecting with changes: asked first; Cancel keeps the file and connects nowhere.
+        QVERIFY(m_window->model()->requestWrite(kDemoPeriod, 0x01, 350));
+        m_window->connectTo(simulated());
+        box = messageBox("unsavedChangesQuestion");
+        QVERIFY(box);
+        box->button(QMessageBox::Cancel)->click();
+        QVERIFY(!m_window->session());
+        QCOMPARE(m_window->parameterFilePath(), second);
+        QCOMPARE(m_window->model()->value(kDemoPeriod, 0), 350);
 
         // Closing with changes: Save, then the window closes.
         QVERIFY(m_window->model()->requestWrite(kDemoPeriod, 0x01, 400));

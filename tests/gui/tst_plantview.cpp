@@ -2,7 +2,7 @@
 
 #include "compare/CompareWindow.h"
 #include "compare/ComparisonModel.h"
-#include "main/NoticeBar.h"
+#include "frame/NoticeBar.h"
 #include "plant/PlantDock.h"
 #include "plant/PlantFeature.h"
 #include "plant/PlantLinkDialog.h"

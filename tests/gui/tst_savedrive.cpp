@@ -1,6 +1,6 @@
 #include "tst_mainwindow_support.h"
 
-#include "main/NoticeBar.h"
+#include "frame/NoticeBar.h"
 #include "parameters/ParameterDocument.h"
 
 #include <QAction>

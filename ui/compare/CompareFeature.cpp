@@ -2,8 +2,8 @@
 
 #include "CompareWindow.h"
 
-#include "main/DriveSession.h"
-#include "main/ParameterEditing.h"
+#include "frame/DriveSession.h"
+#include "frame/ParameterEditing.h"
 #include "model/ParameterModel.h"
 
 #include <QAction>

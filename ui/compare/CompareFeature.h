@@ -3,7 +3,7 @@
 #include "CompareHost.h"
 #include "CompareWindow.h"
 
-#include "main/WindowFeature.h"
+#include "frame/WindowFeature.h"
 
 #include <QPointer>
 

@@ -5,7 +5,7 @@
 #include "ComparisonFilterModel.h"
 #include "ComparisonModel.h"
 
-#include "main/FrameSupport.h"
+#include "frame/FrameSupport.h"
 #include "model/ParameterModel.h"
 #include "parameters/ParameterComparison.h"
 

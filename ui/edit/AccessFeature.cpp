@@ -3,10 +3,10 @@
 #include "AccessController.h"
 #include "PasswordDialog.h"
 
-#include "main/DriveSession.h"
-#include "main/FrameSupport.h"
-#include "main/ParameterBrowser.h"
-#include "main/ParameterView.h"
+#include "frame/DriveSession.h"
+#include "frame/FrameSupport.h"
+#include "frame/ParameterBrowser.h"
+#include "frame/ParameterView.h"
 
 #include <QAction>
 #include <QLabel>

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "DocumentValueCommand.h"
-#include "main/ParameterEditing.h"
+#include "frame/ParameterEditing.h"
 
 #include <QHash>
 #include <QObject>

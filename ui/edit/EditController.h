@@ -1,6 +1,6 @@
 #pragma once
 
-#include "main/ParameterEditing.h"
+#include "frame/ParameterEditing.h"
 #include "ValueReadBatch.h"
 #include "WriteValueCommand.h"
 

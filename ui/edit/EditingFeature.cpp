@@ -4,11 +4,11 @@
 #include "EditController.h"
 #include "SetsDialog.h"
 
-#include "main/DriveSession.h"
-#include "main/FrameSupport.h"
-#include "main/ParameterBrowser.h"
-#include "main/ParameterEditing.h"
-#include "main/ParameterView.h"
+#include "frame/DriveSession.h"
+#include "frame/FrameSupport.h"
+#include "frame/ParameterBrowser.h"
+#include "frame/ParameterEditing.h"
+#include "frame/ParameterView.h"
 #include "model/ParameterModel.h"
 #include "session/ValueReads.h"
 

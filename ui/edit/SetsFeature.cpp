@@ -1,6 +1,6 @@
 #include "SetsFeature.h"
 
-#include "main/DriveSession.h"
+#include "frame/DriveSession.h"
 #include "model/ParameterModel.h"
 
 #include <QCoreApplication>

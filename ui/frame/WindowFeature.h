@@ -4,6 +4,8 @@
 
 #include <QObject>
 
+#include <functional>
+
 namespace DriveDesk {
 
 // One feature of the window (editing, polling, the password level, the telegram monitor): it
@@ -36,6 +38,12 @@ public:
     virtual bool isReadingDrive() const { return false; }
     // The window closes: what the feature remembers goes to QSettings.
     virtual void saveSettings() { }
+    // The feature holds work that is not saved (a parameter file's changes).
+    virtual bool holdsUnsavedWork() const { return false; }
+    // The window is about to show something else or to close: `proceed` runs once the work
+    // this feature holds is saved or given up (asked about if need be), never when the user
+    // chose to stay. The frame asks every feature in turn.
+    virtual void settle(std::function<void()> proceed) { proceed(); }
 
 protected:
     WindowFrame &frame() const { return m_frame; }

@@ -16,6 +16,7 @@ class QWidget;
 namespace DriveDesk {
 
 class DriveClient;
+struct DriveDescription;
 class DriveSession;
 class NoticeBar;
 class ParameterBrowser;
@@ -54,6 +55,12 @@ public:
     virtual bool isReady() const = 0;
     // The parameter file the window shows instead of a drive; empty while it shows none.
     virtual QString parameterFilePath() const = 0;
+    // Shows `drive`, read from the parameter file at `path`, instead of a drive: a connected
+    // drive is disconnected, every feature attaches the file (WindowFeature::attachFile), the
+    // title names it and marks its unsaved changes (the undo stack's).
+    virtual void showParameterFile(const DriveDescription &drive, const QString &path) = 0;
+    // The file shown was saved under another name: it is that file now.
+    virtual void renameParameterFile(const QString &path) = 0;
     // Where edits go now: the drive's edit controller (connected and read) or the editor of the
     // parameter file shown instead of a drive, whichever feature offers it; nullptr while
     // nothing may be edited.

@@ -1,10 +1,10 @@
 #include "MainWindow.h"
 
 #include "DriveFavourites.h"
-#include "DriveSession.h"
-#include "NoticeBar.h"
-#include "ParameterBrowser.h"
-#include "ParameterView.h"
+#include "frame/DriveSession.h"
+#include "frame/NoticeBar.h"
+#include "frame/ParameterBrowser.h"
+#include "frame/ParameterView.h"
 #include "RecentConnections.h"
 #include "WindowFeatures.h"
 
@@ -139,7 +139,7 @@ void MainWindow::connectTo(ConnectionSettings settings)
     if (!m_filePath.isEmpty()) {
         // One thing at a time: the file goes (asked about if it was changed), then the drive
         // comes.
-        settleUnsavedChanges([this, settings] {
+        settleFeatures([this, settings] {
             closeParameterFile();
             connectTo(settings);
         });
@@ -298,9 +298,9 @@ void MainWindow::saveSettings()
 
 void MainWindow::closeEvent(QCloseEvent *event)
 {
-    if (hasUnsavedChanges() && !m_closeAnyway) {
+    if (holdsUnsavedWork() && !m_closeAnyway) {
         event->ignore();
-        settleUnsavedChanges([this] {
+        settleFeatures([this] {
             m_closeAnyway = true;
             close();
         });

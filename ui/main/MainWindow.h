@@ -1,7 +1,7 @@
 #pragma once
 
 #include "DriveFavourites.h"
-#include "WindowFeature.h"
+#include "frame/WindowFeature.h"
 
 #include "client/DriveClient.h"
 
@@ -26,8 +26,8 @@ class ParameterModel;
 
 // DriveDesk's window, a frame: the parameter browser of the connected drive or of a parameter
 // file shown instead of one (one thing at a time), the connection's state where the user looks
-// (a notice bar and the status bar), connecting, refreshing, drive information and the file
-// commands. Editing, polling, the password level and the telegram monitor are features
+// (a notice bar and the status bar), connecting, refreshing and drive information. The file
+// commands, editing, polling, the password level and the telegram monitor are features
 // (WindowFeatures.cpp) that put their actions in its menus and toolbar and follow its session.
 // Window layout, filters, favourites (per drive) and the last connection live in QSettings.
 class MainWindow : public QMainWindow, public WindowFrame
@@ -46,25 +46,26 @@ public:
     // without waiting (open()) and closes itself.
     ConnectionDialog *openConnectionDialog();
 
-    // Parameter files (MainWindowFiles.cpp). The dialogs of the File menu end in these.
-    // Shows the parameter file at `path` with no drive: the same table and editors, and edits
-    // go into the file shown (DocumentEditor) until it is saved. A connected drive is
-    // disconnected first; unsaved changes of the file shown are asked about first (Save,
-    // Discard, Cancel), so the file may show only once that is answered. False, with a message
-    // naming the line and column, when the file cannot be read: then nothing changes.
-    bool openParameterFile(const QString &path);
-    // The file shown, to its own path or to another, which it is then; false with the reason
-    // in a message (the file on disk is left as it was).
-    bool saveParameterFile();
-    bool saveParameterFileAs(const QString &path);
-    // The parameter file shown instead of a drive, absolute; empty while none is.
-    QString parameterFilePath() const override { return m_filePath; }
-    // The file shown was changed since it was opened or saved (undoing back clears this).
-    bool hasUnsavedChanges() const;
+    // The feature of that class (WindowFeatures.cpp), for the program's start and the tests:
+    // window.feature<ParameterFileFeature>()->openParameterFile(path).
+    template<typename Feature>
+    Feature *feature() const
+    {
+        for (WindowFeature *each : m_features) {
+            if (auto *found = qobject_cast<Feature *>(each))
+                return found;
+        }
+        return nullptr;
+    }
 
 
     // WindowFrame
     QWidget *frameWidget() override { return this; }
+    // MainWindowFiles.cpp: the parameter file shown instead of a drive, absolute; empty while
+    // none is. Edits go into it (the editing feature's DocumentEditor) until it is saved.
+    QString parameterFilePath() const override { return m_filePath; }
+    void showParameterFile(const DriveDescription &drive, const QString &path) override;
+    void renameParameterFile(const QString &path) override;
     QMenu *menu(Menu menu) override;
     QToolBar *toolBar() override { return m_toolBar; }
     void addStatusWidget(QWidget *widget) override;
@@ -106,21 +107,18 @@ private:
     void chooseLanguage(Language language);
     void about();
     // MainWindowFiles.cpp
-    void chooseFileToOpen();
-    void chooseFileToSaveAs();
     // `name`: a file name to suggest; empty for a dialog that opens a file.
     QFileDialog *fileDialog(const QString &title, const QString &name = {},
                            const QString &filter = {});
-    void showParameterFile(const DriveDescription &drive, const QString &path);
     // The file shown goes (its changes with it), and the table empties.
     void closeParameterFile();
-    // Runs `proceed` at once when the file shown has no unsaved changes; otherwise after the
-    // user chose Save (and it was saved) or Discard; never after Cancel.
-    void settleUnsavedChanges(const std::function<void()> &proceed);
+    // Runs `proceed` once every feature from `from` on has settled its unsaved work
+    // (WindowFeature::settle); never when the user chose to stay.
+    void settleFeatures(std::function<void()> proceed, qsizetype from = 0);
+    bool holdsUnsavedWork() const;
     // Runs `proceed` when nothing is at `path`, or once the user agreed to replace it.
     void confirmReplace(const QString &path, const std::function<void()> &proceed);
     void updateFileTitle();
-    bool reportFileProblem(const QString &title, const QString &text);
     // MainWindow.cpp
     void openNextSession();
     // The session goes at once: its link closes, its undo history goes.
@@ -149,8 +147,7 @@ private:
     NoticeBar *m_notice = nullptr;
     DriveSession *m_session = nullptr; // owned; replaced on every connectTo()
     QString m_filePath; // of the parameter file shown; empty while none is
-    QPointer<QMessageBox> m_unsavedQuestion; // asking Save / Discard / Cancel, at most one
-    bool m_closeAnyway = false; // the file's changes were saved or discarded on closing
+    bool m_closeAnyway = false; // the features' unsaved work was settled on closing
     // connectTo() while connected: where to connect once the old link is closed.
     std::optional<ConnectionSettings> m_nextSettings;
     QList<WindowFeature *> m_features; // children
@@ -165,9 +162,6 @@ private:
     QLabel *m_stateLabel = nullptr;
     QLabel *m_metadataLabel = nullptr;
 
-    QAction *m_openFileAction = nullptr;
-    QAction *m_saveFileAction = nullptr;
-    QAction *m_saveFileAsAction = nullptr;
     QAction *m_connectAction = nullptr;
     QAction *m_disconnectAction = nullptr;
     QAction *m_findDrivesAction = nullptr;

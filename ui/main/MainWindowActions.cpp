@@ -1,9 +1,9 @@
 // MainWindow: its actions, menus, toolbar and status bar, and which actions apply when.
 #include "MainWindow.h"
 
-#include "DriveSession.h"
-#include "FrameSupport.h"
-#include "ParameterBrowser.h"
+#include "frame/DriveSession.h"
+#include "frame/FrameSupport.h"
+#include "frame/ParameterBrowser.h"
 
 #include <QActionGroup>
 #include <QApplication>
@@ -17,26 +17,6 @@ namespace DriveDesk {
 
 void MainWindow::createActions()
 {
-    m_openFileAction = new QAction(themedIcon("document-open", QStyle::SP_DialogOpenButton),
-                                   tr("&Open Parameter File..."), this);
-    m_openFileAction->setObjectName(QStringLiteral("openFileAction"));
-    m_openFileAction->setShortcut(QKeySequence::Open);
-    m_openFileAction->setToolTip(tr("Show and edit a parameter file with no drive"));
-    connect(m_openFileAction, &QAction::triggered, this, &MainWindow::chooseFileToOpen);
-
-    m_saveFileAction
-        = new QAction(themedIcon("document-save", QStyle::SP_DialogSaveButton), tr("&Save"), this);
-    m_saveFileAction->setObjectName(QStringLiteral("saveFileAction"));
-    m_saveFileAction->setShortcut(QKeySequence::Save);
-    m_saveFileAction->setToolTip(tr("Save the changes of the parameter file shown"));
-    connect(m_saveFileAction, &QAction::triggered, this, &MainWindow::saveParameterFile);
-
-    m_saveFileAsAction = new QAction(tr("Save &As..."), this);
-    m_saveFileAsAction->setObjectName(QStringLiteral("saveFileAsAction"));
-    m_saveFileAsAction->setShortcut(QKeySequence::SaveAs);
-    m_saveFileAsAction->setToolTip(tr("Save the parameter file shown under another name"));
-    connect(m_saveFileAsAction, &QAction::triggered, this, &MainWindow::chooseFileToSaveAs);
-
     m_connectAction = new QAction(themedIcon("network-connect", QStyle::SP_DriveNetIcon),
                                   tr("&Connect..."), this);
     m_connectAction->setObjectName(QStringLiteral("connectAction"));
@@ -105,9 +85,6 @@ void MainWindow::createActions()
 void MainWindow::createMenus()
 {
     m_fileMenu = menuBar()->addMenu(tr("&File"));
-    m_fileMenu->addAction(m_openFileAction);
-    m_fileMenu->addAction(m_saveFileAction);
-    m_fileMenu->addAction(m_saveFileAsAction);
 
     m_driveMenu = menuBar()->addMenu(tr("&Drive"));
     m_driveMenu->addAction(m_connectAction);
@@ -175,10 +152,6 @@ void MainWindow::createToolBar()
     m_toolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     m_toolBar->addAction(m_connectAction);
     m_toolBar->addAction(m_disconnectAction);
-    m_toolBar->addAction(m_openFileAction);
-    m_toolBar->addAction(m_saveFileAction);
-    m_openFileAction->setPriority(QAction::LowPriority);
-    m_saveFileAction->setPriority(QAction::LowPriority);
     m_toolBar->addSeparator();
     m_toolBar->addAction(m_refreshAction);
 }
@@ -226,8 +199,6 @@ void MainWindow::updateActions()
     m_refreshAction->setEnabled(connected && !m_session->isScanning() && !reading);
     m_readMetadataAction->setEnabled(connected && !m_session->isScanning() && !reading);
     m_driveInfoAction->setEnabled(session && m_session->hasDescription());
-    m_saveFileAction->setEnabled(!m_filePath.isEmpty());
-    m_saveFileAsAction->setEnabled(!m_filePath.isEmpty());
     m_browser->setEditingEnabled(editing() != nullptr);
     for (WindowFeature *feature : std::as_const(m_features))
         feature->updateActions();

@@ -3,13 +3,13 @@
 
 #include "ConnectionDialog.h"
 #include "DriveInfoDialog.h"
-#include "DriveSession.h"
+#include "frame/DriveSession.h"
 #include "FindDrivesDialog.h"
-#include "ParameterBrowser.h"
-#include "ParameterView.h"
+#include "frame/ParameterBrowser.h"
+#include "frame/ParameterView.h"
 #include "RecentConnections.h"
 
-#include "FrameSupport.h"
+#include "frame/FrameSupport.h"
 
 #include "model/ParameterModel.h"
 

@@ -1,15 +1,15 @@
-// MainWindow: parameter files. Opening one shows it with no drive and edits it (the features'
-// attachFile()); saving writes it atomically; the file dialogs of the window and its features.
+// MainWindow: the parameter file shown instead of a drive (the file commands are a feature's,
+// ui/files), the features' unsaved work settled before the window shows something else or
+// closes, and the file dialogs of the window and its features.
 #include "MainWindow.h"
 
-#include "DriveSession.h"
-#include "FrameSupport.h"
-#include "NoticeBar.h"
-#include "ParameterBrowser.h"
 #include "RecentConnections.h"
 
+#include "frame/DriveSession.h"
+#include "frame/FrameSupport.h"
+#include "frame/ParameterBrowser.h"
+
 #include "model/ParameterModel.h"
-#include "parameters/ParameterDocument.h"
 
 #include <QDir>
 #include <QFileDialog>
@@ -19,6 +19,8 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QUndoStack>
+
+#include <algorithm>
 
 namespace DriveDesk {
 
@@ -37,24 +39,6 @@ void rememberDirectory(const QString &path)
 }
 
 } // namespace
-
-bool MainWindow::hasUnsavedChanges() const
-{
-    return !m_filePath.isEmpty() && !m_undoStack->isClean();
-}
-
-bool MainWindow::openParameterFile(const QString &path)
-{
-    QString error;
-    const std::optional<DriveDescription> drive = ParameterDocument::load(path, &error);
-    if (!drive) {
-        return reportFileProblem(tr("Open Parameter File"),
-                                 tr("Could not open the file: %1").arg(error));
-    }
-    rememberDirectory(path);
-    settleUnsavedChanges([this, shown = *drive, path] { showParameterFile(shown, path); });
-    return true;
-}
 
 void MainWindow::showParameterFile(const DriveDescription &drive, const QString &path)
 {
@@ -76,6 +60,7 @@ void MainWindow::showParameterFile(const DriveDescription &drive, const QString 
     m_model->setPasswordLevel(PasswordLevel::Supervisor);
     m_model->setDescription(drive);
     m_filePath = QFileInfo(path).absoluteFilePath();
+    rememberDirectory(m_filePath);
     // The file's edits are a feature's, as the drive's are.
     for (WindowFeature *feature : std::as_const(m_features))
         feature->attachFile(m_filePath);
@@ -84,14 +69,16 @@ void MainWindow::showParameterFile(const DriveDescription &drive, const QString 
     m_metadataLabel->hide();
     m_stateLabel->setText(tr("No drive: parameter file"));
     m_browser->setEmptyText(tr("The parameter file holds no parameters."));
-    m_notice->showInformation(
-        tr("No drive is connected: the table shows the parameter file %1, and edits change the "
-           "file only, once you save it (%2). Nothing is sent to a drive.")
-            .arg(shownPath(m_filePath),
-                 m_saveFileAction->shortcut().toString(QKeySequence::NativeText)));
     updateFileTitle();
     updateActions();
     showMessage(message);
+}
+
+void MainWindow::renameParameterFile(const QString &path)
+{
+    m_filePath = QFileInfo(path).absoluteFilePath();
+    rememberDirectory(m_filePath);
+    updateFileTitle();
 }
 
 void MainWindow::closeParameterFile()
@@ -110,72 +97,28 @@ void MainWindow::closeParameterFile()
     updateActions();
 }
 
-bool MainWindow::saveParameterFile()
+void MainWindow::settleFeatures(std::function<void()> proceed, qsizetype from)
 {
-    return saveParameterFileAs(m_filePath);
-}
-
-bool MainWindow::saveParameterFileAs(const QString &path)
-{
-    if (m_filePath.isEmpty())
-        return false;
-    QString error;
-    if (!ParameterDocument::save(path, m_model->description(), &error)) {
-        return reportFileProblem(tr("Save Parameter File"),
-                                 tr("Could not save %1: %2. The file on disk is as it was.")
-                                     .arg(shownPath(path), error));
+    if (from >= m_features.size()) {
+        proceed();
+        return;
     }
-    rememberDirectory(path);
-    m_filePath = QFileInfo(path).absoluteFilePath();
-    m_undoStack->setClean();
-    updateFileTitle();
-    showMessage(tr("Saved %1.").arg(shownPath(m_filePath)));
-    return true;
+    // A feature that asks answers later: the next is asked only then.
+    m_features[from]->settle([this, proceed = std::move(proceed), from]() mutable {
+        settleFeatures(std::move(proceed), from + 1);
+    });
 }
 
-bool MainWindow::reportFileProblem(const QString &title, const QString &text)
+bool MainWindow::holdsUnsavedWork() const
 {
-    showMessage(text);
-    auto *box = new QMessageBox(QMessageBox::Warning, title, text, QMessageBox::Ok, this);
-    box->setObjectName(QStringLiteral("fileProblem"));
-    openDialog(box);
-    return false;
+    return std::any_of(m_features.cbegin(), m_features.cend(),
+                       [](const WindowFeature *feature) { return feature->holdsUnsavedWork(); });
 }
 
 void MainWindow::updateFileTitle()
 {
     setWindowTitle(tr("%1[*] - DriveDesk").arg(QFileInfo(m_filePath).fileName()));
     setWindowModified(!m_undoStack->isClean());
-}
-
-void MainWindow::settleUnsavedChanges(const std::function<void()> &proceed)
-{
-    if (!hasUnsavedChanges()) {
-        proceed();
-        return;
-    }
-    if (m_unsavedQuestion) {
-        // Already asked: that answer comes first.
-        m_unsavedQuestion->raise();
-        m_unsavedQuestion->activateWindow();
-        return;
-    }
-    auto *box
-        = new QMessageBox(QMessageBox::Warning, tr("Unsaved Changes"),
-                          tr("The parameter file %1 has changes that are not saved.")
-                              .arg(QFileInfo(m_filePath).fileName()),
-                          QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, this);
-    box->setObjectName(QStringLiteral("unsavedChangesQuestion"));
-    box->setInformativeText(tr("Save them before going on?"));
-    box->setDefaultButton(QMessageBox::Save);
-    m_unsavedQuestion = box;
-    connect(box, &QMessageBox::finished, this, [this, box, proceed] {
-        m_unsavedQuestion.clear(); // answered; it goes later
-        const QMessageBox::StandardButton answer = box->standardButton(box->clickedButton());
-        if (answer == QMessageBox::Discard || (answer == QMessageBox::Save && saveParameterFile()))
-            proceed();
-    });
-    openDialog(box);
 }
 
 void MainWindow::confirmReplace(const QString &path, const std::function<void()> &proceed)
@@ -196,7 +139,6 @@ void MainWindow::confirmReplace(const QString &path, const std::function<void()>
     });
     openDialog(box);
 }
-
 QFileDialog *MainWindow::fileDialog(const QString &title, const QString &name,
                                     const QString &filter)
 {
@@ -250,26 +192,6 @@ void MainWindow::chooseFileToWrite(const QString &title, const QString &name,
                     chosen(path);
                 });
             });
-    openDialog(dialog);
-}
-
-void MainWindow::chooseFileToOpen()
-{
-    QFileDialog *dialog = fileDialog(tr("Open Parameter File"));
-    connect(dialog, &QFileDialog::fileSelected, this,
-            [this](const QString &path) { openParameterFile(path); });
-    openDialog(dialog);
-}
-
-void MainWindow::chooseFileToSaveAs()
-{
-    if (m_filePath.isEmpty())
-        return;
-    QFileDialog *dialog
-        = fileDialog(tr("Save Parameter File As"), QFileInfo(m_filePath).fileName());
-    connect(dialog, &QFileDialog::fileSelected, this, [this](const QString &path) {
-        confirmReplace(path, [this, path] { saveParameterFileAs(path); });
-    });
     openDialog(dialog);
 }
 

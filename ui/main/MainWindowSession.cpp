@@ -2,9 +2,9 @@
 // the status bar and the title, and what a lost link or a silent drive shows.
 #include "MainWindow.h"
 
-#include "DriveSession.h"
-#include "NoticeBar.h"
-#include "ParameterBrowser.h"
+#include "frame/DriveSession.h"
+#include "frame/NoticeBar.h"
+#include "frame/ParameterBrowser.h"
 #include "RecentConnections.h"
 
 #include "model/ParameterModel.h"

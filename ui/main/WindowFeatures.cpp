@@ -5,6 +5,7 @@
 #include "edit/EditingFeature.h"
 #include "edit/PollingFeature.h"
 #include "edit/SetsFeature.h"
+#include "files/ParameterFileFeature.h"
 #include "monitor/MonitorFeature.h"
 #include "plant/PlantFeature.h"
 #include "scope/ScopeFeature.h"
@@ -26,6 +27,7 @@ QList<WindowFeature *> makeWindowFeatures(WindowFrame &frame)
                      });
     // The others add their actions and status fields in this order.
     QList<WindowFeature *> features{
+        new ParameterFileFeature(frame), // first: the File menu and the toolbar begin with it
         new SaveDriveFeature(frame),
         new SetsFeature(frame),
         new PollingFeature(frame),

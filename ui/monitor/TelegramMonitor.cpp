@@ -5,7 +5,7 @@
 #include "TrafficModel.h"
 
 #include "client/DriveClient.h"
-#include "main/FrameSupport.h"
+#include "frame/FrameSupport.h"
 
 #include <QAction>
 #include <QApplication>

@@ -5,7 +5,7 @@
 #include "TrafficFilterModel.h"
 #include "TrafficModel.h"
 
-#include "main/FrameSupport.h"
+#include "frame/FrameSupport.h"
 
 #include <QApplication>
 #include <QClipboard>

@@ -4,8 +4,8 @@
 #include "PlantModel.h"
 #include "PlantReportDialog.h"
 
-#include "main/FrameSupport.h"
-#include "main/WindowFeature.h"
+#include "frame/FrameSupport.h"
+#include "frame/WindowFeature.h"
 
 #include <QAction>
 #include <QApplication>

@@ -5,8 +5,8 @@
 #include "PlantReportDialog.h"
 
 #include "bus/LinkFactory.h"
-#include "main/FrameSupport.h"
-#include "main/WindowFeature.h"
+#include "frame/FrameSupport.h"
+#include "frame/WindowFeature.h"
 
 #include <QAction>
 #include <QDir>

@@ -3,7 +3,7 @@
 #include "PlantDock.h"
 #include "PlantLinkDialog.h"
 
-#include "main/FrameSupport.h"
+#include "frame/FrameSupport.h"
 
 #include <QAction>
 #include <QDir>

@@ -5,7 +5,7 @@
 #include "ScopeCursorTable.h"
 
 #include "client/DriveClient.h"
-#include "main/WindowFeature.h"
+#include "frame/WindowFeature.h"
 #include "scope/ScopeCsv.h"
 #include "scope/ScopeFileReader.h"
 #include "scope/ScopeRecording.h"

@@ -3,7 +3,7 @@
 
 #include "ScopeChart.h"
 
-#include "main/WindowFeature.h"
+#include "frame/WindowFeature.h"
 #include "scope/ScopeFileFormat.h"
 #include "scope/ScopeFileWriter.h"
 #include "scope/ScopeRecording.h"

@@ -5,7 +5,7 @@
 #include "ScopeChart.h"
 
 #include "client/DriveClient.h"
-#include "main/WindowFeature.h"
+#include "frame/WindowFeature.h"
 #include "model/ParameterModel.h"
 #include "scope/ScopeRecording.h"
 #include "session/ScopeChannelsJob.h"

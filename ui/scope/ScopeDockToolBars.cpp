@@ -3,7 +3,7 @@
 
 #include "ScopeChart.h"
 
-#include "main/FrameSupport.h"
+#include "frame/FrameSupport.h"
 
 #include <QAction>
 #include <QComboBox>

@@ -2,8 +2,8 @@
 
 #include "ScopeDock.h"
 
-#include "main/DriveSession.h"
-#include "main/FrameSupport.h"
+#include "frame/DriveSession.h"
+#include "frame/FrameSupport.h"
 
 #include <QAction>
 #include <QMenu>

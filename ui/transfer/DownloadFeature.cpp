@@ -1,10 +1,10 @@
 #include "DownloadFeature.h"
 
 #include "DownloadDialog.h"
-#include "FileProblem.h"
+#include "frame/FileProblem.h"
 
-#include "main/DriveSession.h"
-#include "main/FrameSupport.h"
+#include "frame/DriveSession.h"
+#include "frame/FrameSupport.h"
 #include "parameters/ParameterDocument.h"
 
 #include <QAction>

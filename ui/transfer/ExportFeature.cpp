@@ -1,6 +1,6 @@
 #include "ExportFeature.h"
 
-#include "FileProblem.h"
+#include "frame/FileProblem.h"
 
 #include "model/ParameterModel.h"
 #include "parameters/ParameterCsv.h"

@@ -1,10 +1,10 @@
 #include "SaveDriveFeature.h"
 
-#include "FileProblem.h"
+#include "frame/FileProblem.h"
 
-#include "main/DriveSession.h"
-#include "main/FrameSupport.h"
-#include "main/NoticeBar.h"
+#include "frame/DriveSession.h"
+#include "frame/FrameSupport.h"
+#include "frame/NoticeBar.h"
 #include "session/UploadRun.h"
 
 #include <QAction>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "main/WindowFeature.h"
+#include "frame/WindowFeature.h"
 
 #include <QPointer>
 

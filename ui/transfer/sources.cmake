@@ -4,6 +4,5 @@ target_sources(drivedesk_ui PRIVATE
     transfer/DownloadDialog.cpp transfer/DownloadDialog.h
     transfer/DownloadFeature.cpp transfer/DownloadFeature.h
     transfer/ExportFeature.cpp transfer/ExportFeature.h
-    transfer/FileProblem.cpp transfer/FileProblem.h
     transfer/SaveDriveFeature.cpp transfer/SaveDriveFeature.h
 )
