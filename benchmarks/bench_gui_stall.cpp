@@ -6,8 +6,8 @@
 // QT_QPA_PLATFORM says otherwise.
 #include "edit/PollingController.h"
 #include "frame/DriveSession.h"
-#include "main/MainWindow.h"
 #include "frame/ParameterBrowser.h"
+#include "main/MainWindow.h"
 #include "model/ParameterModel.h"
 
 #include <QAction>

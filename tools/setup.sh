@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(
-    cmake g++ make pkg-config ccache
+    cmake g++ make ninja-build pkg-config ccache
     qt6-base-dev qt6-serialport-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
     qt6-qpa-plugins qt6-translations-l10n libqcustomplot-dev
     xvfb xauth socat
@@ -27,5 +27,6 @@ if ((${#missing[@]})); then
 fi
 
 # The benchmarks are built in a Release tree of their own (docs/performance.md), not here.
-cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDRIVEDESK_BUILD_BENCHMARKS=OFF
+cmake -S . -B build $(tools/generator.sh build) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DDRIVEDESK_BUILD_BENCHMARKS=OFF
 cmake --build build -j"$(nproc)"

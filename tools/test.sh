@@ -28,7 +28,8 @@ suite build
 tools/package.sh --check
 
 # The sanitizers' options come with the tests (tests/CMakeLists.txt).
-cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DDRIVEDESK_SANITIZE=ON \
+cmake -S . -B build-sanitize $(tools/generator.sh build-sanitize) -DCMAKE_BUILD_TYPE=Debug \
+    -DDRIVEDESK_SANITIZE=ON \
     -DDRIVEDESK_BUILD_BENCHMARKS=OFF
 cmake --build build-sanitize -j"$(nproc)"
 suite build-sanitize
