@@ -19,15 +19,6 @@
 
 namespace DriveDesk {
 
-namespace {
-
-QString shownPath(const QString &path)
-{
-    return QDir::toNativeSeparators(path);
-}
-
-} // namespace
-
 ParameterFileFeature::ParameterFileFeature(WindowFrame &frame, QObject *parent)
     : WindowFeature(frame, parent)
 {

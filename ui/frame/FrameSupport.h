@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QApplication>
+#include <QDir>
 #include <QIcon>
 #include <QStyle>
 
@@ -12,6 +13,12 @@ inline QIcon themedIcon(const char *theme, QStyle::StandardPixmap fallback)
 {
     return QIcon::fromTheme(QString::fromLatin1(theme),
                             QApplication::style()->standardIcon(fallback));
+}
+
+// A path as the window and its features name it in messages and titles.
+inline QString shownPath(const QString &path)
+{
+    return QDir::toNativeSeparators(path);
 }
 
 // Dialogs open with open() and act in a handler: no nested event loop, and what the handler

@@ -28,11 +28,6 @@ namespace {
 
 const QString kDirectoryKey = QStringLiteral("files/lastDirectory");
 
-QString shownPath(const QString &path)
-{
-    return QDir::toNativeSeparators(path);
-}
-
 void rememberDirectory(const QString &path)
 {
     QSettings().setValue(kDirectoryKey, QFileInfo(path).absolutePath());

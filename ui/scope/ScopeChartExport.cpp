@@ -3,19 +3,13 @@
 
 #include "QCustomPlotInclude.h"
 
+#include "frame/FrameSupport.h"
+
 #include <QDir>
 #include <QFileInfo>
 
 namespace DriveDesk {
 
-namespace {
-
-QString shown(const QString &path)
-{
-    return QDir::toNativeSeparators(path);
-}
-
-} // namespace
 
 bool ScopeChart::savePng(const QString &path, QString *error)
 {
@@ -25,7 +19,7 @@ bool ScopeChart::savePng(const QString &path, QString *error)
     if (m_plot->savePng(path) && QFileInfo(path).size() > 0)
         return true;
     if (error)
-        *error = tr("Could not write the image %1.").arg(shown(path));
+        *error = tr("Could not write the image %1.").arg(shownPath(path));
     return false;
 }
 
@@ -40,7 +34,7 @@ bool ScopeChart::savePdf(const QString &path, QString *error)
         return true;
     }
     if (error)
-        *error = tr("Could not write the PDF file %1.").arg(shown(path));
+        *error = tr("Could not write the PDF file %1.").arg(shownPath(path));
     return false;
 }
 
@@ -54,14 +48,14 @@ bool ScopeChart::checkWritable(const QString &path, QString *error) const
         problem = tr("No file name was given.");
     else if (!folder.isDir())
         problem = tr("Cannot save %1: the folder %2 does not exist.")
-                      .arg(shown(path), shown(folder.filePath()));
+                      .arg(shownPath(path), shownPath(folder.filePath()));
     else if (!folder.isWritable())
         problem = tr("Cannot save %1: the folder %2 is not writable.")
-                      .arg(shown(path), shown(folder.filePath()));
+                      .arg(shownPath(path), shownPath(folder.filePath()));
     else if (file.isDir())
-        problem = tr("Cannot save %1: it is a folder.").arg(shown(path));
+        problem = tr("Cannot save %1: it is a folder.").arg(shownPath(path));
     else if (file.exists() && !file.isWritable())
-        problem = tr("Cannot save %1: the file is read-only.").arg(shown(path));
+        problem = tr("Cannot save %1: the file is read-only.").arg(shownPath(path));
     if (problem.isEmpty())
         return true;
     if (error)

@@ -1,9 +1,9 @@
 #include "DownloadFeature.h"
 
 #include "DownloadDialog.h"
-#include "frame/FileProblem.h"
 
 #include "frame/DriveSession.h"
+#include "frame/FileProblem.h"
 #include "frame/FrameSupport.h"
 #include "parameters/ParameterDocument.h"
 

@@ -1,8 +1,7 @@
 #include "SaveDriveFeature.h"
 
-#include "frame/FileProblem.h"
-
 #include "frame/DriveSession.h"
+#include "frame/FileProblem.h"
 #include "frame/FrameSupport.h"
 #include "frame/NoticeBar.h"
 #include "session/UploadRun.h"
@@ -19,15 +18,6 @@
 // was the window's own command.
 
 namespace DriveDesk {
-
-namespace {
-
-QString shownPath(const QString &path)
-{
-    return QDir::toNativeSeparators(path);
-}
-
-} // namespace
 
 SaveDriveFeature::SaveDriveFeature(WindowFrame &frame, QObject *parent)
     : WindowFeature(frame, parent)
