@@ -421,6 +421,14 @@ private slots:
         // DIN66019II: "to drive 1: " first where the request selects the drive.
         QVERIFY2(requests.first().endsWith(QStringLiteral("read 020Dh")), qPrintable(requests.first()));
 
+        const auto loadAnswers = [&] {
+            const QStringList answers = meaningsOf(shown, QStringLiteral("← drive"));
+            return std::count_if(answers.cbegin(), answers.cend(), [](const QString &answer) {
+                return answer.startsWith(QStringLiteral("020Dh: "));
+            });
+        };
+        const qsizetype loadAnswersBefore = loadAnswers();
+
         ScanOptions options;
         options.groupPages = { 0x02, 0x03 }; // ru, op
         options.values = false;
@@ -430,8 +438,10 @@ private slots:
         QVERIFY(drive.find(kActualLoad));
         // The scan's records may still be on their way to this thread. The client reports in
         // order: once the answer to a read sent after the scan is shown, all of them are in.
+        // (The read before the scan ended in the same words: a new such answer is this one's.)
         QVERIFY(finished(client.readValueStandard(kActualLoad, 0)));
-        QTRY_VERIFY(meaningsOf(shown, QStringLiteral("← drive")).constLast().startsWith(
+        QTRY_VERIFY(loadAnswers() > loadAnswersBefore);
+        QVERIFY(meaningsOf(shown, QStringLiteral("← drive")).constLast().startsWith(
             QStringLiteral("020Dh: ")));
         m_monitor->clear();
         m_monitor->setDrive(std::make_shared<const DriveDescription>(drive));
@@ -448,8 +458,15 @@ private slots:
         answers = meaningsOf(shown, QStringLiteral("← drive"));
         requests = meaningsOf(shown, QStringLiteral("→ drive"));
         QVERIFY(!requests.isEmpty());
-        for (const QString &request : std::as_const(requests))
-            QVERIFY2(request.endsWith(QStringLiteral("read ru.13 Actual load")), qPrintable(request));
+        QStringList everything;
+        for (int row = 0; row < shown.rowCount(); ++row) {
+            everything << cell(shown, row, TrafficModel::DirectionColumn) + QLatin1Char(' ')
+                              + cell(shown, row, TrafficModel::MeaningColumn);
+        }
+        for (const QString &request : std::as_const(requests)) {
+            QVERIFY2(request.endsWith(QStringLiteral("read ru.13 Actual load")),
+                     qPrintable(everything.join(QLatin1Char('\n'))));
+        }
         for (const QString &answer : std::as_const(answers))
             QVERIFY2(!answer.contains(QStringLiteral("020Dh")), qPrintable(answer));
 
