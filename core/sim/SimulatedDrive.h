@@ -34,7 +34,7 @@ struct SimulatedDriveOptions
     SimulatedDriveKind kind = SimulatedDriveKind::Standard;
     // Generated parameters come from this seed where it is given, so that drives of one kind on
     // a bus, each with a seed of its own, have the same metadata.
-    std::optional<quint32> metadataSeed;
+    std::optional<quint32> metadataSeed = std::nullopt;
 };
 
 // A drive that answers telegrams like a KEB COMBIVERT F5, built from data about real F5s
