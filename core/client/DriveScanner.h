@@ -170,9 +170,6 @@ private:
     std::vector<Kept> m_kept;         // answers kept unconfirmed while the line was clean
     // Unsettled once: asked again after everything else, when a burst of noise has passed.
     std::vector<Unsettled> m_later;
-    // True while a handler runs for a request whose plausible answers never agreed: for a value
-    // the drive changes by itself that is its nature, not the line's fault (ScanValues.cpp).
-    bool m_deliveringDisagreement = false;
     std::vector<Probe> m_probes;
     int m_probesPending = 0;
     std::optional<DriveKind> m_cachedKind; // the kind whose cached metadata is used

@@ -27,6 +27,9 @@ struct Reply {
     Telegram response; // valid for Ok and Refused
     int attempts = 0;
     QString detail;    // what went wrong in transport terms, e.g. "3 BCC errors"
+    // A read asked again to confirm it (a line with errors, docs/client.md) whose answers never
+    // agreed: the drive answered, but which answer was its word is unknown.
+    bool disagreed = false;
 
     bool ok() const { return status == Status::Ok; }
     // The drive's own word on the request: its data, or a refusal that is not about the

@@ -130,9 +130,13 @@ void DriveScanner::deliver(const QueuedRequest &request, const Reply &reply)
         ++m_values.answered;
     else if (!request.recheck && service == Service::PlaintextIndices)
         ++m_plaintexts.answered;
-    m_deliveringDisagreement = request.disagreed && !reply.isAnswer();
+    if (request.disagreed && !reply.isAnswer()) {
+        Reply unconfirmed = reply;
+        unconfirmed.disagreed = true;
+        request.handle(unconfirmed);
+        return;
+    }
     request.handle(reply);
-    m_deliveringDisagreement = false;
 }
 
 void DriveScanner::readAgain(const Queued &request)

@@ -111,7 +111,7 @@ void DriveScanner::failValue(ScanParameter &parameter, const QString &label,
 {
     const ParameterProperties properties(parameter.description.properties1,
                                          parameter.description.properties2);
-    if (!m_deliveringDisagreement || !properties.isChangedByInverter())
+    if (!reply.disagreed || !properties.isChangedByInverter())
         return fail(parameter, label, reply);
     parameter.errors.append(tr("%1: not confirmed: the drive changes it by itself, and on a line "
                                "with errors no two reads agreed")

@@ -76,6 +76,8 @@ public:
     std::set<quint16> garbledNames;
     // The first answer to a limits read of these addresses has its minimum above its maximum.
     std::set<quint16> swappedLimits;
+    // The value of these addresses is another at every read, as a speed or a timer.
+    std::set<quint16> movingValues;
     quint64 errorsNoted = 0; // what the client would have counted on the line
 
     QList<Telegram> received;
@@ -172,6 +174,10 @@ private:
         if (auto *limits = reply.response.as<ParameterLimits>();
             limits && swappedLimits.erase(limits->address)) {
             std::swap(limits->lower, limits->upper);
+        }
+        if (auto *value = reply.response.as<ParameterValue>();
+            value && reply.ok() && movingValues.count(value->address)) {
+            value->value += ++m_moves;
         }
         return reply;
     }
@@ -315,6 +321,7 @@ private:
     }
 
     std::deque<Held> m_held;
+    qint32 m_moves = 0;
 };
 
 void makeDrive(FakeDrive &drive)
@@ -444,6 +451,7 @@ private slots:
     void aParameterWhoseNameGotNoAnswerMakesTheGroupIncomplete();
     void onALineWithErrorsAnswersAreConfirmed();
     void anImplausibleAnswerIsReadAgain();
+    void aValueTheDriveChangesByItselfIsLeftUnconfirmedNotUnread();
     void aDriveWithoutIdentityIsNeverCached();
     void variableMetadataIsReadAgainOnACachedKind();
 };
@@ -921,6 +929,35 @@ void TestDriveScanner::anImplausibleAnswerIsReadAgain()
     QCOMPARE(result.finishedCount, 1);
     QCOMPARE(*result.description, *expected.description);
     QCOMPARE(drive.received.size(), clean.received.size() + 1);
+}
+
+void TestDriveScanner::aValueTheDriveChangesByItselfIsLeftUnconfirmedNotUnread()
+{
+    // An error on the line at once (ru.00's name gets no answer): from then on every answer is
+    // confirmed by another. ru.03 and op.00 give another value at every read; only ru.03 says
+    // (properties 2, bit 9) that the drive changes it by itself.
+    FakeDrive drive;
+    makeDrive(drive);
+    drive.groups[0x02].parameters[3].properties2 |= 1u << 9;
+    drive.silentNames = {0x0200};
+    drive.movingValues = {0x0203, 0x0300};
+    const ScanResult result = scan(drive);
+    QCOMPARE(result.finishedCount, 1);
+    const DriveDescription &d = *result.description;
+
+    // The live value: no value shown as the drive's, in words why, and the scan not incomplete
+    // for it.
+    const ParameterDescription *live = d.find(0x0203);
+    QVERIFY(live);
+    QVERIFY(!live->values[0].has_value());
+    QVERIFY2(live->error.contains(QStringLiteral("changes it by itself")), qPrintable(live->error));
+    QVERIFY2(!d.incompleteReason.contains(QStringLiteral("ru.03")), qPrintable(d.incompleteReason));
+    // A setting whose reads never agree is unread: the scan names it.
+    const ParameterDescription *setting = d.find(0x0300);
+    QVERIFY(setting);
+    QVERIFY(!setting->values[0].has_value());
+    QVERIFY(!setting->error.contains(QStringLiteral("changes it by itself")));
+    QVERIFY2(d.incompleteReason.contains(QStringLiteral("op.00")), qPrintable(d.incompleteReason));
 }
 
 void TestDriveScanner::aDriveWithoutIdentityIsNeverCached()
