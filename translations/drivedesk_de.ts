@@ -4220,6 +4220,14 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
         <source>The recording shown is not saved. A new recording replaces it.</source>
         <translation>Die gezeigte Aufzeichnung ist nicht gespeichert. Eine neue Aufzeichnung ersetzt sie.</translation>
     </message>
+    <message>
+        <source>Close DriveDesk</source>
+        <translation>DriveDesk schließen</translation>
+    </message>
+    <message>
+        <source>The scope recording shown is not saved. Closing DriveDesk loses it.</source>
+        <translation>Die gezeigte Scope-Aufzeichnung ist nicht gespeichert. Beim Schließen von DriveDesk geht sie verloren.</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ScopeFeature</name>

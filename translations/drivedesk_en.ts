@@ -4220,6 +4220,14 @@ Home: the whole recording; End: follow the newest samples; A: fit the values; Sp
         <source>The recording shown is not saved. A new recording replaces it.</source>
         <translation>The recording shown is not saved. A new recording replaces it.</translation>
     </message>
+    <message>
+        <source>Close DriveDesk</source>
+        <translation>Close DriveDesk</translation>
+    </message>
+    <message>
+        <source>The scope recording shown is not saved. Closing DriveDesk loses it.</source>
+        <translation>The scope recording shown is not saved. Closing DriveDesk loses it.</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ScopeFeature</name>

@@ -412,6 +412,23 @@ private slots:
         QVERIFY(dock->recording() != second);
         record->trigger();
         QTRY_VERIFY_WITH_TIMEOUT(!dock->isRecording(), kWaitMs);
+
+        // Closing the window with that recording unsaved: asked; Cancel keeps the window and
+        // the recording, Discard closes.
+        const ScopeRecording *third = dock->recording();
+        QVERIFY(!window.close());
+        question = replaceQuestion(*dock);
+        QVERIFY(question);
+        QVERIFY(question->text().contains(QStringLiteral("Closing DriveDesk")));
+        question->button(QMessageBox::Cancel)->click();
+        QTRY_VERIFY(!shownQuestion(*dock));
+        QVERIFY(window.isVisible());
+        QCOMPARE(dock->recording(), third);
+        QVERIFY(!window.close());
+        question = replaceQuestion(*dock);
+        QVERIFY(question);
+        question->button(QMessageBox::Discard)->click();
+        QTRY_VERIFY(!window.isVisible());
     }
 
     // HSP5 (seed 000) has no service 21: the offline records are not offered.

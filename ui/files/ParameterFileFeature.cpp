@@ -50,8 +50,9 @@ ParameterFileFeature::ParameterFileFeature(WindowFrame &frame, QObject *parent)
     // the icons say it without text.
     QToolBar *bar = frame.toolBar();
     const QList<QAction *> placed = bar->actions();
-    const auto separator = std::find_if(placed.cbegin(), placed.cend(),
-                                        [](const QAction *action) { return action->isSeparator(); });
+    const auto separator = std::find_if(placed.cbegin(), placed.cend(), [](const QAction *action) {
+        return action->isSeparator();
+    });
     QAction *before = separator == placed.cend() ? nullptr : *separator;
     bar->insertAction(before, m_openAction);
     bar->insertAction(before, m_saveAction);
@@ -72,7 +73,7 @@ bool ParameterFileFeature::openParameterFile(const QString &path)
         return reportProblem(tr("Open Parameter File"),
                              tr("Could not open the file: %1").arg(error));
     }
-    settle([this, shown = *drive, path] { showFile(shown, path); });
+    settle(Leaving::Shown, [this, shown = *drive, path] { showFile(shown, path); });
     return true;
 }
 
@@ -107,8 +108,9 @@ bool ParameterFileFeature::saveParameterFileAs(const QString &path)
     return true;
 }
 
-void ParameterFileFeature::settle(std::function<void()> proceed)
+void ParameterFileFeature::settle(Leaving leaving, std::function<void()> proceed)
 {
+    Q_UNUSED(leaving)
     if (!hasUnsavedChanges()) {
         proceed();
         return;

@@ -32,7 +32,8 @@ public:
     // WindowFeature
     void updateActions() override;
     bool holdsUnsavedWork() const override { return hasUnsavedChanges(); }
-    void settle(std::function<void()> proceed) override;
+    // The file's changes, whatever the window leaves: it shows one thing at a time.
+    void settle(Leaving leaving, std::function<void()> proceed) override;
 
 private:
     void chooseFileToOpen();

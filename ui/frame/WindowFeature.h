@@ -38,12 +38,22 @@ public:
     virtual bool isReadingDrive() const { return false; }
     // The window closes: what the feature remembers goes to QSettings.
     virtual void saveSettings() { }
-    // The feature holds work that is not saved (a parameter file's changes).
+    // What the window is about to leave when it asks its features to settle.
+    enum class Leaving {
+        Shown,  // what it shows: another parameter file or a drive comes instead
+        Window, // the window closes, and everything in it
+    };
+    // The feature holds work that closing the window would lose (a parameter file's changes,
+    // a scope recording in memory only).
     virtual bool holdsUnsavedWork() const { return false; }
-    // The window is about to show something else or to close: `proceed` runs once the work
-    // this feature holds is saved or given up (asked about if need be), never when the user
-    // chose to stay. The frame asks every feature in turn.
-    virtual void settle(std::function<void()> proceed) { proceed(); }
+    // `proceed` runs once what leaving would lose of this feature's work is saved or given up
+    // (asked about if need be), never when the user chose to stay. The frame asks every
+    // feature in turn.
+    virtual void settle(Leaving leaving, std::function<void()> proceed)
+    {
+        Q_UNUSED(leaving)
+        proceed();
+    }
 
 protected:
     WindowFrame &frame() const { return m_frame; }

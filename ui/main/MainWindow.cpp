@@ -139,7 +139,7 @@ void MainWindow::connectTo(ConnectionSettings settings)
     if (!m_filePath.isEmpty()) {
         // One thing at a time: the file goes (asked about if it was changed), then the drive
         // comes.
-        settleFeatures([this, settings] {
+        settleFeatures(WindowFeature::Leaving::Shown, [this, settings] {
             closeParameterFile();
             connectTo(settings);
         });
@@ -300,7 +300,7 @@ void MainWindow::closeEvent(QCloseEvent *event)
 {
     if (holdsUnsavedWork() && !m_closeAnyway) {
         event->ignore();
-        settleFeatures([this] {
+        settleFeatures(WindowFeature::Leaving::Window, [this] {
             m_closeAnyway = true;
             close();
         });

@@ -114,7 +114,8 @@ private:
     void closeParameterFile();
     // Runs `proceed` once every feature from `from` on has settled its unsaved work
     // (WindowFeature::settle); never when the user chose to stay.
-    void settleFeatures(std::function<void()> proceed, qsizetype from = 0);
+    void settleFeatures(WindowFeature::Leaving leaving, std::function<void()> proceed,
+                        qsizetype from = 0);
     bool holdsUnsavedWork() const;
     // Runs `proceed` when nothing is at `path`, or once the user agreed to replace it.
     void confirmReplace(const QString &path, const std::function<void()> &proceed);

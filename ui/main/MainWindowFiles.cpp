@@ -92,15 +92,17 @@ void MainWindow::closeParameterFile()
     updateActions();
 }
 
-void MainWindow::settleFeatures(std::function<void()> proceed, qsizetype from)
+void MainWindow::settleFeatures(WindowFeature::Leaving leaving, std::function<void()> proceed,
+                                qsizetype from)
 {
     if (from >= m_features.size()) {
         proceed();
         return;
     }
     // A feature that asks answers later: the next is asked only then.
-    m_features[from]->settle([this, proceed = std::move(proceed), from]() mutable {
-        settleFeatures(std::move(proceed), from + 1);
+    WindowFeature *feature = m_features[from];
+    feature->settle(leaving, [this, leaving, proceed = std::move(proceed), from]() mutable {
+        settleFeatures(leaving, std::move(proceed), from + 1);
     });
 }
 

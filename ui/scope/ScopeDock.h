@@ -66,6 +66,12 @@ public:
     // The connection changed state: what can be done now.
     void updateActions();
 
+    // The recording shown holds samples that are in memory only.
+    bool hasUnsavedRecording() const;
+    // Before the window closes: `proceed` at once when nothing unsaved would be lost; otherwise
+    // once the recording is saved or discarded (asked, without blocking). Nothing on Cancel.
+    void settleBeforeClosing(const std::function<void()> &proceed);
+
 private:
     void buildToolBars();
     void buildTriggerBar(QToolBar *bar);

@@ -134,10 +134,22 @@ void ScopeDock::chooseCsv(bool visibleOnly)
                               });
 }
 
+bool ScopeDock::hasUnsavedRecording() const
+{
+    return m_unsaved && m_recording->buffer.count() > 0;
+}
+
+void ScopeDock::settleBeforeClosing(const std::function<void()> &proceed)
+{
+    confirmReplacing(tr("Close DriveDesk"),
+                     tr("The scope recording shown is not saved. Closing DriveDesk loses it."),
+                     proceed);
+}
+
 void ScopeDock::confirmReplacing(const QString &title, const QString &text,
                                  const std::function<void()> &proceed)
 {
-    if (!m_unsaved || m_recording->buffer.count() == 0)
+    if (!hasUnsavedRecording())
         return proceed();
     auto *box = new QMessageBox(QMessageBox::Question, title, text,
                                 QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel,

@@ -26,6 +26,19 @@ ScopeFeature::ScopeFeature(WindowFrame &frame, QObject *parent)
     frame.toolBar()->addAction(action);
 }
 
+bool ScopeFeature::holdsUnsavedWork() const
+{
+    return m_dock->hasUnsavedRecording();
+}
+
+void ScopeFeature::settle(Leaving leaving, std::function<void()> proceed)
+{
+    if (leaving == Leaving::Window)
+        m_dock->settleBeforeClosing(proceed);
+    else
+        proceed();
+}
+
 void ScopeFeature::attach(DriveSession *session)
 {
     disconnect(m_describedConnection);

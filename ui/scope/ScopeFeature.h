@@ -16,6 +16,10 @@ public:
     void attach(DriveSession *session) override;
     void updateActions() override;
     void saveSettings() override;
+    // A recording in memory only is asked about when the window closes (Save / Discard /
+    // Cancel); a drive or a file shown instead leaves it as it is.
+    bool holdsUnsavedWork() const override;
+    void settle(Leaving leaving, std::function<void()> proceed) override;
 
     ScopeDock *dock() const { return m_dock; }
 
