@@ -58,7 +58,6 @@ public:
         return nullptr;
     }
 
-
     // WindowFrame
     QWidget *frameWidget() override { return this; }
     // MainWindowFiles.cpp: the parameter file shown instead of a drive, absolute; empty while
