@@ -410,6 +410,7 @@ private slots:
         question->button(QMessageBox::Discard)->click();
         QTRY_VERIFY_WITH_TIMEOUT(dock->isRecording(), kWaitMs);
         QVERIFY(dock->recording() != second);
+        QTRY_VERIFY_WITH_TIMEOUT(dock->recording()->buffer.count() >= 10, kWaitMs);
         record->trigger();
         QTRY_VERIFY_WITH_TIMEOUT(!dock->isRecording(), kWaitMs);
 
