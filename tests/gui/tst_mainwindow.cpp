@@ -358,13 +358,9 @@ private slots:
 
     void lostLinkKeepsWhatWasReadAndReconnects()
     {
-        SimulationOptions options;
-        options.replyLatencyUs = 0;
-        ServedDrive server(Protocol::Hsp5, options);
-        QString error;
-        QVERIFY2(server.listen(0, &error), qPrintable(error));
-        const bool read = connectAndRead(*m_window, server.settings(Protocol::Hsp5));
-        QVERIFY2(read, qPrintable(m_window->noticeBar()->text()));
+        ServedDrive server(Protocol::Hsp5, answeringAtOnce());
+        const QString problem = serveAndConnect(*m_window, server);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
         const std::optional<qint32> before = m_window->model()->value(kDemoPeriod, 0);
         QVERIFY(before);
 
@@ -381,6 +377,7 @@ private slots:
         QVERIFY(!m_window->isReady());
         QVERIFY(!m_window->findChild<QAction *>(QStringLiteral("pollingAction"))->isEnabled());
 
+        QString error;
         QVERIFY2(server.listen(server.port(), &error), qPrintable(error));
         auto *reconnect
             = m_window->noticeBar()->findChild<QPushButton *>(QStringLiteral("noticeReconnect"));
@@ -394,13 +391,9 @@ private slots:
 
     void aDriveThatStopsAnsweringIsShownAsSuchAndRecovers()
     {
-        SimulationOptions options;
-        options.replyLatencyUs = 0;
-        ServedDrive server(Protocol::Hsp5, options);
-        QString error;
-        QVERIFY2(server.listen(0, &error), qPrintable(error));
-        const bool read = connectAndRead(*m_window, server.settings(Protocol::Hsp5));
-        QVERIFY2(read, qPrintable(m_window->noticeBar()->text()));
+        ServedDrive server(Protocol::Hsp5, answeringAtOnce());
+        const QString problem = serveAndConnect(*m_window, server);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
         auto *polling = m_window->findChild<QAction *>(QStringLiteral("pollingAction"));
         polling->setChecked(true);
         PollingController *controller = m_window->findChild<PollingController *>();
@@ -437,12 +430,9 @@ private slots:
     // "Connected". The client's check of the idle line finds it (within 5 s, docs/client.md).
     void aFrozenDriveIsShownWithoutPolling()
     {
-        SimulationOptions options;
-        options.replyLatencyUs = 0;
-        ServedDrive server(Protocol::Hsp5, options);
-        QString error;
-        QVERIFY2(server.listen(0, &error), qPrintable(error));
-        QVERIFY(connectAndRead(*m_window, server.settings(Protocol::Hsp5)));
+        ServedDrive server(Protocol::Hsp5, answeringAtOnce());
+        const QString problem = serveAndConnect(*m_window, server);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
         auto *polling = m_window->findChild<QAction *>(QStringLiteral("pollingAction"));
         QVERIFY(!polling->isChecked());
         QVERIFY(statusLabel("connectionState").startsWith(QStringLiteral("Connected")));
@@ -463,13 +453,9 @@ private slots:
     void connectingAgainClosesTheOldLinkFirst()
     {
         // A device server that serves one connection at a time, as the simulator does.
-        SimulationOptions options;
-        options.replyLatencyUs = 0;
-        ServedDrive server(Protocol::Hsp5, options);
-        QString error;
-        QVERIFY2(server.listen(0, &error), qPrintable(error));
-        const bool read = connectAndRead(*m_window, server.settings(Protocol::Hsp5));
-        QVERIFY2(read, qPrintable(m_window->noticeBar()->text()));
+        ServedDrive server(Protocol::Hsp5, answeringAtOnce());
+        const QString problem = serveAndConnect(*m_window, server);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
         for (int round = 0; round < 4; ++round) {
             QPointer<DriveSession> old = m_window->session();
             m_window->connectTo(server.settings(Protocol::Hsp5));
@@ -483,19 +469,17 @@ private slots:
 
     void aFailedConnectKeepsWhatWasShown()
     {
-        SimulationOptions options;
-        options.replyLatencyUs = 0;
+        const SimulationOptions options = answeringAtOnce();
         ServedDrive server(Protocol::Hsp5, options);
-        QString error;
-        QVERIFY2(server.listen(0, &error), qPrintable(error));
-        const bool read = connectAndRead(*m_window, server.settings(Protocol::Hsp5));
-        QVERIFY2(read, qPrintable(m_window->noticeBar()->text()));
+        const QString problem = serveAndConnect(*m_window, server);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
         const std::optional<qint32> before = m_window->model()->value(kDemoPeriod, 0);
         QVERIFY(before);
         const QString title = m_window->windowTitle();
 
         // A gateway where nothing listens.
         ServedDrive gone(Protocol::Hsp5, options);
+        QString error;
         QVERIFY2(gone.listen(0, &error), qPrintable(error));
         const ConnectionSettings nowhere = gone.settings(Protocol::Hsp5);
         gone.close();

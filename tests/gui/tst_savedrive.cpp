@@ -138,12 +138,9 @@ private slots:
 
     void staleValuesAreReadAgainBeforeTheyAreSaved()
     {
-        SimulationOptions options;
-        options.replyLatencyUs = 0;
-        ServedDrive server(Protocol::Hsp5, options);
-        QString error;
-        QVERIFY2(server.listen(0, &error), qPrintable(error));
-        QVERIFY(connectAndRead(*m_window, server.settings(Protocol::Hsp5)));
+        ServedDrive server(Protocol::Hsp5, answeringAtOnce());
+        const QString problem = serveAndConnect(*m_window, server);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
         const QModelIndex speed = m_window->model()->valueIndex(kFixedSpeed1, 2);
         QCOMPARE(m_window->model()->value(kFixedSpeed1, 2), 100);
 
@@ -179,6 +176,7 @@ private slots:
 
         const QString file = path(QStringLiteral("fresh.json"));
         QVERIFY(saveDriveAndWait(*m_window, file));
+        QString error;
         const std::optional<DriveDescription> saved = ParameterDocument::load(file, &error);
         QVERIFY2(saved, qPrintable(error));
         QCOMPARE(saved->find(kFixedSpeed1)->values[2], 777);

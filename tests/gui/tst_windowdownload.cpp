@@ -204,12 +204,9 @@ private slots:
     // drive holds: it reads the drive again all the same.
     void aDownloadWithoutAnswersReadsTheDriveAgain()
     {
-        SimulationOptions options;
-        options.replyLatencyUs = 0;
-        ServedDrive server(Protocol::Hsp5, options);
-        QString error;
-        QVERIFY2(server.listen(0, &error), qPrintable(error));
-        QVERIFY(connectAndRead(*m_window, server.settings(Protocol::Hsp5)));
+        ServedDrive server(Protocol::Hsp5, answeringAtOnce());
+        const QString problem = serveAndConnect(*m_window, server);
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
         const QString file = fileWith(QStringLiteral("unanswered.json"), [](DriveDescription &d) {
             setValue(d, kFixedSpeed1, 3, 777);
         });
