@@ -2553,18 +2553,6 @@
         <translation>Verbindung nicht möglich (%1): %2</translation>
     </message>
     <message>
-        <source>?</source>
-        <translation>?</translation>
-    </message>
-    <message>
-        <source>Active set: %1</source>
-        <translation>Aktiver Satz: %1</translation>
-    </message>
-    <message>
-        <source>Set pointer (Fr.09): %1</source>
-        <translation>Satzzeiger (Fr.09): %1</translation>
-    </message>
-    <message>
         <source>Disconnected from %1. What was read stays shown.</source>
         <translation>Getrennt (%1). Das Gelesene bleibt sichtbar.</translation>
     </message>
@@ -2627,10 +2615,6 @@
     <message>
         <source>Main Toolbar</source>
         <translation>Hauptwerkzeugleiste</translation>
-    </message>
-    <message>
-        <source>Fr.02: the set the drive works with. Fr.09: the set that indirect addressing reaches.</source>
-        <translation>Fr.02: der Satz, mit dem der Umrichter arbeitet. Fr.09: der Satz, den die indirekte Adressierung erreicht.</translation>
     </message>
     <message>
         <source>Language</source>
@@ -2726,10 +2710,6 @@
         <translation>Keine Verbindung zu %1: %2. Was vorher angezeigt wurde, bleibt stehen.</translation>
     </message>
     <message>
-        <source>Save &amp;Drive to File...</source>
-        <translation>Umrichter in &amp;Datei sichern …</translation>
-    </message>
-    <message>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
     </message>
@@ -2751,21 +2731,6 @@
     <message>
         <source>The parameter file holds no parameters.</source>
         <translation>Die Parameterdatei enthält keine Parameter.</translation>
-    </message>
-    <message>
-        <source>Could not save %1: %2. The file on disk is as it was.</source>
-        <translation>%1 konnte nicht gespeichert werden: %2. Die Datei auf dem Datenträger ist unverändert.</translation>
-    </message>
-    <message>
-        <source>Save Drive to File</source>
-        <translation>Umrichter in Datei sichern</translation>
-    </message>
-    <message numerus="yes">
-        <source>Saved %n parameter(s) of the drive to %1.</source>
-        <translation>
-            <numerusform>%n Parameter des Umrichters in %1 gesichert.</numerusform>
-            <numerusform>%n Parameter des Umrichters in %1 gesichert.</numerusform>
-        </translation>
     </message>
     <message>
         <source>%1[*] - DriveDesk</source>
@@ -2800,39 +2765,8 @@
         <translation>Das erneute Lesen des Umrichters wurde beendet: %1</translation>
     </message>
     <message>
-        <source>Read the drive afresh and save it to a parameter file once every value was read; the window goes on with the drive</source>
-        <translation>Den Umrichter neu lesen und in einer Parameterdatei sichern, sobald jeder Wert gelesen ist; das Fenster bleibt beim Umrichter</translation>
-    </message>
-    <message>
         <source>Drive Inf&amp;ormation...</source>
         <translation>Umrichter-Inf&amp;ormationen …</translation>
-    </message>
-    <message>
-        <source>Saving the drive to %1: %2</source>
-        <translation>Sichere den Umrichter in %1: %2</translation>
-    </message>
-    <message>
-        <source>Saving the drive to %1: reading the drive...</source>
-        <translation>Sichere den Umrichter in %1: lese den Umrichter …</translation>
-    </message>
-    <message>
-        <source>Save Drive to File cancelled: nothing was saved to %1.</source>
-        <translation>Umrichter in Datei sichern abgebrochen: nichts wurde in %1 gesichert.</translation>
-    </message>
-    <message>
-        <source>The drive was not saved to %1: %2.</source>
-        <translation>Der Umrichter wurde nicht in %1 gesichert: %2.</translation>
-    </message>
-    <message>
-        <source>Not read:</source>
-        <translation>Nicht gelesen:</translation>
-    </message>
-    <message numerus="yes">
-        <source>... and %n more (Show Details...)</source>
-        <translation>
-            <numerusform>… und %n weiterer (Details anzeigen …)</numerusform>
-            <numerusform>… und %n weitere (Details anzeigen …)</numerusform>
-        </translation>
     </message>
 </context>
 <context>
@@ -3704,6 +3638,59 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::SaveDriveFeature</name>
+    <message>
+        <source>Save &amp;Drive to File...</source>
+        <translation>Umrichter in &amp;Datei sichern …</translation>
+    </message>
+    <message>
+        <source>Read the drive afresh and save it to a parameter file once every value was read; the window goes on with the drive</source>
+        <translation>Den Umrichter neu lesen und in einer Parameterdatei sichern, sobald jeder Wert gelesen ist; das Fenster bleibt beim Umrichter</translation>
+    </message>
+    <message>
+        <source>Save Drive to File</source>
+        <translation>Umrichter in Datei sichern</translation>
+    </message>
+    <message>
+        <source>Saving the drive to %1: %2</source>
+        <translation>Sichere den Umrichter in %1: %2</translation>
+    </message>
+    <message>
+        <source>Saving the drive to %1: reading the drive...</source>
+        <translation>Sichere den Umrichter in %1: lese den Umrichter …</translation>
+    </message>
+    <message>
+        <source>Save Drive to File cancelled: nothing was saved to %1.</source>
+        <translation>Umrichter in Datei sichern abgebrochen: nichts wurde in %1 gesichert.</translation>
+    </message>
+    <message>
+        <source>The drive was not saved to %1: %2.</source>
+        <translation>Der Umrichter wurde nicht in %1 gesichert: %2.</translation>
+    </message>
+    <message>
+        <source>Not read:</source>
+        <translation>Nicht gelesen:</translation>
+    </message>
+    <message numerus="yes">
+        <source>... and %n more (Show Details...)</source>
+        <translation>
+            <numerusform>… und %n weiterer (Details anzeigen …)</numerusform>
+            <numerusform>… und %n weitere (Details anzeigen …)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Could not save %1: %2. The file on disk is as it was.</source>
+        <translation>%1 konnte nicht gespeichert werden: %2. Die Datei auf dem Datenträger ist unverändert.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %n parameter(s) of the drive to %1.</source>
+        <translation>
+            <numerusform>%n Parameter des Umrichters in %1 gesichert.</numerusform>
+            <numerusform>%n Parameter des Umrichters in %1 gesichert.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::ScaledSpinBox</name>
     <message>
         <source>%1 .. %2</source>
@@ -4339,6 +4326,25 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
     <message>
         <source>Set %1</source>
         <translation>Satz %1</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::SetsFeature</name>
+    <message>
+        <source>Fr.02: the set the drive works with. Fr.09: the set that indirect addressing reaches.</source>
+        <translation>Fr.02: der Satz, mit dem der Umrichter arbeitet. Fr.09: der Satz, den die indirekte Adressierung erreicht.</translation>
+    </message>
+    <message>
+        <source>?</source>
+        <translation>?</translation>
+    </message>
+    <message>
+        <source>Active set: %1</source>
+        <translation>Aktiver Satz: %1</translation>
+    </message>
+    <message>
+        <source>Set pointer (Fr.09): %1</source>
+        <translation>Satzzeiger (Fr.09): %1</translation>
     </message>
 </context>
 <context>

@@ -2553,18 +2553,6 @@
         <translation>Could not connect to %1: %2</translation>
     </message>
     <message>
-        <source>?</source>
-        <translation>?</translation>
-    </message>
-    <message>
-        <source>Active set: %1</source>
-        <translation>Active set: %1</translation>
-    </message>
-    <message>
-        <source>Set pointer (Fr.09): %1</source>
-        <translation>Set pointer (Fr.09): %1</translation>
-    </message>
-    <message>
         <source>Disconnected from %1. What was read stays shown.</source>
         <translation>Disconnected from %1. What was read stays shown.</translation>
     </message>
@@ -2627,10 +2615,6 @@
     <message>
         <source>Main Toolbar</source>
         <translation>Main Toolbar</translation>
-    </message>
-    <message>
-        <source>Fr.02: the set the drive works with. Fr.09: the set that indirect addressing reaches.</source>
-        <translation>Fr.02: the set the drive works with. Fr.09: the set that indirect addressing reaches.</translation>
     </message>
     <message>
         <source>Language</source>
@@ -2726,10 +2710,6 @@
         <translation>Could not connect to %1: %2. What was shown before stays.</translation>
     </message>
     <message>
-        <source>Save &amp;Drive to File...</source>
-        <translation>Save &amp;Drive to File...</translation>
-    </message>
-    <message>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
@@ -2751,21 +2731,6 @@
     <message>
         <source>The parameter file holds no parameters.</source>
         <translation>The parameter file holds no parameters.</translation>
-    </message>
-    <message>
-        <source>Could not save %1: %2. The file on disk is as it was.</source>
-        <translation>Could not save %1: %2. The file on disk is as it was.</translation>
-    </message>
-    <message>
-        <source>Save Drive to File</source>
-        <translation>Save Drive to File</translation>
-    </message>
-    <message numerus="yes">
-        <source>Saved %n parameter(s) of the drive to %1.</source>
-        <translation>
-            <numerusform>Saved %n parameter of the drive to %1.</numerusform>
-            <numerusform>Saved %n parameters of the drive to %1.</numerusform>
-        </translation>
     </message>
     <message>
         <source>%1[*] - DriveDesk</source>
@@ -2800,39 +2765,8 @@
         <translation>Reading the drive again stopped: %1</translation>
     </message>
     <message>
-        <source>Read the drive afresh and save it to a parameter file once every value was read; the window goes on with the drive</source>
-        <translation>Read the drive afresh and save it to a parameter file once every value was read; the window goes on with the drive</translation>
-    </message>
-    <message>
         <source>Drive Inf&amp;ormation...</source>
         <translation>Drive Inf&amp;ormation...</translation>
-    </message>
-    <message>
-        <source>Saving the drive to %1: %2</source>
-        <translation>Saving the drive to %1: %2</translation>
-    </message>
-    <message>
-        <source>Saving the drive to %1: reading the drive...</source>
-        <translation>Saving the drive to %1: reading the drive...</translation>
-    </message>
-    <message>
-        <source>Save Drive to File cancelled: nothing was saved to %1.</source>
-        <translation>Save Drive to File cancelled: nothing was saved to %1.</translation>
-    </message>
-    <message>
-        <source>The drive was not saved to %1: %2.</source>
-        <translation>The drive was not saved to %1: %2.</translation>
-    </message>
-    <message>
-        <source>Not read:</source>
-        <translation>Not read:</translation>
-    </message>
-    <message numerus="yes">
-        <source>... and %n more (Show Details...)</source>
-        <translation>
-            <numerusform>... and %n more (Show Details...)</numerusform>
-            <numerusform>... and %n more (Show Details...)</numerusform>
-        </translation>
     </message>
 </context>
 <context>
@@ -3704,6 +3638,59 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::SaveDriveFeature</name>
+    <message>
+        <source>Save &amp;Drive to File...</source>
+        <translation>Save &amp;Drive to File...</translation>
+    </message>
+    <message>
+        <source>Read the drive afresh and save it to a parameter file once every value was read; the window goes on with the drive</source>
+        <translation>Read the drive afresh and save it to a parameter file once every value was read; the window goes on with the drive</translation>
+    </message>
+    <message>
+        <source>Save Drive to File</source>
+        <translation>Save Drive to File</translation>
+    </message>
+    <message>
+        <source>Saving the drive to %1: %2</source>
+        <translation>Saving the drive to %1: %2</translation>
+    </message>
+    <message>
+        <source>Saving the drive to %1: reading the drive...</source>
+        <translation>Saving the drive to %1: reading the drive...</translation>
+    </message>
+    <message>
+        <source>Save Drive to File cancelled: nothing was saved to %1.</source>
+        <translation>Save Drive to File cancelled: nothing was saved to %1.</translation>
+    </message>
+    <message>
+        <source>The drive was not saved to %1: %2.</source>
+        <translation>The drive was not saved to %1: %2.</translation>
+    </message>
+    <message>
+        <source>Not read:</source>
+        <translation>Not read:</translation>
+    </message>
+    <message numerus="yes">
+        <source>... and %n more (Show Details...)</source>
+        <translation>
+            <numerusform>... and %n more (Show Details...)</numerusform>
+            <numerusform>... and %n more (Show Details...)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Could not save %1: %2. The file on disk is as it was.</source>
+        <translation>Could not save %1: %2. The file on disk is as it was.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %n parameter(s) of the drive to %1.</source>
+        <translation>
+            <numerusform>Saved %n parameter of the drive to %1.</numerusform>
+            <numerusform>Saved %n parameters of the drive to %1.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::ScaledSpinBox</name>
     <message>
         <source>%1 .. %2</source>
@@ -4339,6 +4326,25 @@ Home: the whole recording; End: follow the newest samples; A: fit the values; Sp
     <message>
         <source>Set %1</source>
         <translation>Set %1</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::SetsFeature</name>
+    <message>
+        <source>Fr.02: the set the drive works with. Fr.09: the set that indirect addressing reaches.</source>
+        <translation>Fr.02: the set the drive works with. Fr.09: the set that indirect addressing reaches.</translation>
+    </message>
+    <message>
+        <source>?</source>
+        <translation>?</translation>
+    </message>
+    <message>
+        <source>Active set: %1</source>
+        <translation>Active set: %1</translation>
+    </message>
+    <message>
+        <source>Set pointer (Fr.09): %1</source>
+        <translation>Set pointer (Fr.09): %1</translation>
     </message>
 </context>
 <context>

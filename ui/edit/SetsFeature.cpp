@@ -3,20 +3,16 @@
 #include "frame/DriveSession.h"
 #include "model/ParameterModel.h"
 
-#include <QCoreApplication>
 #include <QLabel>
 
 namespace DriveDesk {
-
-// The label's texts keep the window's context, under which the catalogues hold them.
 
 SetsFeature::SetsFeature(WindowFrame &frame, QObject *parent)
     : WindowFeature(frame, parent)
 {
     m_label = new QLabel;
     m_label->setObjectName(QStringLiteral("parameterSets"));
-    m_label->setToolTip(QCoreApplication::translate(
-        "DriveDesk::MainWindow", "Fr.02: the set the drive works with. Fr.09: the set that "
+    m_label->setToolTip(tr("Fr.02: the set the drive works with. Fr.09: the set that "
                                  "indirect addressing reaches."));
     m_label->hide();
     frame.addStatusWidget(m_label);
@@ -49,7 +45,7 @@ void SetsFeature::update()
             return QString();
         const std::optional<qint32> value = model->value(*address, 0);
         return value ? QString::number(*value)
-                     : QCoreApplication::translate("DriveDesk::MainWindow", "?");
+                     : tr("?");
     };
     // The table marks the active set's column, following every reading of Fr.02.
     model->setActiveSet(m_session ? m_session->activeSet() : -1);
@@ -57,10 +53,10 @@ void SetsFeature::update()
     const QString pointer = m_session ? valueText(m_session->setPointerAddress()) : QString();
     QStringList parts;
     if (!active.isEmpty())
-        parts << QCoreApplication::translate("DriveDesk::MainWindow", "Active set: %1")
+        parts << tr("Active set: %1")
                      .arg(active);
     if (!pointer.isEmpty())
-        parts << QCoreApplication::translate("DriveDesk::MainWindow", "Set pointer (Fr.09): %1")
+        parts << tr("Set pointer (Fr.09): %1")
                      .arg(pointer);
     m_label->setText(parts.join(QStringLiteral("   ")));
     m_label->setVisible(!parts.isEmpty());

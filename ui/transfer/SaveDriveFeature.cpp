@@ -7,15 +7,11 @@
 #include "session/UploadRun.h"
 
 #include <QAction>
-#include <QCoreApplication>
 #include <QDate>
 #include <QDir>
 #include <QFileInfo>
 #include <QMenu>
 #include <QMessageBox>
-
-// The texts keep the window's context, under which the catalogues hold them: Save Drive to File
-// was the window's own command.
 
 namespace DriveDesk {
 
@@ -23,10 +19,9 @@ SaveDriveFeature::SaveDriveFeature(WindowFrame &frame, QObject *parent)
     : WindowFeature(frame, parent)
 {
     m_action = new QAction(
-        QCoreApplication::translate("DriveDesk::MainWindow", "Save &Drive to File..."), this);
+        tr("Save &Drive to File..."), this);
     m_action->setObjectName(QStringLiteral("saveDriveAction"));
-    m_action->setToolTip(QCoreApplication::translate(
-        "DriveDesk::MainWindow", "Read the drive afresh and save it to a parameter file once "
+    m_action->setToolTip(tr("Read the drive afresh and save it to a parameter file once "
                                  "every value was read; the window goes on with the drive"));
     connect(m_action, &QAction::triggered, this, &SaveDriveFeature::chooseFile);
     QMenu *file = frame.menu(WindowFrame::Menu::File);
@@ -54,7 +49,7 @@ void SaveDriveFeature::chooseFile()
     const QString name
         = QStringLiteral("drive-%1.json").arg(QDate::currentDate().toString(Qt::ISODate));
     frame().chooseFileToWrite(
-        QCoreApplication::translate("DriveDesk::MainWindow", "Save Drive to File"), name, {},
+        tr("Save Drive to File"), name, {},
         [this](const QString &path) { saveDriveToFile(path); });
 }
 
@@ -76,8 +71,7 @@ bool SaveDriveFeature::saveDriveToFile(const QString &path)
     const QString noticeText = notice->text();
     connect(upload, &UploadRun::progress, this,
             [notice, name](int value, int maximum, const QString &what) {
-                notice->showProgress(QCoreApplication::translate("DriveDesk::MainWindow",
-                                                                 "Saving the drive to %1: %2")
+                notice->showProgress(tr("Saving the drive to %1: %2")
                                          .arg(name, what),
                                      value, maximum);
             });
@@ -97,8 +91,7 @@ bool SaveDriveFeature::saveDriveToFile(const QString &path)
                 driveRead(result, path);
                 frame().updateActions();
             });
-    notice->showProgress(QCoreApplication::translate("DriveDesk::MainWindow",
-                                                     "Saving the drive to %1: reading the drive...")
+    notice->showProgress(tr("Saving the drive to %1: reading the drive...")
                              .arg(name),
                          0, 1000);
     ScanOptions reading;
@@ -112,16 +105,14 @@ void SaveDriveFeature::driveRead(const UploadResult &result, const QString &path
 {
     if (result.outcome == UploadResult::Outcome::Cancelled) {
         frame().showMessage(
-            QCoreApplication::translate("DriveDesk::MainWindow",
-                                        "Save Drive to File cancelled: nothing was saved to %1.")
+            tr("Save Drive to File cancelled: nothing was saved to %1.")
                 .arg(shownPath(path)));
         return;
     }
     const QString title
-        = QCoreApplication::translate("DriveDesk::MainWindow", "Save Drive to File");
+        = tr("Save Drive to File");
     if (!result.isComplete()) {
-        const QString text = QCoreApplication::translate("DriveDesk::MainWindow",
-                                                         "The drive was not saved to %1: %2.")
+        const QString text = tr("The drive was not saved to %1: %2.")
                                  .arg(shownPath(path), result.summary());
         frame().showMessage(text);
         auto *box = new QMessageBox(QMessageBox::Warning, title, text, QMessageBox::Ok,
@@ -129,13 +120,12 @@ void SaveDriveFeature::driveRead(const UploadResult &result, const QString &path
         box->setObjectName(QStringLiteral("uploadRefused"));
         const QStringList details = result.details();
         constexpr int kShown = 8;
-        QString missing = QCoreApplication::translate("DriveDesk::MainWindow", "Not read:")
+        QString missing = tr("Not read:")
                           + QLatin1Char('\n') + details.mid(0, kShown).join(QLatin1Char('\n'));
         if (details.size() > kShown) {
             const int more = int(details.size()) - kShown;
             missing += QLatin1Char('\n')
-                       + QCoreApplication::translate("DriveDesk::MainWindow",
-                                                     "... and %n more (Show Details...)", nullptr,
+                       + tr("... and %n more (Show Details...)", nullptr,
                                                      more);
         }
         box->setInformativeText(missing);
@@ -145,16 +135,13 @@ void SaveDriveFeature::driveRead(const UploadResult &result, const QString &path
     }
     QString error;
     if (!saveUpload(path, result, &error)) {
-        const QString text = QCoreApplication::translate(
-                                 "DriveDesk::MainWindow",
-                                 "Could not save %1: %2. The file on disk is as it was.")
+        const QString text = tr("Could not save %1: %2. The file on disk is as it was.")
                                  .arg(shownPath(path), error);
         frame().showMessage(text);
         showFileProblem(frame().frameWidget(), title, text);
         return;
     }
-    frame().showMessage(QCoreApplication::translate("DriveDesk::MainWindow",
-                                                    "Saved %n parameter(s) of the drive to %1.",
+    frame().showMessage(tr("Saved %n parameter(s) of the drive to %1.",
                                                     nullptr, result.document.parameterCount())
                             .arg(shownPath(path)));
 }
