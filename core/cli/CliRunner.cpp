@@ -1,5 +1,7 @@
 #include "CliRunner.h"
 
+#include "client/WhenFinished.h"
+
 #include "bus/LinkFactory.h"
 #include "cli/CliPlant.h"
 #include "cli/ParameterTable.h"
@@ -72,7 +74,7 @@ void CliRunner::enterPassword()
         return runCommand();
     const auto job = std::make_shared<PasswordLevelJob>(m_request.connection.protocol,
                                                         m_request.password);
-    m_client->run(job).then(this, [this](const PasswordLevelOutcome &outcome) {
+    whenFinished(m_client->run(job), this, [this](const PasswordLevelOutcome &outcome) {
         if (!outcome.passwordAccepted)
             return fail(1, tr("password not accepted: %1").arg(outcome.error));
         if (!m_request.quiet && outcome.level) {
@@ -80,7 +82,7 @@ void CliRunner::enterPassword()
                   << '\n';
         }
         runCommand();
-    });
+    }, [this] { connectionClosed(); });
 }
 
 void CliRunner::runCommand()
@@ -115,12 +117,12 @@ void CliRunner::runLegacy()
     }
     const QString id = ParameterId::hexAddress(*address);
     if (m_request.command == CliRequest::Command::Read) {
-        m_client->readValueStandard(*address, 0).then(this, [this, id](const Reply &r) {
+        whenFinished(m_client->readValueStandard(*address, 0), this, [this, id](const Reply &r) {
             if (!r.ok())
                 return fail(1, QStringLiteral("%1: %2").arg(id, r.message()));
             m_out << tr("%1 = %2 (raw)").arg(id).arg(r.data<ParameterValue>()->value) << '\n';
             done();
-        });
+        }, [this] { connectionClosed(); });
         return;
     }
     bool ok = false;
@@ -256,7 +258,7 @@ void CliRunner::runRead()
                                    ? m_client->readValue(parameter.address, quint8(1u << *m_request.set))
                                    : m_client->readValueStandard(parameter.address, 0);
         const QString where = m_request.set ? tr("set %1").arg(*m_request.set) : tr("active set");
-        reply.then(this, [this, id, where, parameter](const Reply &r) {
+        whenFinished(reply, this, [this, id, where, parameter](const Reply &r) {
             if (!r.ok())
                 return fail(1, QStringLiteral("%1: %2").arg(id, r.message()));
             const qint32 raw = r.data<ParameterValue>()->value;
@@ -266,7 +268,7 @@ void CliRunner::runRead()
                          .arg(where)
                   << '\n';
             done();
-        });
+        }, [this] { connectionClosed(); });
     });
 }
 
@@ -322,6 +324,11 @@ QString CliRunner::stoppedAfter(const QString &what, const DriveDescription &dri
             read += parameter.error.isEmpty() && !parameter.name.isEmpty() ? 1 : 0;
     }
     return tr("%1 stopped after %2 of %n parameter(s)", nullptr, known).arg(what).arg(read);
+}
+
+void CliRunner::connectionClosed()
+{
+    fail(3, tr("the connection to the drive was closed"));
 }
 
 void CliRunner::fail(int exitCode, const QString &message)

@@ -77,6 +77,8 @@ private:
 
     // A failure (1) while the drive has stopped answering becomes exit 3, and says so.
     void fail(int exitCode, const QString &message);
+    // A request or job dropped before it had an answer: the connection went.
+    void connectionClosed();
     // "scan stopped after 120 of 206 parameters": how far a reading of the drive got.
     static QString stoppedAfter(const QString &what, const DriveDescription &drive);
     void done();

@@ -1,6 +1,8 @@
 // drivedesk-cli scope: records the drive's scope data for a while and writes it as CSV.
 #include "CliRunner.h"
 
+#include "client/WhenFinished.h"
+
 #include "parameters/ParameterId.h"
 #include "scope/ScopeCsv.h"
 #include "scope/ScopeRecording.h"
@@ -46,7 +48,7 @@ void CliRunner::runScope()
         }
         const auto job = std::make_shared<ScopeChannelsJob>(m_request.connection.protocol, drive,
                                                             choices);
-        m_client->run(job).then(this, [this, drive](const ScopeChannelsOutcome &outcome) {
+        whenFinished(m_client->run(job), this, [this, drive](const ScopeChannelsOutcome &outcome) {
             if (outcome.refusedChoice)
                 return fail(2, outcome.error);
             if (!outcome.error.isEmpty())
@@ -56,7 +58,7 @@ void CliRunner::runScope()
             if (m_request.offline)
                 return readOfflineRecords(channels);
             record(channels);
-        });
+        }, [this] { connectionClosed(); });
     });
 }
 

@@ -4,6 +4,8 @@ drivedesk_add_test(NAME tst_reply LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_reply.cpp LIBS drivedesk_client drivedesk_translations)
 drivedesk_add_test(NAME tst_replycheck LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_replycheck.cpp LIBS drivedesk_client)
+drivedesk_add_test(NAME tst_whenfinished LABELS unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_whenfinished.cpp LIBS drivedesk_client)
 
 foreach(name clientservices clientdin clientpipeline clientfaults clienttransports clientscan clientunplug
         clientseedonly clientcache)

@@ -1,6 +1,7 @@
 #include "DriveSession.h"
 
 #include "bus/LinkFactory.h"
+#include "client/WhenFinished.h"
 #include "model/ParameterModel.h"
 
 namespace DriveDesk {
@@ -149,7 +150,7 @@ void DriveSession::readSetPointers()
     for (const std::optional<quint16> &address : { m_activeSet, m_setPointer }) {
         if (!address)
             continue;
-        m_client->readValue(*address, 0x01).then(this, [this](const Reply &reply) {
+        whenFinished(m_client->readValue(*address, 0x01), this, [this](const Reply &reply) {
             if (const auto *value = reply.data<ParameterValue>())
                 m_model->setValue(value->address, 0, value->value);
         });

@@ -5,6 +5,7 @@
 #include "ScopeChart.h"
 
 #include "client/DriveClient.h"
+#include "client/WhenFinished.h"
 #include "frame/WindowFeature.h"
 #include "model/ParameterModel.h"
 #include "scope/ScopeRecording.h"
@@ -57,9 +58,15 @@ void ScopeDock::startRecordingNow()
     showStatus(tr("Assigning the channels..."));
     const auto job = std::make_shared<ScopeChannelsJob>(m_client->settings().protocol, m_drive,
                                                         m_panel->choices());
-    m_client->run(job).then(this, [this](const ScopeChannelsOutcome &outcome) {
-        channelsAssigned(outcome);
-    });
+    whenFinished(
+        m_client->run(job), this,
+        [this](const ScopeChannelsOutcome &outcome) { channelsAssigned(outcome); },
+        [this] {
+            ScopeChannelsOutcome dropped;
+            dropped.error = tr("the connection went away");
+            dropped.connectionFailed = true;
+            channelsAssigned(dropped);
+        });
 }
 
 void ScopeDock::showAssignmentInTable(const ScopeAssignment &assignment)
@@ -275,9 +282,14 @@ void ScopeDock::readOfflineRecordsNow()
     // The channels as assigned now tell what the records hold.
     const auto channels = std::make_shared<ScopeChannelsJob>(m_client->settings().protocol,
                                                              m_drive, ScopeAssignment{});
-    m_client->run(channels).then(this, [this](const ScopeChannelsOutcome &assigned) {
-        readOfflineRecordsOf(scopeChannels(m_drive, assigned.assignment));
-    });
+    whenFinished(
+        m_client->run(channels), this,
+        [this](const ScopeChannelsOutcome &assigned) {
+            readOfflineRecordsOf(scopeChannels(m_drive, assigned.assignment));
+        },
+        [this] {
+            offlineRecordsRead({{}, 0, 0, tr("The connection went away.")}, ScopeChannels{});
+        });
 }
 
 void ScopeDock::readOfflineRecordsOf(const ScopeChannels &channels)
