@@ -302,8 +302,10 @@ void CliRunner::writeValue(const QString &id, const ParameterDescription &parame
                      edits->deleteLater();
                      const QString text
                          = EditText(id, described ? &parameter : nullptr).outcome(outcome);
+                     // Unknown is no refusal: the drive did not answer (exit 3, as a
+                     // drive that stopped answering).
                      if (!outcome.complete())
-                         return fail(1, text);
+                         return fail(outcome.anyUnknown() ? 3 : 1, text);
                      m_out << text << '\n';
                      done();
                  });

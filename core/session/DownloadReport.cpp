@@ -81,6 +81,7 @@ DownloadReport reportDownload(const DownloadPlan &plan,
         quint8 refused = 0;
         quint8 notSent = 0;
         std::map<qint32, quint8> other; // read back other than written
+        std::map<qint32, quint8> notTaken; // no answer to the write, and read holding this
         for (int set = 0; set < kParameterSets; ++set) {
             const auto s = std::size_t(set);
             const auto bit = quint8(1u << set);
@@ -97,7 +98,12 @@ DownloadReport reportDownload(const DownloadPlan &plan,
             } else if (outcome->unansweredMask & bit) {
                 unanswered |= bit;
             } else if ((outcome->refusedMask & bit) && !(outcome->notSentMask & bit)) {
-                refused |= bit;
+                // A write without answer that reading the set settled: it holds another value.
+                const std::optional<qint32> back = outcome->readBack[s];
+                if (back && back != item.wanted[s])
+                    notTaken[*back] |= bit;
+                else
+                    refused |= bit;
             } else {
                 notSent |= bit;
             }
@@ -115,6 +121,14 @@ DownloadReport reportDownload(const DownloadPlan &plan,
             report.refused << line(DownloadReport::tr("written %1, but %2 holds %3")
                                        .arg(valuesText(item, sets, item.wanted, format),
                                             setsText(item, sets), format.text(value)),
+                                   sets);
+        }
+        for (const auto &[value, sets] : notTaken) {
+            report.refused << line(DownloadReport::tr("%1: no answer to writing %2, and the "
+                                                      "drive holds %3: not written")
+                                       .arg(setsText(item, sets),
+                                            valuesText(item, sets, item.wanted, format),
+                                            format.text(value)),
                                    sets);
         }
         if (unanswered) {

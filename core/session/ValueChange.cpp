@@ -3,12 +3,20 @@
 #include "client/ValueRequests.h"
 #include "parameters/SetList.h"
 
+#include <QCoreApplication>
+
 #include <memory>
 #include <utility>
 
 namespace DriveDesk {
 
 namespace {
+
+// The context of the texts of a change's read-back.
+class ValueChangeText
+{
+    Q_DECLARE_TR_FUNCTIONS(ValueChangeText)
+};
 
 constexpr std::size_t kActiveSlot = kParameterSets; // the early read of the active set
 
@@ -47,6 +55,20 @@ struct ChangeRun
     int earlyOnTheWay = 0;
     int readsOnTheWay = 0;
     std::array<EarlyRead, kParameterSets + 1> early{}; // per set, then the active set
+    bool activeSetFailed = false; // a step with set mask 0 was refused or got no answer
+
+    // The value the last step that wrote `slot` asked for (a reset's is not known).
+    std::optional<qint32> askedIn(std::size_t slot) const
+    {
+        std::optional<qint32> raw;
+        for (const WriteStep &step : change.steps) {
+            const bool writes = slot == kActiveSlot ? step.setMask == 0
+                                                    : (step.setMask & (1u << slot)) != 0;
+            if (writes)
+                raw = step.reset ? std::nullopt : std::optional<qint32>(step.raw);
+        }
+        return raw;
+    }
 };
 using ChangeRunPtr = std::shared_ptr<ChangeRun>;
 
@@ -96,51 +118,112 @@ bool readsEarly(const ChangeRun &run, qsizetype index)
     return true;
 }
 
+constexpr int kReadBackAttempts = 3; // an implausible answer is read again so often in all
+
 void finishReadBack(const ChangeRunPtr &run)
 {
-    if (run->readsOnTheWay == 0)
-        run->done(run->outcome);
+    if (run->readsOnTheWay != 0)
+        return;
+    WriteOutcome &outcome = run->outcome;
+    // Every set that failed was settled by reading it: the write was taken after all.
+    if (outcome.refusedMask == 0 && !run->activeSetFailed)
+        outcome.error.clear();
+    run->done(outcome);
+}
+
+// What a read of a set whose write got no answer settles: the value written means the write
+// came through; another value means it did not; no value leaves it unknown.
+void settleUnanswered(ChangeRun &run, std::size_t slot, qint32 held)
+{
+    WriteOutcome &outcome = run.outcome;
+    const std::optional<qint32> asked = run.askedIn(slot);
+    // A reset's value, or a parameter that may show another value than the one written (a
+    // password): what it holds does not say whether the write came through.
+    if (!asked || !run.change.readBackShowsWrite)
+        return;
+    if (slot == kActiveSlot) {
+        outcome.activeSetUnanswered = false;
+        if (held == asked) {
+            outcome.activeSetAcknowledged = true;
+            outcome.activeSetConfirmedByReading = true;
+            run.activeSetFailed = false;
+        }
+        return;
+    }
+    const auto bit = quint8(1u << slot);
+    outcome.unansweredMask &= quint8(~bit);
+    if (held == asked) {
+        outcome.refusedMask &= quint8(~bit);
+        outcome.acknowledgedMask |= bit;
+        outcome.confirmedByReadingMask |= bit;
+    }
+}
+
+// Reads one set after the writes; `unanswered`: its write got no answer.
+void readSlot(RequestSink &sink, const ChangeRunPtr &run, std::size_t slot, bool unanswered,
+              int attemptsLeft)
+{
+    const std::size_t set = slot == kActiveSlot ? 0 : slot;
+    sink.submit(readOf(run->protocol, run->change.address, slot),
+                [&sink, run, slot, set, unanswered, attemptsLeft](const Reply &reply) {
+                    WriteOutcome &outcome = run->outcome;
+                    const auto *value = reply.data<ParameterValue>();
+                    const QString implausible = value && run->change.implausible
+                        ? run->change.implausible(value->value)
+                        : QString();
+                    if (value && !implausible.isEmpty() && attemptsLeft > 1)
+                        return readSlot(sink, run, slot, unanswered, attemptsLeft - 1);
+                    --run->readsOnTheWay;
+                    if (value && implausible.isEmpty()) {
+                        outcome.readBack.at(set) = value->value;
+                        if (unanswered)
+                            settleUnanswered(*run, slot, value->value);
+                    } else if (outcome.readBackError.isEmpty()) {
+                        outcome.readBackError = value
+                            ? ValueChangeText::tr("the drive's answer cannot be its value: %1")
+                                  .arg(implausible)
+                            : reply.message();
+                    }
+                    if (reply.isConnectionFailure())
+                        outcome.connectionFailed = true;
+                    finishReadBack(run);
+                });
 }
 
 void readBack(RequestSink &sink, const ChangeRunPtr &run)
 {
-    const quint16 address = run->change.address;
-    QList<std::size_t> wanted;
-    if (run->outcome.activeSetAcknowledged)
-        wanted << kActiveSlot;
+    WriteOutcome &outcome = run->outcome;
+    QList<std::pair<std::size_t, bool>> wanted; // slot, and whether its write got no answer
+    if (outcome.activeSetAcknowledged)
+        wanted.append({kActiveSlot, false});
+    else if (outcome.activeSetUnanswered)
+        wanted.append({kActiveSlot, true});
     for (int set = 0; set < kParameterSets; ++set) {
-        if (run->outcome.acknowledgedMask & (1u << set))
-            wanted << std::size_t(set);
+        const auto bit = quint8(1u << set);
+        if (outcome.acknowledgedMask & bit)
+            wanted.append({std::size_t(set), false});
+        else if (outcome.unansweredMask & bit)
+            wanted.append({std::size_t(set), true});
     }
-    QList<std::pair<std::size_t, Telegram>> reads;
-    for (const std::size_t slot : std::as_const(wanted)) {
+    QList<std::pair<std::size_t, bool>> reads;
+    for (const auto &[slot, unanswered] : std::as_const(wanted)) {
         const EarlyRead &early = run->early.at(slot);
         const std::size_t set = slot == kActiveSlot ? 0 : slot;
-        if (early.counts()) {
-            run->outcome.readBack.at(set) = early.value;
-        } else if (early.sent && early.connectionFailed) {
+        if (!unanswered && early.counts()) {
+            outcome.readBack.at(set) = early.value;
+        } else if (!unanswered && early.sent && early.connectionFailed) {
             // Nothing more gets through: asking again would only say so less precisely.
-            if (run->outcome.readBackError.isEmpty())
-                run->outcome.readBackError = early.error;
-            run->outcome.connectionFailed = true;
+            if (outcome.readBackError.isEmpty())
+                outcome.readBackError = early.error;
+            outcome.connectionFailed = true;
         } else {
-            reads.append({set, readOf(run->protocol, address, slot)});
+            reads.append({slot, unanswered});
         }
     }
     // Counted before the first is sent: a request that cannot be sent answers at once.
     run->readsOnTheWay = int(reads.size()) + 1;
-    for (const auto &[set, request] : reads) {
-        sink.submit(request, [run, set = set](const Reply &reply) {
-            --run->readsOnTheWay;
-            if (const auto *value = reply.data<ParameterValue>())
-                run->outcome.readBack.at(set) = value->value;
-            else if (run->outcome.readBackError.isEmpty())
-                run->outcome.readBackError = reply.message();
-            if (reply.isConnectionFailure())
-                run->outcome.connectionFailed = true;
-            finishReadBack(run);
-        });
-    }
+    for (const auto &[slot, unanswered] : std::as_const(reads))
+        readSlot(sink, run, slot, unanswered, kReadBackAttempts);
     --run->readsOnTheWay;
     finishReadBack(run);
 }
@@ -210,10 +293,14 @@ void sendNextStep(RequestSink &sink, const ChangeRunPtr &run)
             outcome.refusedMask |= step.setMask;
             if (outcome.error.isEmpty())
                 outcome.error = reply.message();
-            if (reply.attempts == 0)
+            if (step.setMask == 0)
+                run->activeSetFailed = true;
+            if (reply.attempts == 0) {
                 outcome.notSentMask |= step.setMask;
-            else if (mayHaveTakenIt(reply))
+            } else if (mayHaveTakenIt(reply)) {
                 outcome.unansweredMask |= step.setMask;
+                outcome.activeSetUnanswered = outcome.activeSetUnanswered || step.setMask == 0;
+            }
             if (reply.isConnectionFailure()) {
                 // The steps after it would fail alike: they stay unsent, neither acknowledged
                 // nor refused, and what was acknowledged is still read back if it can be.

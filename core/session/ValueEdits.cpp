@@ -1,6 +1,7 @@
 #include "ValueEdits.h"
 
 #include "client/DriveClient.h"
+#include "client/ReplyCheck.h"
 #include "parameters/ParameterAccess.h"
 #include "parameters/SetList.h"
 
@@ -56,6 +57,14 @@ void ValueEdits::apply(const ParameterDescription &parameter, QList<WriteStep> s
     edit->change.setProgrammable = parameter.isSetProgrammable();
     edit->change.steps = steps;
     edit->judgeReadBack = !readBackMayDiffer(parameter);
+    edit->change.readBackShowsWrite = edit->judgeReadBack;
+    // A parameter known only by its address (DIN66019 has no metadata) has no limits to judge
+    // a value by.
+    if (!parameter.name.isEmpty()) {
+        edit->change.implausible = [parameter](qint32 value) {
+            return implausibleValue(parameter, value);
+        };
+    }
     edit->done = std::move(done);
     edit->outcome.address = parameter.address;
     edit->outcome.reset = reset;

@@ -124,7 +124,8 @@ private slots:
     }
 
     // No answer to the write: even a read behind it that shows the new value does not make it
-    // written (a later attempt, or none, may be what the drive took).
+    // written (a later attempt, or none, may be what the drive took). A read after the write's
+    // end settles it: no answer is not a refusal.
     void aReadBehindAWriteWithoutAnswerDoesNotCount()
     {
         ScriptedSink sink;
@@ -134,11 +135,105 @@ private slots:
         QCOMPARE(sink.sent.size(), 2);
         sink.answer(1, Reply::Status::Ok, 100);
         sink.answer(0, Reply::Status::Timeout);
+        QVERIFY(!outcome);
+        QCOMPARE(sink.sent.size(), 3);
+        QCOMPARE(sink.readOf(0), 0); // read again once the write has ended
+        sink.answer(0, Reply::Status::Ok, 100);
         QVERIFY(outcome);
-        QCOMPARE(sink.sent.size(), 2);
+        QCOMPARE(outcome->acknowledgedMask, quint8(0x01));
+        QCOMPARE(outcome->confirmedByReadingMask, quint8(0x01));
+        QCOMPARE(outcome->unansweredMask, quint8(0));
+        QCOMPARE(outcome->refusedMask, quint8(0));
+        QCOMPARE(outcome->readBack[0], std::optional<qint32>(100));
+        QVERIFY(outcome->ok());
+    }
+
+    void aWriteWithoutAnswerWhoseSetHoldsAnotherValueWasNotWritten()
+    {
+        ScriptedSink sink;
+        std::optional<WriteOutcome> outcome;
+        sendValueChange(sink, Protocol::Din66019II, change(0x04, 100),
+                        [&outcome](const WriteOutcome &o) { outcome = o; });
+        sink.answer(0, Reply::Status::Timeout);
+        QCOMPARE(sink.readOf(2), 0);
+        sink.answer(0, Reply::Status::Ok, 50);
+        QVERIFY(outcome);
         QCOMPARE(outcome->acknowledgedMask, quint8(0));
-        QCOMPARE(outcome->unansweredMask, quint8(0x01));
-        QVERIFY(!outcome->readBack[0]);
+        QCOMPARE(outcome->refusedMask, quint8(0x04));
+        QCOMPARE(outcome->unansweredMask, quint8(0)); // settled: the drive holds 50
+        QCOMPARE(outcome->readBack[2], std::optional<qint32>(50));
+        QVERIFY(!outcome->ok());
+    }
+
+    void aWriteWithoutAnswerWhoseSetCannotBeReadStaysUnknown()
+    {
+        ScriptedSink sink;
+        std::optional<WriteOutcome> outcome;
+        sendValueChange(sink, Protocol::Din66019II, change(0x04, 100),
+                        [&outcome](const WriteOutcome &o) { outcome = o; });
+        sink.answer(0, Reply::Status::Timeout);
+        sink.answer(0, Reply::Status::Timeout);
+        QVERIFY(outcome);
+        QCOMPARE(outcome->unansweredMask, quint8(0x04));
+        QVERIFY(outcome->anyUnknown());
+        QVERIFY(!outcome->readBack[2]);
+        QVERIFY(!outcome->readBackError.isEmpty());
+    }
+
+    // Service 1: the active set has no bit of its own in the masks.
+    void anActiveSetWriteWithoutAnswerIsSettledByReadingIt()
+    {
+        for (const qint32 held : {100, 50}) {
+            ScriptedSink sink;
+            std::optional<WriteOutcome> outcome;
+            sendValueChange(sink, Protocol::Din66019II, change(0x00, 100),
+                            [&outcome](const WriteOutcome &o) { outcome = o; });
+            sink.answer(0, Reply::Status::Timeout);
+            QCOMPARE(sink.waiting.size(), std::size_t(1));
+            QVERIFY(!sink.waiting.front().request.isWrite());
+            sink.answer(0, Reply::Status::Ok, held);
+            QVERIFY(outcome);
+            QVERIFY(!outcome->anyUnknown());
+            QCOMPARE(outcome->activeSetAcknowledged, held == 100);
+            QCOMPARE(outcome->activeSetConfirmedByReading, held == 100);
+            QCOMPARE(outcome->ok(), held == 100);
+            QCOMPARE(outcome->readBack[0], std::optional<qint32>(held));
+        }
+    }
+
+    // A garbled answer whose checksum passed: a value outside the parameter's limits cannot be
+    // what the drive holds. It is read again, and never shown as the drive's.
+    void anImpossibleReadBackIsReadAgainAndNeverBelieved()
+    {
+        for (const bool clearsUp : {true, false}) {
+            ScriptedSink sink;
+            std::optional<WriteOutcome> outcome;
+            ValueChange written = change(0x04, 4);
+            written.implausible = [](qint32 value) {
+                return value >= 0 && value <= 8 ? QString() : QStringLiteral("outside 0 .. 8");
+            };
+            sendValueChange(sink, Protocol::Din66019II, written,
+                            [&outcome](const WriteOutcome &o) { outcome = o; });
+            sink.answer(0, Reply::Status::Ok);
+            sink.answer(0, Reply::Status::Ok, 276);
+            QVERIFY(!outcome);
+            sink.answer(0, Reply::Status::Ok, clearsUp ? 4 : 276);
+            if (!clearsUp) {
+                QVERIFY(!outcome);
+                sink.answer(0, Reply::Status::Ok, 276);
+            }
+            QVERIFY(outcome);
+            QCOMPARE(sink.sent.size(), clearsUp ? 3 : 4);
+            QCOMPARE(outcome->acknowledgedMask, quint8(0x04));
+            if (clearsUp) {
+                QCOMPARE(outcome->readBack[2], std::optional<qint32>(4));
+                QVERIFY(outcome->readBackError.isEmpty());
+            } else {
+                QVERIFY(!outcome->readBack[2]);
+                QVERIFY2(outcome->readBackError.contains(QLatin1String("outside 0 .. 8")),
+                         qPrintable(outcome->readBackError));
+            }
+        }
     }
 
     // The link went after the drive acknowledged: not read back, and nothing more is asked.

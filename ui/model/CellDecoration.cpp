@@ -61,6 +61,8 @@ QColor CellDecoration::background(EditState state) const
         return blend(base, QColor(0, 170, 60), 0.30);
     case EditState::Failed:
         return blend(base, QColor(230, 0, 0), 0.35);
+    case EditState::Unknown:
+        return blend(base, QColor(130, 90, 200), 0.30);
     case EditState::None:
         break;
     }
@@ -80,6 +82,8 @@ QIcon CellDecoration::icon(EditState state) const
         return style->standardIcon(QStyle::SP_DialogApplyButton);
     case EditState::Failed:
         return style->standardIcon(QStyle::SP_MessageBoxCritical);
+    case EditState::Unknown:
+        return style->standardIcon(QStyle::SP_MessageBoxQuestion);
     case EditState::None:
         break;
     }

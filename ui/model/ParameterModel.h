@@ -96,6 +96,7 @@ public:
     // parameter will write and read these cells again) only stores the values read, so the
     // later one's cells never show a failure that is not theirs.
     void showOutcome(const WriteOutcome &outcome, bool superseded = false);
+    void markUnknown(quint16 address, quint8 setMask, const QString &reason);
     // Edit states of the cells of the sets in the mask, as the edit path reports them.
     void markPending(quint16 address, quint8 setMask, qint32 raw);
     void markWritten(quint16 address, quint8 setMask);

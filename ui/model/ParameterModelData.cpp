@@ -183,6 +183,9 @@ QVariant ParameterModel::toolTip(const ParameterRow &row, int column) const
         case EditState::Failed:
             return tr("Writing %1 failed: %2")
                 .arg(valueText(row, *row.requestedValue(set)), row.failure(set));
+        case EditState::Unknown:
+            return tr("Whether the drive took %1 is unknown: %2")
+                .arg(valueText(row, *row.requestedValue(set)), row.failure(set));
         case EditState::Changed:
             return tr("Changed in the file: %1; save to keep it").arg(shown);
         case EditState::None:

@@ -12,8 +12,19 @@ namespace DriveDesk {
 void ParameterModel::showOutcome(const WriteOutcome &outcome, bool superseded)
 {
     const quint16 address = outcome.address;
-    if (outcome.refusedMask && !superseded)
-        markFailed(address, outcome.refusedMask, outcome.error);
+    const quint8 unknown = outcome.unknownMask();
+    const quint8 refused = outcome.refusedMask & quint8(~unknown);
+    if (refused && !superseded)
+        markFailed(address, refused, outcome.error);
+    if (unknown && !superseded)
+        markUnknown(address, unknown, outcome.error);
+    // A write whose answer never came, settled by reading the set: it holds another value.
+    for (int set = 0; set < kParameterSets; ++set) {
+        const auto bit = quint8(1u << set);
+        const std::optional<qint32> held = outcome.readBack[std::size_t(set)];
+        if ((refused & bit) && held)
+            setValue(address, set, *held);
+    }
     for (int set = 0; set < kParameterSets; ++set) {
         if (!(outcome.acknowledgedMask & (1u << set)))
             continue;
@@ -67,6 +78,12 @@ void ParameterModel::markFailed(quint16 address, quint8 setMask, const QString &
 {
     changeCells(address, setMask,
                 [&reason](ParameterRow &row, int cell) { row.markFailed(cell, reason); });
+}
+
+void ParameterModel::markUnknown(quint16 address, quint8 setMask, const QString &reason)
+{
+    changeCells(address, setMask,
+                [&reason](ParameterRow &row, int cell) { row.markUnknown(cell, reason); });
 }
 
 void ParameterModel::markChanged(quint16 address, quint8 setMask)

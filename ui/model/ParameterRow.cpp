@@ -80,6 +80,13 @@ void ParameterRow::markFailed(int cell, const QString &reason)
     invalidate(cell);
 }
 
+void ParameterRow::markUnknown(int cell, const QString &reason)
+{
+    m_states[std::size_t(cell)] = EditState::Unknown;
+    m_failures[std::size_t(cell)] = reason;
+    invalidate(cell);
+}
+
 void ParameterRow::markChanged(int cell)
 {
     m_states[std::size_t(cell)] = EditState::Changed;

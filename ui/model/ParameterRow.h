@@ -18,6 +18,7 @@ enum class EditState : quint8 {
     Pending, // the write was sent; the cell shows the value asked for
     Written, // the drive holds what was written
     Failed, // the drive refused or holds something else; the reason is kept
+    Unknown, // no answer came, and reading the value could not settle whether the drive took it
     Changed, // an open parameter file's value, changed here and not saved (no drive involved)
 };
 
@@ -58,6 +59,7 @@ public:
     // Written, and the drive holds `held`: a parameter that changes what was written to it.
     void markWritten(int cell, qint32 held);
     void markFailed(int cell, const QString &reason);
+    void markUnknown(int cell, const QString &reason);
     void markChanged(int cell);
     bool clearEditState(int cell);
 
