@@ -3,8 +3,10 @@
 #include "parameters/ParameterFormat.h"
 #include "parameters/SetList.h"
 
+#include <algorithm>
 #include <bit>
 #include <map>
+#include <vector>
 
 namespace DriveDesk {
 
@@ -22,8 +24,15 @@ QString valuesText(const DownloadItem &item, quint8 mask,
         if ((mask & (1u << set)) && values[std::size_t(set)])
             sets[*values[std::size_t(set)]] |= quint8(1u << set);
     }
-    QStringList parts;
+    // In the order of the sets, as the table shows them: the lowest set of each value first.
+    std::vector<std::pair<quint8, qint32>> bySet;
     for (const auto &[value, setMask] : sets)
+        bySet.emplace_back(setMask, value);
+    std::sort(bySet.begin(), bySet.end(), [](const auto &a, const auto &b) {
+        return std::countr_zero(unsigned(a.first)) < std::countr_zero(unsigned(b.first));
+    });
+    QStringList parts;
+    for (const auto &[setMask, value] : bySet)
         parts << QStringLiteral("%1: %2").arg(SetList::text(setMask), format.text(value));
     return parts.join(QStringLiteral("; "));
 }

@@ -188,6 +188,33 @@ private slots:
         QVERIFY(plan.text(m_drive).contains(QStringLiteral("op.11  Maximum speed forward, set 6: 3000 1/min -> 2000 1/min")));
     }
 
+    // The report names each value's sets in the order of the sets, as the table and the last
+    // look do, whatever the values (set 3's lower value once came before set 0's).
+    void theReportListsTheSetsInTheirOrder()
+    {
+        DriveDescription file = m_file;
+        parameter(file, kMaxSpeedForward).values[0] = 2500;
+        parameter(file, kMaxSpeedForward).values[3] = 1000;
+        const DownloadPlan plan = planDownload(file, m_drive, {});
+        QList<std::optional<WriteOutcome>> outcomes;
+        for (const DownloadItem &item : plan.items) {
+            WriteOutcome taken; // as a drive that took every value
+            taken.address = item.change.address;
+            for (const WriteStep &step : item.change.steps)
+                taken.acknowledgedMask |= step.setMask;
+            for (int set = 0; set < kParameterSets; ++set)
+                taken.readBack[std::size_t(set)] = item.wanted[std::size_t(set)];
+            outcomes << taken;
+        }
+        const DownloadReport report = reportDownload(plan, outcomes, {}, m_drive);
+        QStringList details;
+        for (const DownloadReport::Line &line : report.written) {
+            if (line.id == QLatin1String("op.11"))
+                details << line.detail;
+        }
+        QCOMPARE(details, QStringList{QStringLiteral("set 0: 2500 1/min; set 3: 1000 1/min")});
+    }
+
     void setsChosenLimitTheDownload()
     {
         DriveDescription file = m_file;
