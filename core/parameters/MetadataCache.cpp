@@ -2,6 +2,7 @@
 
 #include "ParameterDocument.h"
 #include "SavedFile.h"
+#include "WholeFile.h"
 
 #include <QCryptographicHash>
 #include <QDir>
@@ -57,17 +58,12 @@ DriveDescription metadataOnly(const DriveDescription &drive)
 std::optional<QJsonObject> readCacheFile(const QString &path, const DriveKind &kind,
                                          QString *reason)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        *reason = file.errorString();
+    const std::optional<QByteArray> bytes
+        = WholeFile::read(path, ParameterDocument::kMaxFileSize, reason);
+    if (!bytes)
         return std::nullopt;
-    }
-    if (file.size() > ParameterDocument::kMaxFileSize) {
-        *reason = MetadataCache::tr("too large (%1 bytes)").arg(file.size());
-        return std::nullopt;
-    }
     QJsonParseError parseError;
-    const QJsonDocument document = QJsonDocument::fromJson(file.readAll(), &parseError);
+    const QJsonDocument document = QJsonDocument::fromJson(*bytes, &parseError);
     if (parseError.error != QJsonParseError::NoError) {
         *reason = MetadataCache::tr("not JSON (%1 at byte %2)")
                       .arg(parseError.errorString())

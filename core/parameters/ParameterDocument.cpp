@@ -4,6 +4,7 @@
 #include "ParameterId.h"
 #include "ParameterProperties.h"
 #include "SavedFile.h"
+#include "WholeFile.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -168,28 +169,11 @@ bool ParameterDocument::save(const QString &path, const DriveDescription &drive,
 
 std::optional<DriveDescription> ParameterDocument::load(const QString &path, QString *error)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        if (error)
-            *error = tr("cannot read '%1': %2").arg(path, file.errorString());
+    const std::optional<QByteArray> json = WholeFile::read(path, kMaxFileSize, error);
+    if (!json)
         return std::nullopt;
-    }
-    if (file.size() > kMaxFileSize) {
-        if (error)
-            *error = tr("'%1' is too large for a parameter file (%2 bytes, at most %3)")
-                         .arg(path)
-                         .arg(file.size())
-                         .arg(kMaxFileSize);
-        return std::nullopt;
-    }
-    const QByteArray json = file.readAll();
-    if (file.error() != QFileDevice::NoError) {
-        if (error)
-            *error = tr("cannot read '%1': %2").arg(path, file.errorString());
-        return std::nullopt;
-    }
     QString reason;
-    std::optional<DriveDescription> drive = fromJson(json, &reason);
+    std::optional<DriveDescription> drive = fromJson(*json, &reason);
     if (!drive && error)
         *error = QStringLiteral("%1: %2").arg(path, reason);
     return drive;

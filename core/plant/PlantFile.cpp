@@ -3,6 +3,7 @@
 #include "parameters/JsonObjectReader.h"
 #include "parameters/JsonTextPlaces.h"
 #include "parameters/SavedFile.h"
+#include "parameters/WholeFile.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -294,24 +295,11 @@ bool PlantFile::save(const QString &path, const Plant &plant, QString *error)
 
 std::optional<Plant> PlantFile::load(const QString &path, QString *error)
 {
-    QFile file(path);
-    const auto fail = [error](const QString &message) -> std::optional<Plant> {
-        if (error)
-            *error = message;
+    const std::optional<QByteArray> json = WholeFile::read(path, kMaxFileSize, error);
+    if (!json)
         return std::nullopt;
-    };
-    if (!file.open(QIODevice::ReadOnly))
-        return fail(tr("cannot read '%1': %2").arg(path, file.errorString()));
-    if (file.size() > kMaxFileSize)
-        return fail(tr("'%1' is too large for a plant file (%2 bytes, at most %3)")
-                        .arg(path)
-                        .arg(file.size())
-                        .arg(kMaxFileSize));
-    const QByteArray json = file.readAll();
-    if (file.error() != QFileDevice::NoError)
-        return fail(tr("cannot read '%1': %2").arg(path, file.errorString()));
     QString reason;
-    std::optional<Plant> plant = fromJson(json, &reason);
+    std::optional<Plant> plant = fromJson(*json, &reason);
     if (!plant && error)
         *error = QStringLiteral("%1: %2").arg(path, reason);
     return plant;

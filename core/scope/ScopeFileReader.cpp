@@ -2,6 +2,7 @@
 
 #include "ScopeFileFormat.h"
 #include "ScopeRecording.h"
+#include "parameters/WholeFile.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -133,6 +134,8 @@ bool readSamples(QFile &file, ScopeRecording &recording, qsizetype &incomplete, 
 
 bool readScopeFile(const QString &path, ScopeRecording &out, QString *error, QStringList *warnings)
 {
+    if (const QString refused = WholeFile::refusal(path); !refused.isEmpty())
+        return fail(error, refused);
     QFile file(path);
     // Unbuffered: the blocks are large, a second copy through QFile's buffer would only cost.
     if (!file.open(QIODevice::ReadOnly | QIODevice::Unbuffered))

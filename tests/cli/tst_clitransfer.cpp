@@ -7,6 +7,8 @@
 #include <QJsonObject>
 #include <QTemporaryDir>
 
+#include <sys/stat.h>
+
 using namespace DriveDesk::CliTest;
 
 namespace {
@@ -314,6 +316,46 @@ private slots:
             QVERIFY2(run.out.isEmpty(), qPrintable(run.out));
         }
         QVERIFY(readSet(QStringLiteral("op.11"), 6).contains(QStringLiteral("3000 1/min")));
+    }
+
+    // A device or a pipe given as a file would never end (/dev/zero grows the memory by the
+    // second, a FIFO without writer waits for ever): refused at once, nothing sent.
+    void aFileThatIsNoRegularFileIsRefusedAtOnce_data()
+    {
+        QTest::addColumn<QString>("path");
+        QTest::newRow("/dev/zero") << QStringLiteral("/dev/zero");
+        QTest::newRow("/dev/urandom") << QStringLiteral("/dev/urandom");
+        QTest::newRow("fifo") << QStringLiteral("fifo");
+        QTest::newRow("folder") << QStringLiteral("folder");
+    }
+
+    void aFileThatIsNoRegularFileIsRefusedAtOnce()
+    {
+        QFETCH(QString, path);
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        if (path == QLatin1String("fifo")) {
+            path = dir.filePath(QStringLiteral("values.json"));
+            QVERIFY(::mkfifo(QFile::encodeName(path).constData(), 0600) == 0);
+        } else if (path == QLatin1String("folder")) {
+            path = dir.path();
+        }
+        const QString plant = dir.filePath(QStringLiteral("plant.json"));
+        for (const QStringList &command :
+             { QStringList { QStringLiteral("download"), path, QStringLiteral("--dry-run") },
+               QStringList { QStringLiteral("diff"), path, QStringLiteral("drive") } }) {
+            const Run run = drive(command);
+            QCOMPARE(run.exitCode, 2);
+            QVERIFY2(run.err.contains(path), qPrintable(explain(run)));
+            QVERIFY2(run.out.isEmpty(), qPrintable(run.out));
+        }
+        const Run offline = cli({QStringLiteral("diff"), path, m_file});
+        QCOMPARE(offline.exitCode, 2);
+        QVERIFY2(offline.err.contains(path), qPrintable(explain(offline)));
+        const Run plantRun = cli({QStringLiteral("plant"), QStringLiteral("verify"), path,
+                                  dir.path()});
+        QCOMPARE(plantRun.exitCode, 2);
+        QVERIFY2(plantRun.err.contains(path), qPrintable(explain(plantRun)));
     }
 
     // A backup with holes is no backup: values the drive refuses (its lowest password level)
