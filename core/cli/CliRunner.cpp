@@ -59,6 +59,8 @@ void CliRunner::start()
     });
     connect(m_client.get(), &DriveClient::driveStoppedAnswering, this,
             [this](const QString &reason) { m_silence = reason; });
+    connect(m_client.get(), &DriveClient::linkLost, this,
+            [this](const QString &reason) { m_linkLost = reason; });
     connect(m_client.get(), &DriveClient::connectionFailed, this, [this](const QString &reason) {
         fail(3, tr("cannot connect to %1: %2")
                     .arg(m_request.connection.displayName(), reason));
@@ -346,6 +348,10 @@ void CliRunner::fail(int exitCode, const QString &message)
         const QString reason = m_silence.isEmpty() ? tr("no answer") : m_silence;
         if (!message.contains(QLatin1String("stopped answering")))
             text = tr("the drive stopped answering (%1): %2").arg(reason, message);
+    } else if (!m_linkLost.isEmpty() && exitCode == 1) {
+        // The work could not be finished because the line went: no connection (exit 3).
+        exitCode = 3;
+        text = tr("the connection to the drive was lost (%1): %2").arg(m_linkLost, message);
     }
     m_err << QStringLiteral("drivedesk-cli: ") << text << Qt::endl;
     emit finished(exitCode);

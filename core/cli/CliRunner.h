@@ -91,6 +91,7 @@ private:
     bool m_finished = false;
     bool m_cacheNoted = false;
     QString m_silence; // why the drive counts as stopped answering (DriveClient), else empty
+    QString m_linkLost; // why the link went on the way (DriveClient::linkLost), else empty
     QList<DriveDescription> m_files; // loadFiles(): the files of diff, upload, download
     DownloadRun *m_download = nullptr;
     CliPlant *m_plant = nullptr; // `plant`: every drive of a plant file

@@ -77,6 +77,33 @@ private slots:
         }
     }
 
+    // The device server goes away mid-scan (the gateway's power, a pulled cable): no
+    // connection is exit 3, as the README says, not 1.
+    void aLinkLostOnTheWayEndsWithExit3_data()
+    {
+        QTest::addColumn<QString>("protocol");
+        QTest::newRow("hsp5") << QStringLiteral("hsp5");
+        QTest::newRow("din66019ii") << QStringLiteral("din66019ii");
+    }
+
+    void aLinkLostOnTheWayEndsWithExit3()
+    {
+        QFETCH(QString, protocol);
+        SimulatorProcess server(
+            { QStringLiteral("--protocol"), protocol, QStringLiteral("--pace") });
+        QVERIFY2(server.started(), qPrintable(server.error()));
+        QProcess cliProcess;
+        start(cliProcess, server, protocol,
+              { QStringLiteral("--no-cache"), QStringLiteral("scan"), QStringLiteral("--values") });
+        QTest::qWait(1500);
+        QCOMPARE(cliProcess.state(), QProcess::Running);
+        QCOMPARE(::kill(pid_t(server.processId()), SIGKILL), 0);
+        QVERIFY2(cliProcess.waitForFinished(120000), "drivedesk-cli did not finish");
+        const QString err = QString::fromUtf8(cliProcess.readAllStandardError());
+        QCOMPARE(cliProcess.exitCode(), 3);
+        QVERIFY2(err.contains(QStringLiteral("connection")), qPrintable(err));
+    }
+
     void aFrozenDriveEndsEveryCommand_data()
     {
         QTest::addColumn<QString>("protocol");
