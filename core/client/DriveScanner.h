@@ -64,6 +64,8 @@ private:
         bool secondRound = false;
         // Given up because its plausible answers never agreed (not for want of an answer).
         bool disagreed = false;
+        // A read of this parameter's value (page, number): one the drive may change by itself.
+        std::optional<std::pair<quint8, quint8>> valueOf;
     };
     using Queued = std::shared_ptr<QueuedRequest>;
     // A request left unsettled in the first round, with the failure it would be reported with.
@@ -77,6 +79,7 @@ private:
         Telegram telegram;
         QString what;
         Reply reply;
+        std::optional<std::pair<quint8, quint8>> valueOf; // as QueuedRequest::valueOf
     };
 
     // The kind parameters of one cached kind, as the drive answers them.
@@ -104,6 +107,9 @@ private:
     void readAgain(const Queued &request);
     // Once the line shows errors, what was kept before is read once more to confirm it.
     void checkLine();
+    // A value kept from `first` that the drive changes by itself: its sets read by `first`
+    // lose the value and say why. False for any other parameter.
+    bool leaveLiveValueUnconfirmed(quint8 page, quint8 number, const Reply &first);
     void finish(const QString &reason);
     DriveDescription result(const QString &reason);
     int total() const;

@@ -7,6 +7,7 @@
 #include "DriveScanner.h"
 
 #include "ReplyCheck.h"
+#include "parameters/ParameterProperties.h"
 
 namespace DriveDesk {
 
@@ -38,16 +39,42 @@ void DriveScanner::checkLine()
         request->answers.push_back(kept.reply);
         request->reads = 1;
         request->recheck = true;
-        request->handle = [this, what = kept.what, first = kept.reply](const Reply &settled) {
-            if (!sameAnswer(settled, first)) {
-                m_state.problems.append(
-                    tr("%1: not confirmed when read again on a line with errors").arg(what));
-            }
+        request->handle = [this, what = kept.what, first = kept.reply,
+                           valueOf = kept.valueOf](const Reply &settled) {
+            if (sameAnswer(settled, first))
+                return;
+            // A live value (the drive changes it by itself) read again shows another value:
+            // that says nothing against the line. It is left unconfirmed, as one that never
+            // agreed (failValue()), and holds up no backup or verify: it is no setting.
+            if (valueOf && leaveLiveValueUnconfirmed(valueOf->first, valueOf->second, first))
+                return;
+            m_state.problems.append(
+                tr("%1: not confirmed when read again on a line with errors").arg(what));
         };
         m_queue.push_back(std::move(request));
         ++m_enqueued;
     }
     m_kept.clear();
+}
+
+bool DriveScanner::leaveLiveValueUnconfirmed(quint8 page, quint8 number, const Reply &first)
+{
+    ScanParameter &parameter = m_state.parameter(page, number);
+    const ParameterProperties properties(parameter.description.properties1,
+                                         parameter.description.properties2);
+    if (!properties.isChangedByInverter())
+        return false;
+    const auto *read = first.request.as<ParameterValue>();
+    const quint8 sets = read && first.request.service == Service::ParameterValue
+        ? read->set
+        : quint8(0x01);
+    for (int set = 0; set < kParameterSets; ++set) {
+        if (sets & (1u << set))
+            parameter.description.values[std::size_t(set)].reset();
+    }
+    parameter.errors.append(tr("value: not confirmed: the drive changes it by itself, and on a "
+                               "line with errors no two reads agreed"));
+    return true;
 }
 
 void DriveScanner::settle(const Queued &request, const Reply &reply)
@@ -68,7 +95,7 @@ void DriveScanner::settle(const Queued &request, const Reply &reply)
         if (!why.isEmpty()) {
             request->implausible.append(why);
         } else if (!m_lineShowedErrors) {
-            m_kept.push_back({ request->telegram, request->what, reply });
+            m_kept.push_back({ request->telegram, request->what, reply, request->valueOf });
             return deliver(*request, reply);
         } else {
             for (const Reply &earlier : request->answers) {

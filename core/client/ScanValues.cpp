@@ -68,6 +68,7 @@ void DriveScanner::readValues(quint8 page, quint8 number, bool setProgrammable)
                                       [](ScanParameter &p, const ParameterValue &d) {
                                           p.description.values[0] = d.value;
                                       });
+        m_queue.back()->valueOf = std::pair{page, number};
         return;
     }
     readSetValues(page, number, kAllSets);
@@ -104,6 +105,7 @@ void DriveScanner::readSetValues(quint8 page, quint8 number, quint8 setMask)
             [this, page, number](const Reply &reply) {
                 return implausibleRead(page, number, reply);
             });
+    m_queue.back()->valueOf = std::pair{page, number};
 }
 
 void DriveScanner::failValue(ScanParameter &parameter, const QString &label,

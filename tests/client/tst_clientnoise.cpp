@@ -10,6 +10,7 @@
 #include <QElapsedTimer>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QThread>
 
 #include <algorithm>
 #include <bit>
@@ -115,10 +116,15 @@ QStringList silentlyWrong(const DriveDescription &clean, const DriveDescription 
             // A scan that calls itself complete holds only what the drive itself said: an error
             // the clean line does not give (its refusals do) is a parameter left unread.
             // A live value may come out unconfirmed (no two reads agree while it moves), then
-            // without a value: no setting, so no reason to call the scan incomplete.
-            const bool unconfirmedLive = live.count(parameter.address)
-                && std::all_of(parameter.values.begin(), parameter.values.end(),
-                               [](const std::optional<qint32> &v) { return !v; });
+            // without a value: no setting, so no reason to call the scan incomplete. The clean
+            // scan is no exception: a client thread held up past a timeout makes a clean line
+            // show errors too, and its live values are then no measure of the other's.
+            const auto unread = [](const ParameterDescription &p) {
+                return std::all_of(p.values.begin(), p.values.end(),
+                                   [](const std::optional<qint32> &v) { return !v; });
+            };
+            const bool unconfirmedLive
+                = live.count(parameter.address) && (unread(parameter) || unread(*expected));
             if (!incomplete && parameter.error != expected->error && !unconfirmedLive)
                 wrong << QStringLiteral("%1 not read (%2) in a scan called complete")
                              .arg(id, parameter.error);
@@ -143,6 +149,45 @@ QStringList silentlyWrong(const DriveDescription &clean, const DriveDescription 
     }
     return wrong;
 }
+
+// The simulated line behind a client whose thread is held up at every `every`-th telegram, from
+// the first on, between the moment the request's timeout starts and the moment its bytes go out,
+// as a loaded machine holds a thread up: the answer comes after its timeout although no byte on
+// the line was touched.
+class StallingLink : public Link
+{
+public:
+    StallingLink(const ConnectionSettings &settings, int every, int stallMs)
+        : m_line(makeLink(settings))
+        , m_every(every)
+        , m_stallMs(stallMs)
+    {
+        connect(m_line.get(), &Link::opened, this, [this] { reportOpened(); });
+        connect(m_line.get(), &Link::received, this,
+                [this](const QByteArray &bytes) { handOn(bytes); });
+        connect(m_line.get(), &Link::lineError, this,
+                [this](const QString &reason) { handOnLineError(reason); });
+        connect(m_line.get(), &Link::failed, this, [this](const QString &reason) { fail(reason); });
+    }
+
+    QString description() const override { return m_line->description(); }
+
+protected:
+    void openTransport() override { m_line->open(); }
+    void closeTransport() override { m_line->close(); }
+    void transmit(const QByteArray &bytes) override
+    {
+        if (m_sent++ % m_every == 0)
+            QThread::msleep(m_stallMs); // the client's thread, not the line
+        m_line->send(bytes);
+    }
+
+private:
+    std::unique_ptr<Link> m_line;
+    const int m_every;
+    const int m_stallMs;
+    int m_sent = 0;
+};
 
 // The simulated drive's live signals: their values change on their own.
 std::set<quint16> liveParameters()
@@ -241,6 +286,76 @@ private slots:
         }
         qInfo("%d of %d scans complete and right, %d say what they could not settle; %lld ms",
               equal, seeds, incomplete, timer.elapsed());
+    }
+
+    void aCleanScanOnASlowThreadStaysTheReference_data()
+    {
+        QTest::addColumn<Protocol>("protocol");
+        QTest::newRow("hsp5") << Protocol::Hsp5;
+        QTest::newRow("din66019ii") << Protocol::Din66019II;
+    }
+    void aCleanScanOnASlowThreadStaysTheReference()
+    {
+        // A clean line, but a client thread held up for longer than a timeout: the line shows
+        // errors, and from then on the scan confirms every answer. A live value then comes out
+        // unconfirmed (without a value, its error says why) in the very scan the others are
+        // compared with, while a scan on a quiet thread reads it at once. Neither is wrong.
+        QFETCH(Protocol, protocol);
+        QTemporaryDir cache;
+        QVERIFY(cache.isValid());
+        ScanOptions refresh;
+        refresh.metadata = MetadataSource::RefreshCache;
+        refresh.cacheDirectory = cache.path();
+        scanned(protocol, fast(), refresh);
+        QVERIFY(!QDir(cache.path()).entryList(QDir::Files).isEmpty());
+
+        // Sy holds the scope timer (a live value that moves every millisecond), Ec the encoder
+        // position (the live value of the failure on a loaded machine that led to this test).
+        ScanOptions groups;
+        groups.groupPages = { 0x00, 0x10 };
+        ScanOptions cached = groups;
+        cached.metadata = MetadataSource::Cache;
+        cached.cacheDirectory = cache.path();
+        const DriveDescription warm = scanned(protocol, fast(), cached);
+        QVERIFY2(warm.incompleteReason.isEmpty(), qPrintable(warm.incompleteReason));
+        QVERIFY(warm.metadataFromCache);
+
+        // The answer takes a moment, as every drive's does: with none, the simulated drive's
+        // answer, due on this same thread the moment the bytes go out, would still be taken
+        // before the timeout, however long the thread was held up.
+        SimulationOptions simulation = fast();
+        simulation.replyLatencyUs = 1000;
+        const LinkMaker stalling = [](const ConnectionSettings &settings) -> std::unique_ptr<Link> {
+            return std::make_unique<StallingLink>(settings, 40, 25);
+        };
+        DriveClient client(simulated(protocol, simulation), stalling, quickTimeouts());
+        QSignalSpy traffic(&client, &DriveClient::traffic);
+        client.connectToDrive();
+        QVERIFY(QTest::qWaitFor(
+            [&client] { return client.state() == DriveClient::State::Connected; }, kWaitMs));
+        QFuture<DriveDescription> scan = client.scan(groups);
+        QVERIFY(waitFinished(scan, 120000));
+        QCOMPARE(scan.resultCount(), 1);
+        const DriveDescription reference = scan.result();
+        QVERIFY(std::any_of(traffic.cbegin(), traffic.cend(), [](const QList<QVariant> &record) {
+            return record.at(0).value<TrafficRecord>().kind == TrafficRecord::Kind::Error;
+        }));
+        const std::set<quint16> live = liveParameters();
+        QStringList unconfirmed;
+        for (const GroupDescription &group : reference.groups) {
+            for (const ParameterDescription &parameter : group.parameters) {
+                if (live.count(parameter.address) && !parameter.values[0])
+                    unconfirmed << hex(parameter.address);
+            }
+        }
+        QVERIFY2(!unconfirmed.isEmpty(), "no live value came out unconfirmed: nothing was tried");
+
+        const QStringList wrong = silentlyWrong(reference, warm, live);
+        QVERIFY2(wrong.isEmpty(),
+                 qPrintable(QStringLiteral("%1 (unconfirmed in the reference: %2)")
+                                .arg(wrong.join(QStringLiteral("; ")),
+                                     unconfirmed.join(QStringLiteral(", ")))));
+        QCOMPARE(warm.parameterCount(), reference.parameterCount());
     }
 
     void theCacheAfterNoisyScansHoldsWhatACleanScanReads_data()
