@@ -17,6 +17,7 @@
 #include <QFile>
 #include <QFileDialog>
 #include <QLabel>
+#include <QStatusBar>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
@@ -200,7 +201,19 @@ private slots:
         QAbstractItemModelTester tester(model());
         QCOMPARE(model()->index(0, PlantModel::StateColumn).data().toString(),
                  QStringLiteral("not searched"));
+        // While the search goes on, each drive found fits its name ("cabinet-5", not "cab...").
+        QTreeView *view = m_dock->view();
+        QStringList cut;
+        const QMetaObject::Connection watching = connect(
+            model(), &QAbstractItemModel::rowsInserted, this, [&](const QModelIndex &parent) {
+                const int needed = static_cast<QAbstractItemView *>(view)->sizeHintForColumn(
+                    PlantModel::NameColumn);
+                if (view->columnWidth(PlantModel::NameColumn) < needed)
+                    cut << parent.data().toString();
+            });
         QVERIFY(runJob(m_dock->findAction()));
+        disconnect(watching);
+        QVERIFY2(cut.isEmpty(), qPrintable(cut.join(QLatin1Char(','))));
         for (const auto &[link, address] : { std::pair { QStringLiteral("cabinet"), 2 },
                                              std::pair { QStringLiteral("cabinet"), 5 },
                                              std::pair { QStringLiteral("hoist"), -1 } }) {
@@ -210,9 +223,16 @@ private slots:
                      qPrintable(shown(link, address, PlantModel::IdentificationColumn)));
         }
         QCOMPARE(model()->rowCount(model()->index(0, 0)), 2);
-        // The addresses found are in the plant file now.
+        // The addresses found are in the plant file now, and the dock says so in sentences,
+        // once: not again in the window's status bar.
         QVERIFY2(readText(m_plantPath).contains(QStringLiteral("\"addresses\": [2, 5]")),
                  qPrintable(readText(m_plantPath)));
+        const QString said = m_dock->findChild<QLabel *>(QStringLiteral("plantStatus"))->text();
+        QVERIFY2(said.startsWith(QStringLiteral("3 of 3 drive"))
+                     && said.contains(QStringLiteral(" found. The addresses found were written to ")),
+                 qPrintable(said));
+        QVERIFY2(!m_window->statusBar()->currentMessage().contains(QStringLiteral("found")),
+                 qPrintable(m_window->statusBar()->currentMessage()));
     }
 
     void backUpAllSavesEveryDrive()
@@ -345,6 +365,16 @@ private slots:
         QCOMPARE(changed->state, ComparisonRow::State::Different);
         QVERIFY2(compare->message().contains(QStringLiteral("value")),
                  qPrintable(compare->message()));
+        // Each side is a reading of its drive in a file of its own: writing into it would
+        // change neither the drive nor its backup, so no write is offered.
+        for (const char *name : {"writeToAButton", "writeToBButton"}) {
+            auto *write = compare->findChild<QPushButton *>(QString::fromLatin1(name));
+            QVERIFY(write);
+            QVERIFY2(!write->isVisibleTo(compare), name);
+        }
+        QVERIFY2(compare->message().contains(QStringLiteral("cabinet-2 as read at"))
+                     && compare->message().contains(QStringLiteral("open the drive in the editor")),
+                 qPrintable(compare->message()));
         compare->close();
     }
 
@@ -433,6 +463,55 @@ private slots:
         QCOMPARE(PlantFeature::recentPlants().value(0), path);
         QCOMPARE(shown(QStringLiteral("press"), -1, PlantModel::StateColumn),
                  QStringLiteral("not searched"));
+    }
+
+    // A link whose drives all stopped answering is no longer shown answering.
+    void aLinkWhoseDrivesAllFailIsUnreachable()
+    {
+        QString error;
+        QVERIFY2(m_dock->openPlant(m_plantPath, &error), qPrintable(error));
+        QVERIFY(runJob(m_dock->findAction()));
+        const QModelIndex cabinet = model()->index(0, PlantModel::StateColumn);
+        QCOMPARE(cabinet.siblingAtColumn(PlantModel::NameColumn).data().toString(),
+                 QStringLiteral("cabinet"));
+        QCOMPARE(cabinet.data().toString(), QStringLiteral("answering"));
+        // The device server gone: the link cannot be opened, none of its drives reached.
+        const quint16 port = m_cabinet->port();
+        m_cabinet->close();
+        QVERIFY(runJob(m_dock->verifyAction()));
+        QVERIFY2(m_cabinet->listen(port, &error), qPrintable(error));
+        for (const int address : {2, 5}) {
+            QCOMPARE(shown(QStringLiteral("cabinet"), address, PlantModel::StateColumn),
+                     QStringLiteral("unreachable"));
+        }
+        QCOMPARE(model()->index(0, PlantModel::StateColumn).data().toString(),
+                 QStringLiteral("unreachable"));
+        QCOMPARE(shown(QStringLiteral("hoist"), -1, PlantModel::StateColumn),
+                 QStringLiteral("answering"));
+    }
+
+    // Another plant whose links carry the same names (every machine has its "cabinet") shows
+    // none of what the jobs on the plant before found: its drives were never contacted.
+    void anotherPlantWithTheSameLinkNamesStartsClean()
+    {
+        QString error;
+        QVERIFY2(m_dock->openPlant(m_plantPath, &error), qPrintable(error));
+        QVERIFY(runJob(m_dock->findAction()));
+        QCOMPARE(shown(QStringLiteral("hoist"), -1, PlantModel::StateColumn),
+                 QStringLiteral("answering"));
+        const QString other = m_dir.filePath(QStringLiteral("line4.json"));
+        QFile file(other);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(readText(m_plantPath).toUtf8());
+        file.close();
+        QVERIFY2(m_dock->openPlant(other, &error), qPrintable(error));
+        for (const auto &[link, address] : {std::pair{QStringLiteral("cabinet"), 2},
+                                            std::pair{QStringLiteral("cabinet"), 5},
+                                            std::pair{QStringLiteral("hoist"), -1}}) {
+            QCOMPARE(shown(link, address, PlantModel::StateColumn), QStringLiteral("not searched"));
+            QCOMPARE(shown(link, address, PlantModel::IdentificationColumn), QString());
+            QCOMPARE(shown(link, address, PlantModel::ResultColumn), QString());
+        }
     }
 };
 

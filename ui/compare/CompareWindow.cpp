@@ -263,6 +263,14 @@ void CompareWindow::setSide(bool a, Source source, const QString &path)
     updateSideWidgets();
 }
 
+void CompareWindow::setReading(bool a, const QString &path, const QString &name)
+{
+    setSide(a, Source::File, path);
+    SideWidgets &side = a ? m_sideA : m_sideB;
+    side.readingPath = path;
+    side.readingName = name;
+}
+
 void CompareWindow::setSets(int setA, int setB)
 {
     m_setAgainstSet->setChecked(setA >= 0 && setB >= 0);

@@ -36,6 +36,10 @@ public:
 
     // Chooses a side without comparing; `path` for Source::File.
     void setSide(bool a, Source source, const QString &path = {});
+    // A side that is a drive read into a file of its own for this comparison (the plant's
+    // Compare): named `name`, and never written, since writing into that file would change
+    // neither the drive nor its backup. Choosing another file for the side ends it.
+    void setReading(bool a, const QString &path, const QString &name);
     // One set of A against one set of B; -1 for set by set.
     void setSets(int setA, int setB);
     // Reads both sides again and shows their comparison; false with the reason shown when a
@@ -64,6 +68,8 @@ private:
         QLineEdit *path = nullptr;
         QPushButton *browse = nullptr;
         QSpinBox *set = nullptr;
+        QString readingPath; // setReading(): the file that holds the drive read, and its name
+        QString readingName;
     };
     // A side as read for a comparison.
     struct Side
@@ -73,7 +79,8 @@ private:
         QString name; // "b.json", "the drive", "defaults of a.json"
         DriveDescription description; // what is compared
         DriveDescription origin; // the whole description it comes from, for a selection
-        bool writable = true; // defaults are not
+        bool writable = true; // defaults are not, nor a reading of a drive
+        bool reading = false; // setReading()
     };
 
     QWidget *makeSideRow(bool a);

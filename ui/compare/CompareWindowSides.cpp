@@ -58,6 +58,11 @@ std::optional<CompareWindow::Side> CompareWindow::readSide(bool a, const Side *s
         }
         side.description = *drive;
         side.name = QFileInfo(side.path).fileName();
+        if (!widgets.readingName.isEmpty() && side.path == widgets.readingPath) {
+            side.name = widgets.readingName;
+            side.writable = false;
+            side.reading = true;
+        }
         // The window's own file is compared as the window holds it, unsaved changes and all.
         if (m_host && samePath(side.path, m_host->shownFilePath())) {
             side.source = Source::ShownFile;
@@ -123,9 +128,15 @@ bool CompareWindow::compare()
 
     expandGroups();
     updateWriteButtons();
-    showMessage(tr("Compared %1 with %2: %n value(s) differ.", nullptr,
-                   table.count(ComparisonRow::State::Different))
-                    .arg(nameA, nameB));
+    QString said = tr("Compared %1 with %2: %n value(s) differ.", nullptr,
+                      table.count(ComparisonRow::State::Different))
+                       .arg(nameA, nameB);
+    if (a->reading || b->reading) {
+        said += QLatin1Char(' ')
+            + tr("A drive read for this comparison is not written to here: open the drive in "
+                 "the editor to change it.");
+    }
+    showMessage(said);
     return true;
 }
 

@@ -48,10 +48,11 @@ QList<WindowFeature *> makeWindowFeatures(WindowFrame &frame)
     auto *plant = new PlantFeature(frame);
     // Two drives of the plant, each read into a file, side by side in the compare window.
     QObject::connect(plant, &PlantFeature::compareRequested, compare,
-                     [compare](const QString &fileA, const QString &fileB) {
+                     [compare](const QString &fileA, const QString &nameA,
+                               const QString &fileB, const QString &nameB) {
                          CompareWindow *window = compare->showCompareWindow();
-                         window->setSide(true, CompareWindow::Source::File, fileA);
-                         window->setSide(false, CompareWindow::Source::File, fileB);
+                         window->setReading(true, fileA, nameA);
+                         window->setReading(false, fileB, nameB);
                          window->compare();
                      });
     features << plant;

@@ -21,6 +21,8 @@
 #include <QTreeView>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace DriveDesk {
 
 namespace {
@@ -100,8 +102,11 @@ PlantDock::PlantDock(WindowFrame &frame, QWidget *parent)
     connect(m_view, &QTreeView::doubleClicked, this, &PlantDock::openDrive);
     connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this,
             &PlantDock::updateActions);
-    connect(m_model, &QAbstractItemModel::rowsInserted, this,
-            [this](const QModelIndex &parent) { m_view->expand(parent); });
+    // A drive found by a search appears under its link: its longer name must fit at once.
+    connect(m_model, &QAbstractItemModel::rowsInserted, this, [this](const QModelIndex &parent) {
+        m_view->expand(parent);
+        m_view->resizeColumnToContents(PlantModel::NameColumn);
+    });
     connect(m_model, &QAbstractItemModel::modelReset, this, [this] {
         m_view->expandAll();
         fitColumns();
@@ -193,8 +198,7 @@ bool PlantDock::openPlant(const QString &path, QString *error)
     if (!plant)
         return false;
     m_path = QFileInfo(path).absoluteFilePath();
-    m_model->setBackupFolder(backupFolder());
-    m_model->setPlant(*plant);
+    m_model->openPlant(*plant, backupFolder());
     showPlantTitle();
     m_status->clear();
     updateActions();
@@ -324,12 +328,18 @@ void PlantDock::fitColumns()
 {
     for (int column = 0; column < PlantModel::ProgressColumn; ++column)
         m_view->resizeColumnToContents(column);
+    // A long result (a refusal in words) is shown elided, whole in its tooltip: at its full
+    // width it would push the progress column out of sight.
+    const int most = std::max(m_view->viewport()->width() / 3, 200);
+    if (m_view->columnWidth(PlantModel::ResultColumn) > most)
+        m_view->setColumnWidth(PlantModel::ResultColumn, most);
 }
 
+// Said once, below the plant's drives where the job was started: the window's status bar
+// would repeat it beside.
 void PlantDock::showMessage(const QString &text)
 {
     m_status->setText(text);
-    m_frame.showMessage(text);
 }
 
 } // namespace DriveDesk

@@ -65,8 +65,10 @@ public:
     void updateActions();
 
 signals:
-    // Two drives read whole, each into a parameter file: A and B of the compare window.
-    void compareRequested(const QString &fileA, const QString &fileB);
+    // Two drives read whole, each into a parameter file: A and B of the compare window, named
+    // as readings of the drives (not to be written into).
+    void compareRequested(const QString &fileA, const QString &nameA, const QString &fileB,
+                          const QString &nameB);
     // A plant file was shown (to be remembered among the recent ones).
     void plantOpened(const QString &path);
 

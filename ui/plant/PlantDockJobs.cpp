@@ -11,6 +11,8 @@
 #include <QAction>
 #include <QDir>
 #include <QLabel>
+#include <QLocale>
+#include <QTime>
 #include <QTreeView>
 
 #include <algorithm>
@@ -128,12 +130,12 @@ void PlantDock::findFinished(const PlantRun &run)
     // the plant file, and nothing else in it changes.
     if (!noneAnswered && run.plant() != m_jobPlant) {
         QString error;
+        // The summary is a sentence of its own, without its full stop on the command line.
         if (PlantFile::save(m_path, run.plant(), &error))
-            text += QLatin1Char(' ')
-                + tr("The addresses found were written to %1.")
-                      .arg(QDir::toNativeSeparators(m_path));
+            text = tr("%1. The addresses found were written to %2.")
+                       .arg(text, QDir::toNativeSeparators(m_path));
         else
-            text += QLatin1Char(' ') + error;
+            text = tr("%1. The plant file was not changed: %2").arg(text, error);
     }
     m_model->setPlant(run.plant());
     showMessage(text);
@@ -163,21 +165,25 @@ void PlantDock::downloadPlanned(const QList<PlantDrive> &drives)
 void PlantDock::compareRead(const QList<PlantDrive> &drives)
 {
     QStringList files;
+    QStringList names;
     QStringList problems;
+    const QString time = QLocale().toString(QTime::currentTime(), QLocale::ShortFormat);
     for (const PlantDrive &drive : drives) {
-        if (drive.outcome == PlantDrive::Outcome::Saved)
+        if (drive.outcome == PlantDrive::Outcome::Saved) {
             files << drive.file;
-        else
+            names << tr("%1 as read at %2").arg(drive.name(), time);
+        } else {
             problems << tr("%1: %2").arg(
                 drive.name(),
                 drive.reason.isEmpty() ? PlantDrive::outcomeText(drive.outcome) : drive.reason);
+        }
     }
     if (files.size() != 2)
         return showMessage(
             tr("The drives could not be compared: %1").arg(problems.join(QStringLiteral("; "))));
     showMessage(tr("%1 and %2 read; the compare window shows them side by side.")
                     .arg(drives.at(0).name(), drives.at(1).name()));
-    emit compareRequested(files.at(0), files.at(1));
+    emit compareRequested(files.at(0), names.at(0), files.at(1), names.at(1));
 }
 
 } // namespace DriveDesk

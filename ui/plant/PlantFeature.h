@@ -33,7 +33,8 @@ public:
 
 signals:
     // Two drives of the plant, each read into a parameter file, to be compared side by side.
-    void compareRequested(const QString &fileA, const QString &fileB);
+    void compareRequested(const QString &fileA, const QString &nameA, const QString &fileB,
+                          const QString &nameB);
 
 private:
     void remember(const QString &path);

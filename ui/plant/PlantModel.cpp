@@ -42,6 +42,17 @@ void PlantModel::setPlant(const Plant &plant)
     endResetModel();
 }
 
+void PlantModel::openPlant(const Plant &plant, const QString &backupFolder)
+{
+    beginResetModel();
+    m_plant = plant;
+    m_known.clear();
+    m_links.clear();
+    m_directory = backupFolder;
+    readBackupTimes();
+    endResetModel();
+}
+
 void PlantModel::setBackupFolder(const QString &directory)
 {
     m_directory = directory;
@@ -149,10 +160,26 @@ void PlantModel::setDriveDone(const PlantDrive &drive)
         known.state = DriveState::Answering;
     if (drive.outcome == PlantDrive::Outcome::Found)
         known.identification = drive.identification;
-    if (answered(drive.outcome))
-        m_links[drive.link].state = DriveState::Answering;
+    updateLinkState(*link);
     rowChanged(driveIndex(drive.link, drive.address));
     rowChanged(index(linkRow, 0));
+}
+
+void PlantModel::updateLinkState(const PlantLink &link)
+{
+    const QList<int> rows = rowsOf(link);
+    bool anyAnswering = false;
+    bool allUnreachable = !rows.isEmpty();
+    for (int address : rows) {
+        const DriveState state = m_known.value(key(link.name, address)).state;
+        anyAnswering = anyAnswering || state == DriveState::Answering;
+        allUnreachable = allUnreachable && state == DriveState::Unreachable;
+    }
+    Known &known = m_links[link.name];
+    if (anyAnswering)
+        known.state = DriveState::Answering;
+    else if (allUnreachable)
+        known.state = DriveState::Unreachable;
 }
 
 void PlantModel::endJob()

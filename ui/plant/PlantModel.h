@@ -40,6 +40,8 @@ public:
 
     // Shows `plant`; what is known of drives of the same name stays.
     void setPlant(const Plant &plant);
+    // Another plant: nothing known of the one before stays, even where a link has its name.
+    void openPlant(const Plant &plant, const QString &backupFolder);
     const Plant &plant() const { return m_plant; }
     // Where the backups are: the "last backup" column looks there.
     void setBackupFolder(const QString &directory);
@@ -89,6 +91,8 @@ private:
     QString resultText(const PlantDrive &drive) const;
     QString resultToolTip(const PlantDrive &drive) const;
     void readBackupTimes();
+    // A link answers while one of its drives does; it is unreachable once all of them are.
+    void updateLinkState(const PlantLink &link);
     void rowChanged(const QModelIndex &index);
     void allChanged();
 
