@@ -416,6 +416,10 @@ private slots:
         QVERIFY(live.data(ParameterModel::LastReadRole).toDateTime().isValid());
         QVERIFY(live.data(Qt::ToolTipRole).toString().contains(QStringLiteral("not answering")));
         QVERIFY(polling->isChecked());
+        const auto pollingSays = [this] {
+            return m_window->statusBar()->currentMessage().startsWith(QStringLiteral("Polling:"));
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(pollingSays(), kWaitMs);
 
         // It answers again: everything clears by itself.
         server.setSilent(false);
@@ -424,6 +428,15 @@ private slots:
         QVERIFY(!statusLabel("connectionState").contains(QStringLiteral("not answering")));
         QVERIFY(statusLabel("connectionState").startsWith(QStringLiteral("Connected")));
         QVERIFY(m_window->isReady());
+        // What polling said of the frozen drive is no longer so once it reads again.
+        QTRY_VERIFY_WITH_TIMEOUT(!pollingSays(), kWaitMs);
+
+        // Nor once polling is switched off while the drive is frozen.
+        server.setSilent(true);
+        QTRY_VERIFY_WITH_TIMEOUT(pollingSays(), kWaitMs);
+        polling->setChecked(false);
+        QVERIFY2(!pollingSays(), qPrintable(m_window->statusBar()->currentMessage()));
+        server.setSilent(false);
     }
 
     // Polling off, nobody asking the drive anything: a frozen drive does not go on reading

@@ -2,6 +2,8 @@
 
 #include "model/ParameterModel.h"
 
+#include <utility>
+
 namespace DriveDesk {
 
 PollingController::PollingController(DriveClient *client, ParameterModel *model, QObject *parent)
@@ -39,7 +41,7 @@ void PollingController::setGroup(const QString &groupId)
 void PollingController::setEnabled(bool enabled)
 {
     if (enabled != m_polling.isEnabled())
-        m_lastProblem.clear();
+        say({});
     m_polling.setEnabled(enabled);
 }
 
@@ -73,9 +75,13 @@ void PollingController::roundDone(const Polling::Round &round)
 
 void PollingController::say(const QString &problem)
 {
-    if (!problem.isEmpty() && problem != m_lastProblem)
+    if (problem == m_lastProblem)
+        return;
+    const QString over = std::exchange(m_lastProblem, problem);
+    if (!over.isEmpty())
+        emit problemOver(over);
+    if (!problem.isEmpty())
         emit message(problem);
-    m_lastProblem = problem;
 }
 
 } // namespace DriveDesk

@@ -36,6 +36,8 @@ signals:
     void enabledChanged(bool enabled);
     void roundFinished();
     void message(const QString &text); // why polling stopped, which values could not be read
+    // A problem said with message() is over: the values are read again, or polling is off.
+    void problemOver(const QString &text);
 
 private:
     QList<ValueRead> groupReads();

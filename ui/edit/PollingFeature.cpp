@@ -78,6 +78,8 @@ void PollingFeature::attach(DriveSession *session)
     m_polling->setIntervalMs(m_intervalMs);
     connect(m_polling, &PollingController::message, this,
             [this](const QString &text) { frame().showMessage(text); });
+    connect(m_polling, &PollingController::problemOver, this,
+            [this](const QString &text) { frame().withdrawMessage(text); });
     // Off at once when the link is to close or a scan starts; on again once the drive is read.
     connect(session, &DriveSession::closing, m_polling,
             [polling = m_polling] { polling->setEnabled(false); });

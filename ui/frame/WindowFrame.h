@@ -67,6 +67,8 @@ public:
     virtual ParameterEditing *editing() const = 0;
 
     virtual void showMessage(const QString &text) = 0;
+    // Takes `text` off the status bar if it still shows it: what it said is no longer so.
+    virtual void withdrawMessage(const QString &text) = 0;
     // Asks for a parameter file to read, in a dialog that does not block; `chosen` runs with
     // its path once the user picked one.
     virtual void chooseParameterFile(const QString &title,

@@ -243,6 +243,12 @@ void MainWindow::showMessage(const QString &text)
     statusBar()->showMessage(text);
 }
 
+void MainWindow::withdrawMessage(const QString &text)
+{
+    if (!text.isEmpty() && statusBar()->currentMessage() == text)
+        statusBar()->clearMessage();
+}
+
 void MainWindow::reconnect()
 {
     if (!m_session) {

@@ -78,6 +78,7 @@ public:
     bool isReady() const override;
     ParameterEditing *editing() const override;
     void showMessage(const QString &text) override;
+    void withdrawMessage(const QString &text) override;
     void chooseParameterFile(const QString &title,
                              std::function<void(const QString &path)> chosen) override;
     void chooseFileToRead(const QString &title, const QString &filter,
