@@ -16,10 +16,11 @@ QByteArray line(const QStringList &fields, QChar separator)
     return csvRecord(fields, separator).toUtf8() + "\r\n";
 }
 
-QString tr(const char *text)
+// The texts' context, as lupdate finds it.
+class ParameterCsv
 {
-    return QCoreApplication::translate("ParameterCsv", text);
-}
+    Q_DECLARE_TR_FUNCTIONS(ParameterCsv)
+};
 
 } // namespace
 
@@ -29,6 +30,7 @@ CsvStyle CsvStyle::forSpreadsheet()
     if (QLocale().decimalPoint() == QLatin1String(","))
         style.separator = QLatin1Char(';');
     style.translatedHeader = true;
+    style.byteOrderMark = true;
     return style;
 }
 
@@ -51,15 +53,16 @@ QByteArray parametersAsCsv(const DriveDescription &drive, const CsvStyle &style)
 {
     QStringList heading;
     if (style.translatedHeader) {
-        heading << tr("id") << tr("name") << tr("unit");
+        heading << ParameterCsv::tr("id") << ParameterCsv::tr("name") << ParameterCsv::tr("unit");
         for (int set = 0; set < kParameterSets; ++set)
-            heading << tr("set %1").arg(set);
+            heading << ParameterCsv::tr("set %1").arg(set);
     } else {
         heading << QStringLiteral("id") << QStringLiteral("name") << QStringLiteral("unit");
         for (int set = 0; set < kParameterSets; ++set)
             heading << QStringLiteral("set %1").arg(set);
     }
-    QByteArray csv = line(heading, style.separator);
+    QByteArray csv = style.byteOrderMark ? QByteArray("\xEF\xBB\xBF") : QByteArray();
+    csv += line(heading, style.separator);
     for (const GroupDescription &group : drive.groups) {
         for (const ParameterDescription &parameter : group.parameters) {
             const ParameterFormat format(parameter);

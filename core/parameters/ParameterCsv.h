@@ -14,9 +14,13 @@ struct CsvStyle
     QChar separator = QLatin1Char(',');
     // The header in the installed language (tr()); otherwise the documented English one.
     bool translatedHeader = false;
+    // UTF-8's byte order mark first: a spreadsheet that sees none reads the bytes in the
+    // system's code page ("Â°C" for "°C").
+    bool byteOrderMark = false;
 
     // As a spreadsheet of the default QLocale reads it: ';' where the decimal separator is a
-    // comma (German), ',' elsewhere; the header in the installed language. The window's export.
+    // comma (German), ',' elsewhere; the header in the installed language; the byte order
+    // mark. The window's export.
     static CsvStyle forSpreadsheet();
 };
 

@@ -30,7 +30,7 @@ drivedesk_add_test(NAME tst_parametercomparison LABELS unit
 # The CSV export for spreadsheets.
 drivedesk_add_test(NAME tst_parametercsv LABELS unit
     SOURCES parameters/tst_parametercsv.cpp parameters/EditorSampleDrive.h
-    LIBS drivedesk_parameters)
+    LIBS drivedesk_parameters drivedesk_translations)
 # The compare view's comparison: every value of both sides with its state, and what writing the
 # chosen values puts into a file or hands a download.
 drivedesk_add_test(NAME tst_comparisontable LABELS unit
