@@ -20,6 +20,16 @@ int main(int argc, char **argv)
         return 0;
     }
 
+    // --help too: the usage needs no window system. Anything else waits for QApplication,
+    // which takes its own options (-platform, -style) out of the list first.
+    QStringList given;
+    for (int i = 0; i < argc; ++i)
+        given << QString::fromLocal8Bit(argv[i]);
+    if (DriveDesk::StartupOptions::parse(given).help) {
+        std::fputs(qPrintable(DriveDesk::StartupOptions::usage()), stdout);
+        return 0;
+    }
+
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("DriveDesk"));
     QApplication::setApplicationName(QStringLiteral("DriveDesk"));

@@ -206,6 +206,23 @@ private slots:
         QCOMPARE(run(program, {QStringLiteral("--version")}),
                  QStringLiteral("%1 %2\n").arg(program, QStringLiteral(DRIVEDESK_VERSION)));
     }
+
+    // On a machine without a display (a server, a terminal over ssh) --help still answers:
+    // the usage needs no window system, and Qt would abort reaching for one.
+    void theWindowsHelpNeedsNoDisplay()
+    {
+        QProcess process;
+        QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+        for (const char *name : {"QT_QPA_PLATFORM", "DISPLAY", "WAYLAND_DISPLAY"})
+            environment.remove(QString::fromLatin1(name));
+        environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("xcb"));
+        process.setProcessEnvironment(environment);
+        process.start(programPath(QStringLiteral("drivedesk")), {QStringLiteral("--help")});
+        QVERIFY(process.waitForFinished(30000));
+        QCOMPARE(process.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(process.exitCode(), 0);
+        QVERIFY(QString::fromUtf8(process.readAllStandardOutput()).contains(QStringLiteral("--connect")));
+    }
 };
 
 QTEST_GUILESS_MAIN(tst_ManPages)
