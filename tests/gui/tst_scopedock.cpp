@@ -7,6 +7,8 @@
 #include "scope/ScopeChannelPanel.h"
 #include "scope/QCustomPlotInclude.h"
 #include "scope/ScopeChart.h"
+#include "monitor/TelegramMonitor.h"
+#include "monitor/TrafficModel.h"
 #include "scope/ScopeDock.h"
 #include "Translations.h"
 
@@ -134,6 +136,21 @@ private:
         QTRY_VERIFY(dock->isVisible());
         QCustomPlot *plot = dock->chart()->plot();
         QTest::qWait(50); // the docks' layout settles with the event loop
+        const int width = window.width();
+        // Recording, the counts under the chart grow and the monitor drops its oldest telegrams,
+        // saying so: neither widens the window (it grew past a 1400-pixel screen) or squeezes
+        // the chart.
+        chooseSource(*dock, 0, kActualFrequency);
+        chooseSource(*dock, 1, kDcLinkVoltage);
+        QAction *record = action(*dock, "scopeRecordAction");
+        record->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(dock->isRecording(), kWaitMs);
+        auto *monitor = window.findChild<TelegramMonitor *>();
+        QVERIFY(monitor);
+        QTRY_VERIFY_WITH_TIMEOUT(monitor->model()->droppedCount() > 0, 60000);
+        QTest::qWait(300); // the monitor's status follows its batches
+        QVERIFY2(window.width() <= width,
+                 qPrintable(QStringLiteral("%1 px wide, was %2").arg(window.width()).arg(width)));
         plot->replot();
         QVERIFY2(plot->axisRect()->height() >= 150,
                  qPrintable(QStringLiteral("the traces get %1 px high").arg(plot->axisRect()->height())));
@@ -152,6 +169,8 @@ private:
                      qPrintable(QString::number(i)));
             QVERIFY(!item->outerRect().intersects(plot->axisRect()->rect()));
         }
+        record->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(!dock->isRecording(), kWaitMs);
     }
 
 private slots:

@@ -93,6 +93,9 @@ TelegramMonitor::TelegramMonitor(QWidget *parent)
     m_status = new QLabel;
     m_status->setObjectName(QStringLiteral("monitorStatus"));
     m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    // Wrapped: a long count ("... older telegrams dropped ...") must not widen the dock, and
+    // with it the window past the screen, beside the scope.
+    m_status->setWordWrap(true);
     m_notice = new QLabel;
     m_notice->setObjectName(QStringLiteral("monitorNotice"));
     m_notice->setWordWrap(true);

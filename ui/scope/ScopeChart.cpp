@@ -304,15 +304,27 @@ void ScopeChart::refreshData()
 
 void ScopeChart::fitLegend()
 {
-    // The names in one row while they fit, in two otherwise: never cut.
+    // The names in one row while they fit, two to a row otherwise, one to a row on a narrow
+    // chart (beside the telegram monitor): never cut.
     QCPLegend *legend = m_plot->legend;
-    int needed = legend->margins().left() + legend->margins().right();
+    QList<int> widths;
     for (int i = 0; i < legend->itemCount(); ++i) {
         // A cell of the grid may be empty.
         if (const QCPAbstractLegendItem *item = legend->item(i))
-            needed += item->minimumOuterSizeHint().width() + legend->columnSpacing();
+            widths << item->minimumOuterSizeHint().width() + legend->columnSpacing();
     }
-    const int wrap = needed <= m_plot->width() ? 0 : 2;
+    const int room = m_plot->width() - legend->margins().left() - legend->margins().right();
+    const auto fits = [&widths, room](qsizetype perRow) {
+        for (qsizetype first = 0; first < widths.size(); first += perRow) {
+            int row = 0;
+            for (qsizetype i = first; i < std::min(first + perRow, widths.size()); ++i)
+                row += widths.at(i);
+            if (row > room)
+                return false;
+        }
+        return true;
+    };
+    const int wrap = fits(std::max<qsizetype>(widths.size(), 1)) ? 0 : fits(2) ? 2 : 1;
     if (wrap == legend->wrap())
         return;
     legend->setWrap(wrap);

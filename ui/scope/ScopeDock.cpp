@@ -81,6 +81,8 @@ ScopeDock::ScopeDock(WindowFrame &frame, QWidget *parent)
     m_status = new QLabel(content);
     m_status->setObjectName(QStringLiteral("scopeStatus"));
     m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    // Wrapped, as the monitor's: the counts while recording must not widen the window.
+    m_status->setWordWrap(true);
     m_progress = new QProgressBar(content);
     m_progress->setMaximumWidth(200);
     m_progress->hide();

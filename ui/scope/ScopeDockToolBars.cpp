@@ -138,6 +138,12 @@ void ScopeDock::buildTriggerBar(QToolBar *bar)
     m_triggerLevel->setObjectName(QStringLiteral("scopeTriggerLevel"));
     m_triggerLevel->setRange(-1e9, 1e9);
     m_triggerLevel->setDecimals(2);
+    // Its width fixed now, with room for a unit: the channel's unit, set later as a suffix,
+    // would widen the tool bar past what the dock asked the window for, and push its last
+    // buttons behind the overflow arrow.
+    m_triggerLevel->setFixedWidth(m_triggerLevel->sizeHint().width()
+                                  + m_triggerLevel->fontMetrics().horizontalAdvance(
+                                      QStringLiteral(" 1/min")));
     bar->addWidget(m_triggerLevel);
     bar->addWidget(new QLabel(tr("Pre-trigger"), bar));
     m_triggerPre = new QSpinBox(bar);
