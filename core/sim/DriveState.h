@@ -30,6 +30,8 @@ public:
     const ParameterDatabase &db() const { return *m_db; }
     int address() const { return m_address; }
     quint32 seed() const { return m_seed; }
+    qint32 serialNumber() const { return m_serialNumber; }
+    void setSerialNumber(qint32 serial) { m_serialNumber = serial; }
 
     // Runs the motor and the timers up to `nowMs` (a monotonic clock). Time never runs back.
     void advanceTo(qint64 nowMs);
@@ -72,6 +74,7 @@ private:
     std::shared_ptr<const ParameterDatabase> m_db;
     int m_address = 1;
     quint32 m_seed = 1;
+    qint32 m_serialNumber = 10000000;
     std::vector<std::array<qint32, kSets>> m_values;
     int m_passwordLevel = 3;
     bool m_displayTextAsCharacters = false;

@@ -168,7 +168,7 @@ qint32 liveValue(const DriveState &state, LiveSignal signal, int index)
     case LiveSignal::ModulationHours:
         return kModulationHoursAtStart + qint32(m.modulationSeconds() / 360);
     case LiveSignal::SerialNumber:
-        return qint32(10000000 + splitMix(state.seed()) % 90000000);
+        return state.serialNumber();
     case LiveSignal::EncoderPosition: {
         const double increments = m.revolutions() * 4 * state.setting(F5::kEncoderPulses, 1024);
         return qint32(qint64(std::floor(increments)) & 0xFFFF);

@@ -4,7 +4,26 @@
 #include "DriveVariety.h"
 #include "Services.h"
 
+
 namespace DriveDesk {
+
+namespace {
+
+// Eight digits, as an F5's: from the seed and the drive's address, so that the drives of a
+// plant differ, and the same drive connected again is the same drive (its favourites, its
+// backups).
+qint32 ownSerialNumber(quint32 seed, int address)
+{
+    quint64 x = (quint64(seed) << 32) ^ quint64(quint32(address));
+    // splitmix64's finaliser: neighbouring inputs land far apart.
+    x += 0x9E3779B97F4A7C15ull;
+    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+    x ^= x >> 31;
+    return qint32(10000000 + x % 90000000);
+}
+
+} // namespace
 
 SimulatedDrive::SimulatedDrive(SimulatedDriveOptions options)
     : m_state(std::make_unique<Sim::DriveState>(
@@ -13,6 +32,8 @@ SimulatedDrive::SimulatedDrive(SimulatedDriveOptions options)
           qBound(0, options.address, 239), options.seed))
 {
     m_state->setDisplayTextAsCharacters(options.displayTextAsCharacters);
+    m_state->setSerialNumber(
+        options.serialNumber.value_or(ownSerialNumber(options.seed, m_state->address())));
     Sim::giveOwnSettings(*m_state);
     // A drive that is not an F5 has no text to identify it by either.
     if (options.kind != SimulatedDriveKind::Unidentified)

@@ -26,7 +26,10 @@ struct SimulatedDriveOptions
     int address = 1; // DIN66019II drive address 0..239; it also picks a few user settings
     int parameterCount = 0; // 0: the standard simulated F5; N > standard: pad with generated
                             // groups/parameters to N
-    quint32 seed = 1; // generated parameters, measurement noise, serial number
+    quint32 seed = 1; // generated parameters, measurement noise
+    // In.10. Unset: one of its own, from the seed and the address: two simulated drives of a
+    // plant are two drives.
+    std::optional<qint32> serialNumber = std::nullopt;
     // Service 8: an HSP5 drive sends its display text as 7-segment patterns (seed 000 2.17),
     // a DIN66019II drive as five characters (seed 003 5.15), since a 7-bit line has no room
     // for the patterns.

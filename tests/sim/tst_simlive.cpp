@@ -120,6 +120,27 @@ private slots:
         }
     }
 
+    // Two simulated drives of a plant are two drives: each its serial number (In.10), eight
+    // digits, the same at every read and again when made again; one given keeps it.
+    void everyDriveHasASerialNumberOfItsOwn()
+    {
+        constexpr quint16 kSerialNumber = 0x0E0A;
+        SimulatedDriveOptions second;
+        second.address = 2;
+        SimulatedDrive a;
+        SimulatedDrive b(second);
+        SimulatedDrive again;
+        const qint32 serialA = get(a, kSerialNumber, kStart);
+        QVERIFY(serialA >= 10000000 && serialA <= 99999999);
+        QVERIFY(serialA != get(b, kSerialNumber, kStart));
+        QCOMPARE(get(again, kSerialNumber, kStart), serialA);
+        QCOMPARE(get(a, kSerialNumber, kStart + 5000), serialA);
+        SimulatedDriveOptions given;
+        given.serialNumber = 12345678;
+        SimulatedDrive c(given);
+        QCOMPARE(get(c, kSerialNumber, kStart), 12345678);
+    }
+
     void motorFollowsCommandSpeedFromProcessData()
     {
         SimulatedDrive drive;
