@@ -110,9 +110,12 @@ void DownloadRun::onWritten()
             continue;
         outcomes[i] = future.resultAt(i);
         // A change whose writes were answered may have lost its read-back.
+        // Said as the request that found the connection gone says it ("the drive stopped
+        // answering"), not as an earlier failure of the same change.
         if (outcomes[i]->connectionFailed) {
-            stopReason = outcomes[i]->error.isEmpty() ? outcomes[i]->readBackError
-                                                      : outcomes[i]->error;
+            stopReason = !outcomes[i]->connectionError.isEmpty() ? outcomes[i]->connectionError
+                : outcomes[i]->error.isEmpty()                   ? outcomes[i]->readBackError
+                                                                 : outcomes[i]->error;
         }
     }
     if (m_stopped)

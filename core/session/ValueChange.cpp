@@ -118,6 +118,14 @@ bool readsEarly(const ChangeRun &run, qsizetype index)
     return true;
 }
 
+// The first request of the change that found the connection gone says why.
+void failConnection(WriteOutcome &outcome, const QString &reason)
+{
+    if (!outcome.connectionFailed)
+        outcome.connectionError = reason;
+    outcome.connectionFailed = true;
+}
+
 constexpr int kReadBackAttempts = 3; // an implausible answer is read again so often in all
 
 void finishReadBack(const ChangeRunPtr &run)
@@ -185,7 +193,7 @@ void readSlot(RequestSink &sink, const ChangeRunPtr &run, std::size_t slot, bool
                             : reply.message();
                     }
                     if (reply.isConnectionFailure())
-                        outcome.connectionFailed = true;
+                        failConnection(outcome, reply.message());
                     finishReadBack(run);
                 });
 }
@@ -215,7 +223,7 @@ void readBack(RequestSink &sink, const ChangeRunPtr &run)
             // Nothing more gets through: asking again would only say so less precisely.
             if (outcome.readBackError.isEmpty())
                 outcome.readBackError = early.error;
-            outcome.connectionFailed = true;
+            failConnection(outcome, early.error);
         } else {
             reads.append({slot, unanswered});
         }
@@ -304,7 +312,7 @@ void sendNextStep(RequestSink &sink, const ChangeRunPtr &run)
             if (reply.isConnectionFailure()) {
                 // The steps after it would fail alike: they stay unsent, neither acknowledged
                 // nor refused, and what was acknowledged is still read back if it can be.
-                outcome.connectionFailed = true;
+                failConnection(outcome, reply.message());
                 for (qsizetype next = run->nextStep; next < run->change.steps.size(); ++next)
                     outcome.notSentMask |= run->change.steps.at(next).setMask;
                 run->nextStep = run->change.steps.size();

@@ -62,6 +62,7 @@ struct WriteOutcome
     // No answer at all, to a write or a read-back: later requests would fail alike. The steps
     // after the failed one were not sent: their sets are neither acknowledged nor refused.
     bool connectionFailed = false;
+    QString connectionError; // why, in words, when connectionFailed
     QString readBackError;       // acknowledged, but the value could not be read back
     // What the drive holds after the change, per set read back ([0] for the active set).
     std::array<std::optional<qint32>, kParameterSets> readBack{};

@@ -96,6 +96,7 @@ void ValueEdits::begin(const EditPtr &edit)
         outcome.address = edit->change.address;
         outcome.error = tr("the connection to the drive was closed");
         outcome.connectionFailed = true;
+        outcome.connectionError = outcome.error;
         for (const WriteStep &step : std::as_const(edit->change.steps))
             outcome.refusedMask |= step.setMask;
         finish(edit, outcome);
