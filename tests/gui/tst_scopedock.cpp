@@ -18,6 +18,7 @@
 #include <QFile>
 #include <QFileDialog>
 #include <QLabel>
+#include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSpinBox>
@@ -171,6 +172,11 @@ private:
         }
         record->trigger();
         QTRY_VERIFY_WITH_TIMEOUT(!dock->isRecording(), kWaitMs);
+        // The count after the recording is written as during it: in the window's language
+        // ("4.520" in German, not "4520").
+        const QString count = QLocale().toString(qlonglong(dock->recording()->buffer.count()));
+        QVERIFY2(status(*dock).contains(count),
+                 qPrintable(QStringLiteral("%1 / %2").arg(status(*dock), count)));
     }
 
 private slots:
@@ -583,7 +589,9 @@ private slots:
     void theChartKeepsItsRoomBesideTheMonitorInGerman()
     {
         QVERIFY(installTranslations(QStringLiteral("de")));
+        QLocale::setDefault(QLocale(QLocale::German)); // as main() does for the language
         checkTheChartsRoomBesideTheMonitor(Language::German);
+        QLocale::setDefault(QLocale::c());
     }
 };
 

@@ -195,7 +195,7 @@ bool ScopeDock::openRecording(const QString &path, QString *error)
     m_unsaved = false;
     m_chart->showAll();
     showStatus(warnings.isEmpty()
-                   ? tr("%1: %n sample(s)", nullptr, int(m_recording->buffer.count())).arg(path)
+                   ? tr("%1: %Ln sample(s)", nullptr, int(m_recording->buffer.count())).arg(path)
                    : warnings.join(QLatin1Char(' ')),
                !warnings.isEmpty());
     return true;

@@ -179,12 +179,12 @@ void ScopeDock::recordingFinished(const ScopePollEnd &end)
         m_trigger.disarm();
     }
     if (!end.reason.isEmpty()) {
-        showStatus(tr("Recording stopped: %1. The %n sample(s) recorded are kept.", nullptr,
+        showStatus(tr("Recording stopped: %1. The %Ln sample(s) recorded are kept.", nullptr,
                       int(status.samples))
                        .arg(end.reason),
                    true);
     } else if (status.fileError.isEmpty()) {
-        showStatus(tr("Recorded %n sample(s) at %1 Hz on average; %2 lost, %3 failed.", nullptr,
+        showStatus(tr("Recorded %Ln sample(s) at %1 Hz on average; %2 lost, %3 failed.", nullptr,
                       int(status.samples))
                        .arg(QLocale().toString(status.averageHz, 'f', 1))
                        .arg(end.counts.lost)
@@ -209,7 +209,7 @@ void ScopeDock::keepShot()
         m_chart->setCursorTime(0, double(triggerMs));
     if (m_chart->cursorTime(1))
         m_chart->setCursorTime(1, double(m_recording->lastTime()));
-    QString text = tr("Shot of %n sample(s) around the trigger.", nullptr,
+    QString text = tr("Shot of %Ln sample(s) around the trigger.", nullptr,
                       int(m_recording->buffer.count()));
     if (!m_recordFile.isEmpty()) {
         QString error;
