@@ -18,6 +18,7 @@
 #include <QFile>
 #include <QFileDialog>
 #include <QLabel>
+#include <QLineEdit>
 #include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
@@ -578,6 +579,40 @@ private slots:
         shot->trigger(); // called off: the recording stops, what it has stays
         QTRY_VERIFY_WITH_TIMEOUT(!dock->isRecording(), kWaitMs);
         QVERIFY(dock->recording()->buffer.count() > 0);
+    }
+
+    // Typed as one types it into the parameter table's search, and Enter: the source is chosen
+    // (it stayed "As the drive has it").
+    void aSourceTypedByItsIdIsChosen()
+    {
+        m_settings.clear();
+        MainWindow window;
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(connectAndRead(window, simulated()));
+        window.findChild<QAction *>(QStringLiteral("scopeViewAction"))->trigger();
+        auto *dock = window.findChild<ScopeDock *>();
+        QTRY_VERIFY(dock->isVisible());
+        auto *source = dock->findChild<QComboBox *>(QStringLiteral("scopeSource1"));
+        QVERIFY(source && source->isEnabled());
+        for (const QString &typed : {QStringLiteral("ru.03"), QStringLiteral("RU.9")}) {
+            source->setFocus();
+            QTRY_VERIFY(source->lineEdit()->hasFocus());
+            source->lineEdit()->selectAll();
+            QTest::keyClicks(source->lineEdit(), typed);
+            QTest::keyClick(source->lineEdit(), Qt::Key_Return);
+            const int wanted = typed == QLatin1String("ru.03") ? 0x0203 : 0x0209;
+            QTRY_COMPARE(source->currentData().toInt(), wanted);
+            QVERIFY2(source->lineEdit()->text().startsWith(typed.left(3), Qt::CaseInsensitive)
+                         && source->lineEdit()->text().contains(QLatin1String("  ")),
+                     qPrintable(source->lineEdit()->text()));
+        }
+        // Not a source: what was chosen stays, and the field says it again.
+        source->lineEdit()->selectAll();
+        QTest::keyClicks(source->lineEdit(), QStringLiteral("zz.99"));
+        QTest::keyClick(source->lineEdit(), Qt::Key_Return);
+        QCOMPARE(source->currentData().toInt(), 0x0209);
+        QTRY_COMPARE(source->lineEdit()->text(), source->itemText(source->currentIndex()));
     }
 
     void theChartKeepsItsRoomBesideTheMonitor()

@@ -8,6 +8,7 @@
 #include <QCompleter>
 #include <QGridLayout>
 #include <QLabel>
+#include <QLineEdit>
 #include <QToolButton>
 
 namespace DriveDesk {
@@ -51,6 +52,10 @@ ScopeChannelPanel::ScopeChannelPanel(QWidget *parent)
         row.source->completer()->setCompletionMode(QCompleter::PopupCompletion);
         row.source->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
         row.source->setMinimumContentsLength(22);
+        // An id typed and confirmed ("ru.3", "ru.03", "0203h") picks its source, as the table's
+        // search finds it; the combo alone would only take a whole item's text.
+        connect(row.source->lineEdit(), &QLineEdit::returnPressed, this,
+                [this, channel] { chooseTyped(channel); });
         row.set = new QComboBox(this);
         row.set->setObjectName(QStringLiteral("scopeSet%1").arg(channel + 1));
         for (int set = 0; set < kParameterSets; ++set)
@@ -121,6 +126,26 @@ void ScopeChannelPanel::fillSources(int channel)
                                                   parameter->name),
                      int(parameter->address));
     }
+}
+
+void ScopeChannelPanel::chooseTyped(int channel)
+{
+    QComboBox *box = m_rows[std::size_t(channel)].source;
+    const QString typed = box->lineEdit()->text().trimmed();
+    // An editable combo's currentText() is what the field shows: the item's own is chosen.
+    const QString chosen = box->itemText(box->currentIndex());
+    if (!m_drive || typed.isEmpty() || typed == chosen)
+        return;
+    int found = box->findText(typed, Qt::MatchFixedString);
+    if (found < 0) {
+        const QString id = typed.section(QLatin1Char(' '), 0, 0);
+        if (const std::optional<quint16> address = ParameterId::parse(id, *m_drive))
+            found = box->findData(int(*address));
+    }
+    if (found >= 0)
+        box->setCurrentIndex(found);
+    else
+        box->lineEdit()->setText(chosen); // not a source: what is chosen stays
 }
 
 ScopeAssignment ScopeChannelPanel::choices() const

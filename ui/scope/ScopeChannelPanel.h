@@ -53,6 +53,9 @@ signals:
     void ownAxisChanged(int channel, bool own);
 
 private:
+    // The id typed into channel's source field and confirmed with Enter.
+    void chooseTyped(int channel);
+
     struct Row
     {
         QToolButton *color = nullptr;
