@@ -297,6 +297,10 @@ private slots:
         QVERIFY2(hoist.startsWith(QStringLiteral("failed: "))
                      || hoist.startsWith(QStringLiteral("unreachable: ")),
                  qPrintable(hoist));
+        // It says what to do about it: the editor holds that line.
+        QVERIFY2(hoist.contains(QStringLiteral("the editor is connected to this line"))
+                     && hoist.contains(QStringLiteral("Disconnect")),
+                 qPrintable(hoist));
         QVERIFY(m_window->isReady());
         m_dock->setBackupFolder(backups);
         // The hoist keeps its setting as backed up: the edit goes back.

@@ -86,6 +86,8 @@ private:
     void findFinished(const PlantRun &run);
     void downloadPlanned(const QList<PlantDrive> &drives);
     void compareRead(const QList<PlantDrive> &drives);
+    // A drive that failed on the line the editor holds: its reason says to disconnect first.
+    PlantDrive explained(PlantDrive drive) const;
     void showMessage(const QString &text);
 
     WindowFrame &m_frame;

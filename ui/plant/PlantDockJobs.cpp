@@ -5,6 +5,7 @@
 #include "PlantReportDialog.h"
 
 #include "bus/LinkFactory.h"
+#include "frame/DriveSession.h"
 #include "frame/FrameSupport.h"
 #include "frame/WindowFeature.h"
 
@@ -35,7 +36,8 @@ void PlantDock::startJob(Job job, const Plant &plant, const QString &directory)
     run->setLanguage(m_frame.language());
     run->setDownloadOptions(job == Job::DownloadLook, false);
     connect(run, &PlantRun::progress, this, &PlantDock::onProgress);
-    connect(run, &PlantRun::driveDone, this, [this](const PlantDrive &drive) {
+    connect(run, &PlantRun::driveDone, this, [this](const PlantDrive &done) {
+        const PlantDrive drive = explained(done);
         // A comparison reads into files of its own: the drives' results stay as they were.
         if (m_job != Job::CompareRead)
             m_model->setDriveDone(drive);
@@ -86,7 +88,9 @@ void PlantDock::onJobFinished()
     m_job = Job::None;
     m_model->endJob();
     run->deleteLater();
-    const QList<PlantDrive> drives = run->drives();
+    QList<PlantDrive> drives = run->drives();
+    for (PlantDrive &drive : drives)
+        drive = explained(drive);
     switch (job) {
     case Job::Find:
         findFinished(*run);
@@ -160,6 +164,22 @@ void PlantDock::downloadPlanned(const QList<PlantDrive> &drives)
             [this] { startJob(Job::Download, m_model->plant(), backupFolder()); });
     look->show();
     showMessage(text);
+}
+
+PlantDrive PlantDock::explained(PlantDrive drive) const
+{
+    // A line the editor holds cannot be opened a second time (a serial port, a gateway that
+    // serves one connection): its drives fail, and the user needs to know what to do.
+    const DriveSession *session = m_frame.session();
+    const PlantLink *link = m_model->plant().link(drive.link);
+    if (drive.isGood() || !session || !link
+        || session->state() == DriveClient::State::Disconnected
+        || link->settings(std::max(drive.address, 0)).target() != session->settings().target())
+        return drive;
+    drive.reason = tr("the editor is connected to this line (%1): disconnect it (Drive > "
+                      "Disconnect) and start again; %2")
+                       .arg(session->settings().target(), drive.reason);
+    return drive;
 }
 
 void PlantDock::compareRead(const QList<PlantDrive> &drives)
