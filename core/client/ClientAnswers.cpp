@@ -27,8 +27,7 @@ void ClientWorker::onReceived(const QByteArray &bytes)
     m_sinceLastByte.restart();
     if (!bytes.isEmpty()) {
         ++m_receptions;
-        setDriveSilent(false); // whatever came, the drive is there
-        noteHeard();
+        noteHeard(bytes);
     }
     m_decoder->feed(bytes);
     if (m_draining)
@@ -37,6 +36,8 @@ void ClientWorker::onReceived(const QByteArray &bytes)
     while (std::optional<Decoded> item = m_decoder->next()) {
         if (m_staleAnswers) {
             const auto *telegram = std::get_if<Telegram>(&*item);
+            noteGarbage(telegram ? unmatchedAnswer(*telegram)
+                                 : garbageOf(std::get<DecodeError>(*item)));
             record(TrafficRecord::Kind::Error,
                    telegram ? m_codec->encode(*telegram) : std::get<DecodeError>(*item).bytes,
                    tr("arrived before the open request was sent, ignored: %1")
@@ -72,6 +73,7 @@ void ClientWorker::onAnswer(const Telegram &answer)
             && answer.inverterInvoke != 0) {
             answerInverterRequest(answer);
         } else {
+            noteGarbage(Garbage::ForeignAnswer);
             record(TrafficRecord::Kind::Error, m_codec->encode(answer),
                    tr("a request where answers are expected, ignored: %1").arg(describe(answer)));
         }
@@ -88,6 +90,8 @@ void ClientWorker::onAnswer(const Telegram &answer)
     } else {
         record(TrafficRecord::Kind::Received, m_codec->encode(answer), describe(answer), &answer);
     }
+    if (!request || !mismatch.isEmpty())
+        noteGarbage(unmatchedAnswer(answer));
     if (!request) {
         record(TrafficRecord::Kind::Error, {},
                tr("the answer with invoke id %1 belongs to no open request, ignored")
@@ -115,6 +119,7 @@ void ClientWorker::onAnswer(const Telegram &answer)
     }
     ++m_answersMatched;
     m_recovering = false; // in step: the drive answers what it was asked
+    noteAnswered();
     if (request->completed()) {
         takeInFlight(request->ticket); // cancelled: its answer is ignored
         return;
@@ -141,6 +146,7 @@ void ClientWorker::onDecodeError(const DecodeError &error)
 {
     record(TrafficRecord::Kind::Error, error.bytes,
            QStringLiteral("%1: %2").arg(decodeErrorKindName(error.kind), error.detail));
+    noteGarbage(garbageOf(error));
     PendingRequest *request = nullptr;
     if (isDin()) {
         // Skipped garbage may be the tail of an earlier answer: the timeout decides then.
@@ -172,6 +178,7 @@ void ClientWorker::onLineError(const QString &reason)
     if (m_state != DriveClient::State::Connected)
         return;
     m_decoder->reset();
+    noteGarbage(Garbage::LineError);
     record(TrafficRecord::Kind::Error, {}, tr("line error: %1").arg(reason));
     PendingRequest *oldest = nullptr;
     for (const Request &request : m_inFlight) {
@@ -208,6 +215,7 @@ void ClientWorker::onDeadline()
         }
         ++request.timeouts;
         recordTimeout(request);
+        notePartialAnswer(request);
         if (isDin()) {
             m_selectedDrive = -1; // the drive may have dropped it, or another took the line
             retryOrGiveUp(request);
@@ -248,22 +256,6 @@ void ClientWorker::retryOrGiveUp(PendingRequest &request)
     Request owned = takeInFlight(request.ticket);
     complete(*owned, Reply::Status::Timeout);
     pump();
-}
-
-void ClientWorker::answerInverterRequest(const Telegram &request)
-{
-    record(TrafficRecord::Kind::Received, m_codec->encode(request),
-           tr("inverter request: %1").arg(describe(request)), &request);
-    const Telegram answer = request.response(Ack::ServiceNotAvailable);
-    QString error;
-    const QByteArray bytes = m_codec->encode(answer, &error);
-    if (bytes.isEmpty()) {
-        record(TrafficRecord::Kind::Error, {},
-               tr("cannot answer the inverter's request: %1").arg(error));
-        return;
-    }
-    record(TrafficRecord::Kind::Sent, bytes, describe(answer), &answer, &request);
-    m_link->send(bytes);
 }
 
 void ClientWorker::cancelTicket(quint64 ticket)

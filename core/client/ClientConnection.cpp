@@ -27,7 +27,7 @@ void ClientWorker::setDriveSilent(bool silent)
     if (silent) {
         record(TrafficRecord::Kind::Error, {},
                tr("the drive has gone silent: a request was given up after every attempt and "
-                  "nothing came from the drive since"));
+                  "no valid answer came from the drive since"));
     }
     emit driveSilentChanged(silent);
 }

@@ -89,6 +89,14 @@ int silenceLimitMs(const ConnectionSettings &settings, const ClientOptions &opti
     return timeout + kUnansweredRequestsToStop * attempts * (timeout + quietLine);
 }
 
+int garbageLimitMs(const ConnectionSettings &settings, const ClientOptions &options)
+{
+    const int attempts = 1 + std::max(options.retries, 0);
+    const int busyLine = settings.protocol == Protocol::Hsp5 ? 2 * quietLineMs(settings) : 0;
+    const int timeout = answerTimeoutMs(settings, options);
+    return timeout + kUnansweredRequestsToStop * attempts * (timeout + busyLine);
+}
+
 int idleSilenceLimitMs(const ConnectionSettings &settings, const ClientOptions &options)
 {
     const int attempts = 1 + std::max(options.retries, 0);

@@ -19,7 +19,7 @@ int probeTimeoutMs(const ConnectionSettings &settings, const ClientOptions &opti
 int quietLineMs(const ConnectionSettings &settings);
 
 // A drive has stopped answering once this many requests in a row were given up after every
-// attempt with nothing at all from the drive since their last attempt went out.
+// attempt without a valid answer: nothing at all came, or only garbage (ClientSilence.cpp).
 constexpr int kUnansweredRequestsToStop = 4;
 
 // The longest a client takes to decide that a drive stopped answering, from the moment it
@@ -27,6 +27,11 @@ constexpr int kUnansweredRequestsToStop = 4;
 // kUnansweredRequestsToStop requests each spending every attempt (an answer timeout each, and
 // HSP5's quiet line before each attempt while it recovers). HSP5 at 38400 baud: 2.0 s.
 int silenceLimitMs(const ConnectionSettings &settings, const ClientOptions &options);
+
+// The same for a drive that answers only with garbage: as for silence, except that HSP5 then
+// waits for a quiet line from the drive at most twice the quiet line before each attempt (a
+// stream that never ends would otherwise hold every request). HSP5 at 38400 baud: 2.4 s.
+int garbageLimitMs(const ConnectionSettings &settings, const ClientOptions &options);
 
 // With ClientOptions::idleCheckMs: the longest from the moment a drive on an idle line falls
 // silent until the client reports it (driveSilentChanged): the idle time, then the check

@@ -60,6 +60,7 @@ void ClientWorker::init()
         connect(m_idleTimer, &QTimer::timeout, this, &ClientWorker::checkIdleLine);
     }
     m_sinceLastByte.start();
+    m_sinceLastAnswer.start();
     m_sinceLastSend.start();
     m_sinceConnected.start();
     m_clock.start();
@@ -188,9 +189,8 @@ void ClientWorker::pump()
         m_pumpAgain = false;
         while (m_state == DriveClient::State::Connected && !m_queue.empty()
                && int(m_inFlight.size()) < capacity()) {
-            if (m_recovering && !lineIsQuiet()) {
-                const qint64 waited = std::min(m_sinceLastByte.elapsed(), m_sinceLastSend.elapsed());
-                m_quietTimer->start(int(std::max<qint64>(m_quietLineMs - waited, 1)));
+            if (const qint64 wait = m_recovering ? quietLineWaitMs() : 0; wait > 0) {
+                m_quietTimer->start(int(wait));
                 break;
             }
             Request next = std::move(m_queue.front());
@@ -229,6 +229,8 @@ void ClientWorker::transmit(PendingRequest &request)
 {
     if (request.attempts == 0)
         request.receptionsBefore = m_receptions;
+    else
+        closeAttempt(request); // the one before this
     ++request.attempts;
     request.wire = request.request;
     request.wire.direction = Direction::Request;
@@ -260,6 +262,7 @@ void ClientWorker::transmit(PendingRequest &request)
     request.deadline = QDeadlineTimer(request.timeoutMs, Qt::PreciseTimer);
     request.answersBefore = m_answersMatched;
     m_sinceLastSend.restart();
+    m_busyLineSince.invalidate();
     QString meaning = describe(request.wire);
     if (request.wire.driveAddress >= 0)
         meaning = tr("to drive %1: %2").arg(request.wire.driveAddress).arg(meaning);
@@ -293,9 +296,19 @@ void ClientWorker::armDeadlineTimer()
         m_deadlineTimer->start(int(std::max<qint64>(earliest, 0)));
 }
 
-bool ClientWorker::lineIsQuiet() const
+// The drive takes a byte as a telegram's start again only after a quiet line of its input:
+// that much is always waited after sending. The drive's own output is waited out only for a
+// while: a line that never falls quiet (a stream of garbage) must not hold every request forever.
+qint64 ClientWorker::quietLineWaitMs()
 {
-    return m_sinceLastByte.elapsed() >= m_quietLineMs && m_sinceLastSend.elapsed() >= m_quietLineMs;
+    const qint64 sending = m_quietLineMs - m_sinceLastSend.elapsed();
+    qint64 receiving = m_quietLineMs - m_sinceLastByte.elapsed();
+    if (receiving > 0) {
+        if (!m_busyLineSince.isValid())
+            m_busyLineSince.start();
+        receiving = std::min(receiving, 2 * m_quietLineMs - m_busyLineSince.elapsed());
+    }
+    return std::max({sending, receiving, qint64(0)});
 }
 
 void ClientWorker::startRecovery()
@@ -348,6 +361,22 @@ void ClientWorker::recordTimeout(const PendingRequest &request)
                       .arg(request.attempts)
                       .arg(request.maxAttempts);
     record(TrafficRecord::Kind::Error, {}, note, nullptr, &request.wire);
+}
+
+void ClientWorker::answerInverterRequest(const Telegram &request)
+{
+    record(TrafficRecord::Kind::Received, m_codec->encode(request),
+           tr("inverter request: %1").arg(describe(request)), &request);
+    const Telegram answer = request.response(Ack::ServiceNotAvailable);
+    QString error;
+    const QByteArray bytes = m_codec->encode(answer, &error);
+    if (bytes.isEmpty()) {
+        record(TrafficRecord::Kind::Error, {},
+               tr("cannot answer the inverter's request: %1").arg(error));
+        return;
+    }
+    record(TrafficRecord::Kind::Sent, bytes, describe(answer), &answer, &request);
+    m_link->send(bytes);
 }
 
 void OwnedSink::submit(const Telegram &request, std::function<void(const Reply &)> done)

@@ -11,8 +11,10 @@
 #include <QPointer>
 #include <QPromise>
 
+#include <array>
 #include <deque>
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QTimer;
@@ -117,22 +119,40 @@ private:
     PendingRequest *awaitingAnswer(quint8 operatorInvoke);
     Request takeInFlight(quint64 ticket);
     // ClientSilence.cpp: whether a drive stopped answering, and what then goes on the line.
-    // A request given up with Timeout: counts toward the stop, and once the drive has stopped,
-    // ends as DriveSilent (status and detail are changed).
-    void noteUnanswered(const PendingRequest &request, Reply::Status *status, QString *detail);
+    // A request given up with Timeout: what its attempts got counts toward the stop (or, as
+    // from a line with errors, starts the count anew), and once the drive has stopped, it ends
+    // as DriveSilent (status and detail are changed).
+    void noteUnanswered(PendingRequest &request, Reply::Status *status, QString *detail);
     void stopAnswering();
     void noteSent(PendingRequest &request);
-    void noteHeard();
+    // Bytes came (onReceived): the drive is there, though not necessarily answering.
+    void noteHeard(const QByteArray &bytes);
+    // An answer matched its request (even a refusal): the drive answers.
+    void noteAnswered();
+    // Garbage came: what the oldest attempt waiting for its answer got, unless something came
+    // for it before.
+    void noteGarbage(Garbage kind);
+    static Garbage garbageOf(const DecodeError &error);
+    // The end of the latest attempt of `request`: what it was answered with is counted.
+    void closeAttempt(PendingRequest &request) const;
+    // An answer that matched no open request: to an earlier one (stale), or to none at all.
+    Garbage unmatchedAnswer(const Telegram &answer) const;
+    // An attempt of `request` timed out: what the decoder still holds of it, if anything.
+    void notePartialAnswer(const PendingRequest &request);
     void resetSilence();
     // While stopped, one request at a time goes out, once: the check whether the drive is back.
     // Whether `request` fails at once instead (*detail says why).
     bool failsWhileStopped(PendingRequest &request, QString *detail) const;
+    // What the run of requests given up got instead of answers, mostly.
+    Garbage runAnsweredWith() const;
     QString silenceText() const;
     // With ClientOptions::idleCheckMs: the timer runs out once the line has been idle that
     // long, and checkIdleLine() then sends the check (ValueRequests::presence).
     void armIdleCheck();
     void checkIdleLine();
-    qint64 idleMs() const; // since anything was sent or received, or the connection opened
+    // Since anything was sent or answered, or the connection opened: garbage without end does
+    // not keep the line busy.
+    qint64 idleMs() const;
 
     // Runs the request's completion; the request itself stays where it is.
     void complete(PendingRequest &request, Reply::Status status, const Telegram *answer = nullptr,
@@ -143,7 +163,8 @@ private:
     // cannot frame, line noise, a gateway's hiccup): one request at a time, each after a quiet
     // line, until an answer matches again.
     void startRecovery();
-    bool lineIsQuiet() const;
+    // Recovery: how long the next request still waits for a quiet line (0: it goes now).
+    qint64 quietLineWaitMs();
     // Puts a request back into the queue in the order it was submitted.
     void requeue(Request request);
     void record(TrafficRecord::Kind kind, const QByteArray &bytes, const QString &meaning,
@@ -167,6 +188,7 @@ private:
     QTimer *m_quietTimer = nullptr; // recovery: wakes the queue once the line is quiet
     QTimer *m_idleTimer = nullptr;  // the idle line's check; none without idleCheckMs
     QElapsedTimer m_sinceLastByte;
+    QElapsedTimer m_sinceLastAnswer; // valid: matched to its request
     QElapsedTimer m_sinceLastSend;
     QElapsedTimer m_sinceConnected; // the idle line's check waits from the connection too
     int m_quietLineMs = 0;
@@ -174,14 +196,20 @@ private:
     quint64 m_receptions = 0; // chunks of bytes received from the drive
     quint64 m_lineErrors = 0; // error notes recorded (RequestSink::lineErrors)
     bool m_driveSilent = false;
-    // Silence: telegrams sent since the last byte from the drive, when the first of them went
-    // out (on m_clock), the requests given up in a row without a byte since their last attempt,
-    // and whether the drive counts as stopped.
+    // Silence: telegrams sent since the last valid answer, when the first of them went out (on
+    // m_clock), the requests given up in a row without a valid answer, and whether the drive
+    // counts as stopped.
     QElapsedTimer m_clock;
-    int m_sentSinceLastByte = 0;
+    int m_sentSinceAnswer = 0;
     qint64 m_firstUnansweredMs = 0;
     int m_unansweredInARow = 0;
     bool m_driveStopped = false;
+    // The run's requests by what they got instead of answers.
+    std::array<int, kGarbageKinds> m_runGarbage{};
+    std::deque<Telegram> m_sentRecently; // the latest attempts: what a stale answer answers
+    QByteArray m_recentBytes; // the tail of what came: the part the decoder still holds
+    quint8 m_receivedXor = 0; // of every byte received: HSP5's BCC over what an attempt got
+    QElapsedTimer m_busyLineSince; // recovery: since when the next request waits on the drive
     std::vector<std::weak_ptr<RequestJobBase>> m_jobs; // running
     bool m_recovering = false;
     quint8 m_lastInvokeId = 0;

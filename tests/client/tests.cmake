@@ -20,6 +20,10 @@ drivedesk_add_test(NAME tst_baudratesearch LABELS unit integration TIMEOUT 120
 drivedesk_add_test(NAME tst_clientsilence LABELS unit integration TIMEOUT 300
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_clientsilence.cpp ${CMAKE_CURRENT_LIST_DIR}/ClientTestSupport.h
     LIBS drivedesk_client drivedesk_bus drivedesk_session drivedesk_translations)
+drivedesk_add_test(NAME tst_clientgarbage LABELS unit integration TIMEOUT 300
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_clientgarbage.cpp ${CMAKE_CURRENT_LIST_DIR}/ClientTestSupport.h
+        ${CMAKE_CURRENT_LIST_DIR}/SpoilingProxy.h
+    LIBS drivedesk_client drivedesk_bus drivedesk_translations)
 drivedesk_add_test(NAME tst_clientidlecheck LABELS unit integration TIMEOUT 120
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_clientidlecheck.cpp ${CMAKE_CURRENT_LIST_DIR}/ClientTestSupport.h
     LIBS drivedesk_client drivedesk_bus drivedesk_translations)

@@ -107,9 +107,10 @@ void MainWindow::onDriveSilentChanged(bool silent)
         const QDateTime now = QDateTime::currentDateTime();
         m_model->setStaleSince(now.toMSecsSinceEpoch());
         m_silenceNotice
-            = tr("The drive is not answering: the connection to %1 is open, but nothing came "
-                 "from the drive since %2. The values shown are the last read and are marked "
-                 "stale. This clears by itself when the drive answers again.")
+            = tr("The drive is not answering: the connection to %1 is open, but no valid answer "
+                 "came from the drive since %2 (nothing at all, or only what cannot be an "
+                 "answer). The values shown are the last read and are marked stale. This clears "
+                 "by itself when the drive answers again.")
                   .arg(RecentConnections::describe(m_session->settings()),
                        now.toString(QStringLiteral("HH:mm:ss")));
         m_notice->showProblem(m_silenceNotice);
