@@ -488,28 +488,16 @@
         <source>Unknown (sent, no answer):</source>
         <translation>Unbekannt (gesendet, keine Antwort):</translation>
     </message>
+    <message>
+        <source>%1: no answer to writing %2, and the drive holds %3: not written</source>
+        <translation>%1: keine Antwort auf das Schreiben von %2, und der Umrichter hält %3: nicht geschrieben</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk</name>
     <message>
         <source>offline records of %1, one a millisecond assumed</source>
         <translation>Offline-Aufzeichnung von %1, eine je Millisekunde angenommen</translation>
-    </message>
-    <message>
-        <source>id</source>
-        <translation>Kennung</translation>
-    </message>
-    <message>
-        <source>name</source>
-        <translation>Name</translation>
-    </message>
-    <message>
-        <source>unit</source>
-        <translation>Einheit</translation>
-    </message>
-    <message>
-        <source>set %1</source>
-        <translation>Satz %1</translation>
     </message>
 </context>
 <context>
@@ -876,6 +864,14 @@
         <source>not read: %1</source>
         <translation>nicht gelesen: %1</translation>
     </message>
+    <message>
+        <source>the connection to the drive was closed</source>
+        <translation>die Verbindung zum Umrichter wurde geschlossen</translation>
+    </message>
+    <message>
+        <source>the connection to the drive was lost (%1): %2</source>
+        <translation>die Verbindung zum Umrichter ging verloren (%1): %2</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ClientWorker</name>
@@ -1017,10 +1013,6 @@
         <translation>keine Antwort innerhalb von %1 ms (Versuch %2 von %3), aufgegeben</translation>
     </message>
     <message>
-        <source>the drive has gone silent: a request was given up after every attempt and nothing came from the drive since</source>
-        <translation>der Umrichter schweigt: eine Anfrage wurde nach allen Versuchen aufgegeben, und seitdem kam nichts vom Umrichter</translation>
-    </message>
-    <message>
         <source>the drive answers again: requests are sent as before</source>
         <translation>der Umrichter antwortet wieder: Anfragen werden wie zuvor gesendet</translation>
     </message>
@@ -1034,6 +1026,52 @@
     <message>
         <source>the drive stopped answering (%1): the requests queued fail, and one request at a time is sent once until the drive answers again</source>
         <translation>der Umrichter antwortet nicht mehr (%1): die wartenden Anfragen schlagen fehl, und bis er wieder antwortet, wird jeweils eine Anfrage einmal gesendet</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n request(s) in a row answered only with answers to an earlier request</source>
+        <translation>
+            <numerusform>%n Anfrage in Folge nur mit Antworten auf eine frühere Anfrage beantwortet</numerusform>
+            <numerusform>%n Anfragen in Folge nur mit Antworten auf eine frühere Anfrage beantwortet</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n request(s) in a row answered only with frames of the wrong length</source>
+        <translation>
+            <numerusform>%n Anfrage in Folge nur mit Telegrammen falscher Länge beantwortet</numerusform>
+            <numerusform>%n Anfragen in Folge nur mit Telegrammen falscher Länge beantwortet</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n request(s) in a row answered only with frames with a wrong checksum</source>
+        <translation>
+            <numerusform>%n Anfrage in Folge nur mit Telegrammen mit falscher Prüfsumme beantwortet</numerusform>
+            <numerusform>%n Anfragen in Folge nur mit Telegrammen mit falscher Prüfsumme beantwortet</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n request(s) in a row answered only with answers to no request sent</source>
+        <translation>
+            <numerusform>%n Anfrage in Folge nur mit Antworten auf keine gesendete Anfrage beantwortet</numerusform>
+            <numerusform>%n Anfragen in Folge nur mit Antworten auf keine gesendete Anfrage beantwortet</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n request(s) in a row answered only with characters the line flagged as broken</source>
+        <translation>
+            <numerusform>%n Anfrage in Folge nur mit Zeichen beantwortet, die die Leitung als gestört meldete</numerusform>
+            <numerusform>%n Anfragen in Folge nur mit Zeichen beantwortet, die die Leitung als gestört meldete</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n request(s) in a row answered only with bytes that never made a telegram</source>
+        <translation>
+            <numerusform>%n Anfrage in Folge nur mit Bytes beantwortet, die nie ein Telegramm ergaben</numerusform>
+            <numerusform>%n Anfragen in Folge nur mit Bytes beantwortet, die nie ein Telegramm ergaben</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the drive has gone silent: a request was given up after every attempt and no valid answer came from the drive since</source>
+        <translation>der Umrichter schweigt: eine Anfrage wurde nach allen Versuchen aufgegeben, und seitdem kam keine gültige Antwort vom Umrichter</translation>
     </message>
 </context>
 <context>
@@ -1194,7 +1232,7 @@
     </message>
     <message>
         <source>defaults of %1</source>
-        <translation>Vorgabewerte von %1</translation>
+        <translation>Vorgabewerte (%1)</translation>
     </message>
     <message>
         <source>%1, set %2</source>
@@ -1203,8 +1241,8 @@
     <message numerus="yes">
         <source>Compared %1 with %2: %n value(s) differ.</source>
         <translation>
-            <numerusform>%1 mit %2 verglichen: %n Wert verschieden.</numerusform>
-            <numerusform>%1 mit %2 verglichen: %n Werte verschieden.</numerusform>
+            <numerusform>Vergleich von A (%1) und B (%2): %n Wert verschieden.</numerusform>
+            <numerusform>Vergleich von A (%1) und B (%2): %n Werte verschieden.</numerusform>
         </translation>
     </message>
     <message>
@@ -1319,6 +1357,10 @@
     <message>
         <source>Nothing written: could not read the file: %1</source>
         <translation>Nichts geschrieben: die Datei konnte nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>A drive read for this comparison is not written to here: open the drive in the editor to change it.</source>
+        <translation>Ein für diesen Vergleich gelesener Umrichter wird hier nicht beschrieben: öffnen Sie den Umrichter im Editor, um ihn zu ändern.</translation>
     </message>
 </context>
 <context>
@@ -2694,10 +2736,6 @@
         <translation>Unvollständig: %1</translation>
     </message>
     <message>
-        <source>The drive is not answering: the connection to %1 is open, but nothing came from the drive since %2. The values shown are the last read and are marked stale. This clears by itself when the drive answers again.</source>
-        <translation>Der Umrichter antwortet nicht: die Verbindung zu %1 ist offen, aber seit %2 kam nichts vom Umrichter. Die angezeigten Werte sind die zuletzt gelesenen und als veraltet markiert. Das verschwindet von selbst, sobald der Umrichter wieder antwortet.</translation>
-    </message>
-    <message>
         <source>The drive is not answering</source>
         <translation>Der Umrichter antwortet nicht</translation>
     </message>
@@ -2767,6 +2805,10 @@
     <message>
         <source>Drive Inf&amp;ormation...</source>
         <translation>Umrichter-Inf&amp;ormationen …</translation>
+    </message>
+    <message>
+        <source>The drive is not answering: the connection to %1 is open, but no valid answer came from the drive since %2 (nothing at all, or only what cannot be an answer). The values shown are the last read and are marked stale. This clears by itself when the drive answers again.</source>
+        <translation>Der Umrichter antwortet nicht: die Verbindung zu %1 ist offen, aber seit %2 kam keine gültige Antwort vom Umrichter (gar nichts, oder nur, was keine Antwort sein kann). Die angezeigten Werte sind die zuletzt gelesenen und als veraltet markiert. Das verschwindet von selbst, sobald der Umrichter wieder antwortet.</translation>
     </message>
 </context>
 <context>
@@ -3044,6 +3086,10 @@
         <source>Changed in the file: %1; save to keep it</source>
         <translation>In der Datei geändert: %1; speichern, um es zu behalten</translation>
     </message>
+    <message>
+        <source>Whether the drive took %1 is unknown: %2</source>
+        <translation>Ob der Umrichter %1 übernommen hat, ist unbekannt: %2</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::PasswordDialog</name>
@@ -3238,10 +3284,6 @@
         <translation>Alle übertragen: Bericht</translation>
     </message>
     <message>
-        <source>The addresses found were written to %1.</source>
-        <translation>Die gefundenen Adressen wurden in %1 geschrieben.</translation>
-    </message>
-    <message>
         <source>No drive would be written to: each is already equal to its file, or cannot take it (see why).</source>
         <translation>In keinen Umrichter würde geschrieben: jeder gleicht schon seiner Datei oder kann sie nicht aufnehmen (siehe Grund).</translation>
     </message>
@@ -3267,6 +3309,22 @@
     <message>
         <source>%1 and %2 read; the compare window shows them side by side.</source>
         <translation>%1 und %2 gelesen; das Vergleichsfenster zeigt sie nebeneinander.</translation>
+    </message>
+    <message>
+        <source>%1. The addresses found were written to %2.</source>
+        <translation>%1. Die gefundenen Adressen wurden in %2 geschrieben.</translation>
+    </message>
+    <message>
+        <source>%1. The plant file was not changed: %2</source>
+        <translation>%1. Die Anlagendatei wurde nicht geändert: %2</translation>
+    </message>
+    <message>
+        <source>%1 as read at %2</source>
+        <translation>%1, gelesen um %2</translation>
+    </message>
+    <message>
+        <source>the editor is connected to this line (%1): disconnect it (Drive &gt; Disconnect) and start again; %2</source>
+        <translation>der Editor ist mit dieser Leitung verbunden (%1): trennen Sie ihn (Umrichter &gt; Trennen) und starten Sie erneut; %2</translation>
     </message>
 </context>
 <context>
@@ -4010,10 +4068,10 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
         <translation>Verbinden Sie sich mit einem Umrichter, um aufzuzeichnen, oder öffnen Sie eine Aufzeichnung.</translation>
     </message>
     <message numerus="yes">
-        <source>%1: %n sample(s)</source>
+        <source>%1: %Ln sample(s)</source>
         <translation>
-            <numerusform>%1: %n Abtastwert</numerusform>
-            <numerusform>%1: %n Abtastwerte</numerusform>
+            <numerusform>%1: %Ln Abtastwert</numerusform>
+            <numerusform>%1: %Ln Abtastwerte</numerusform>
         </translation>
     </message>
     <message>
@@ -4109,17 +4167,17 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
         <translation>%1; in %2</translation>
     </message>
     <message numerus="yes">
-        <source>Recording stopped: %1. The %n sample(s) recorded are kept.</source>
+        <source>Recording stopped: %1. The %Ln sample(s) recorded are kept.</source>
         <translation>
-            <numerusform>Aufzeichnung beendet: %1. Der %n aufgezeichnete Abtastwert bleibt erhalten.</numerusform>
-            <numerusform>Aufzeichnung beendet: %1. Die %n aufgezeichneten Abtastwerte bleiben erhalten.</numerusform>
+            <numerusform>Aufzeichnung beendet: %1. Der %Ln aufgezeichnete Abtastwert bleibt erhalten.</numerusform>
+            <numerusform>Aufzeichnung beendet: %1. Die %Ln aufgezeichneten Abtastwerte bleiben erhalten.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <source>Recorded %n sample(s) at %1 Hz on average; %2 lost, %3 failed.</source>
+        <source>Recorded %Ln sample(s) at %1 Hz on average; %2 lost, %3 failed.</source>
         <translation>
-            <numerusform>%n Abtastwert mit im Mittel %1 Hz aufgezeichnet; %2 verloren, %3 fehlgeschlagen.</numerusform>
-            <numerusform>%n Abtastwerte mit im Mittel %1 Hz aufgezeichnet; %2 verloren, %3 fehlgeschlagen.</numerusform>
+            <numerusform>%Ln Abtastwert mit im Mittel %1 Hz aufgezeichnet; %2 verloren, %3 fehlgeschlagen.</numerusform>
+            <numerusform>%Ln Abtastwerte mit im Mittel %1 Hz aufgezeichnet; %2 verloren, %3 fehlgeschlagen.</numerusform>
         </translation>
     </message>
     <message>
@@ -4173,10 +4231,10 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
         <translation>%1 kann nicht gespeichert werden: %2</translation>
     </message>
     <message numerus="yes">
-        <source>Shot of %n sample(s) around the trigger.</source>
+        <source>Shot of %Ln sample(s) around the trigger.</source>
         <translation>
-            <numerusform>Aufnahme von %n Abtastwert um den Trigger.</numerusform>
-            <numerusform>Aufnahme von %n Abtastwerten um den Trigger.</numerusform>
+            <numerusform>Aufnahme von %Ln Abtastwert um den Trigger.</numerusform>
+            <numerusform>Aufnahme von %Ln Abtastwerten um den Trigger.</numerusform>
         </translation>
     </message>
     <message>
@@ -4214,6 +4272,10 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
     <message>
         <source>The scope recording shown is not saved. Closing DriveDesk loses it.</source>
         <translation>Die gezeigte Scope-Aufzeichnung ist nicht gespeichert. Beim Schließen von DriveDesk geht sie verloren.</translation>
+    </message>
+    <message>
+        <source>the connection went away</source>
+        <translation>die Verbindung ist weg</translation>
     </message>
 </context>
 <context>
@@ -4629,6 +4691,22 @@ Verbindungsdialog.
         <source>the drive holds %1%2</source>
         <translation>der Umrichter enthält %1%2</translation>
     </message>
+    <message>
+        <source>%1 reset%2 unknown: no answer, so whether the drive took it is unknown (%3)</source>
+        <translation>%1 zurückgesetzt%2 unbekannt: keine Antwort, ob der Umrichter es übernommen hat, ist unbekannt (%3)</translation>
+    </message>
+    <message>
+        <source>%1 = %2%3 unknown: no answer, so whether the drive took it is unknown (%4)</source>
+        <translation>%1 = %2%3 unbekannt: keine Antwort, ob der Umrichter den Wert übernommen hat, ist unbekannt (%4)</translation>
+    </message>
+    <message>
+        <source>; its answer was lost, and reading it back showed it taken</source>
+        <translation>; die Antwort ging verloren, das Zurücklesen zeigte den Wert übernommen</translation>
+    </message>
+    <message>
+        <source>; whether the drive took it%1 is unknown: no answer (%2)</source>
+        <translation>; ob der Umrichter den Wert%1 übernommen hat, ist unbekannt: keine Antwort (%2)</translation>
+    </message>
 </context>
 <context>
     <name>FindDrivesJob</name>
@@ -4686,10 +4764,6 @@ Verbindungsdialog.
 </context>
 <context>
     <name>MetadataCache</name>
-    <message>
-        <source>too large (%1 bytes)</source>
-        <translation>zu groß (%1 Bytes)</translation>
-    </message>
     <message>
         <source>not JSON (%1 at byte %2)</source>
         <translation>kein JSON (%1 bei Byte %2)</translation>
@@ -4774,6 +4848,25 @@ Verbindungsdialog.
     </message>
 </context>
 <context>
+    <name>ParameterCsv</name>
+    <message>
+        <source>id</source>
+        <translation>Kennung</translation>
+    </message>
+    <message>
+        <source>name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>set %1</source>
+        <translation>Satz %1</translation>
+    </message>
+</context>
+<context>
     <name>ParameterDocument</name>
     <message>
         <source>expected an object</source>
@@ -4806,14 +4899,6 @@ Verbindungsdialog.
     <message>
         <source>unknown field</source>
         <translation>unbekanntes Feld</translation>
-    </message>
-    <message>
-        <source>cannot read &apos;%1&apos;: %2</source>
-        <translation>„%1“ kann nicht gelesen werden: %2</translation>
-    </message>
-    <message>
-        <source>&apos;%1&apos; is too large for a parameter file (%2 bytes, at most %3)</source>
-        <translation>„%1“ ist zu groß für eine Parameterdatei (%2 Bytes, höchstens %3)</translation>
     </message>
     <message>
         <source>&apos;%1&apos; names %2, not the address %3</source>
@@ -5548,14 +5633,6 @@ Verbindungsdialog.
         <source>empty: a plant has at least one link</source>
         <translation>leer: eine Anlage hat mindestens eine Verbindung</translation>
     </message>
-    <message>
-        <source>cannot read &apos;%1&apos;: %2</source>
-        <translation>„%1“ kann nicht gelesen werden: %2</translation>
-    </message>
-    <message>
-        <source>&apos;%1&apos; is too large for a plant file (%2 bytes, at most %3)</source>
-        <translation>„%1“ ist zu groß für eine Anlagendatei (%2 Bytes, höchstens %3)</translation>
-    </message>
 </context>
 <context>
     <name>Reply</name>
@@ -6204,6 +6281,32 @@ Verbindungsdialog.
             <numerusform>kein Wert für Satz %1 gelesen</numerusform>
             <numerusform>kein Wert für die Sätze %1 gelesen</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>ValueChangeText</name>
+    <message>
+        <source>the drive&apos;s answer cannot be its value: %1</source>
+        <translation>die Antwort des Umrichters kann nicht sein Wert sein: %1</translation>
+    </message>
+</context>
+<context>
+    <name>WholeFile</name>
+    <message>
+        <source>cannot read &apos;%1&apos;: %2</source>
+        <translation>„%1“ kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is too large (%2 bytes, at most %3)</source>
+        <translation>„%1“ ist zu groß (%2 Bytes, höchstens %3)</translation>
+    </message>
+    <message>
+        <source>cannot read &apos;%1&apos;: it is a folder, not a file</source>
+        <translation>„%1“ kann nicht gelesen werden: es ist ein Ordner, keine Datei</translation>
+    </message>
+    <message>
+        <source>cannot read &apos;%1&apos;: it is not a regular file but a device or a pipe, whose reading may never end</source>
+        <translation>„%1“ kann nicht gelesen werden: es ist keine gewöhnliche Datei, sondern ein Gerät oder eine Pipe, deren Lesen nie enden muss</translation>
     </message>
 </context>
 </TS>

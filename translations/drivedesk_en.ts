@@ -488,28 +488,16 @@
         <source>Unknown (sent, no answer):</source>
         <translation>Unknown (sent, no answer):</translation>
     </message>
+    <message>
+        <source>%1: no answer to writing %2, and the drive holds %3: not written</source>
+        <translation>%1: no answer to writing %2, and the drive holds %3: not written</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk</name>
     <message>
         <source>offline records of %1, one a millisecond assumed</source>
         <translation>offline records of %1, one a millisecond assumed</translation>
-    </message>
-    <message>
-        <source>id</source>
-        <translation>id</translation>
-    </message>
-    <message>
-        <source>name</source>
-        <translation>name</translation>
-    </message>
-    <message>
-        <source>unit</source>
-        <translation>unit</translation>
-    </message>
-    <message>
-        <source>set %1</source>
-        <translation>set %1</translation>
     </message>
 </context>
 <context>
@@ -876,6 +864,14 @@
         <source>not read: %1</source>
         <translation>not read: %1</translation>
     </message>
+    <message>
+        <source>the connection to the drive was closed</source>
+        <translation>the connection to the drive was closed</translation>
+    </message>
+    <message>
+        <source>the connection to the drive was lost (%1): %2</source>
+        <translation>the connection to the drive was lost (%1): %2</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ClientWorker</name>
@@ -1017,10 +1013,6 @@
         <translation>no answer within %1 ms (attempt %2 of %3), given up</translation>
     </message>
     <message>
-        <source>the drive has gone silent: a request was given up after every attempt and nothing came from the drive since</source>
-        <translation>the drive has gone silent: a request was given up after every attempt and nothing came from the drive since</translation>
-    </message>
-    <message>
         <source>the drive answers again: requests are sent as before</source>
         <translation>the drive answers again: requests are sent as before</translation>
     </message>
@@ -1034,6 +1026,52 @@
     <message>
         <source>the drive stopped answering (%1): the requests queued fail, and one request at a time is sent once until the drive answers again</source>
         <translation>the drive stopped answering (%1): the requests queued fail, and one request at a time is sent once until the drive answers again</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n request(s) in a row answered only with answers to an earlier request</source>
+        <translation>
+            <numerusform>%n request in a row answered only with answers to an earlier request</numerusform>
+            <numerusform>%n requests in a row answered only with answers to an earlier request</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n request(s) in a row answered only with frames of the wrong length</source>
+        <translation>
+            <numerusform>%n request in a row answered only with frames of the wrong length</numerusform>
+            <numerusform>%n requests in a row answered only with frames of the wrong length</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n request(s) in a row answered only with frames with a wrong checksum</source>
+        <translation>
+            <numerusform>%n request in a row answered only with frames with a wrong checksum</numerusform>
+            <numerusform>%n requests in a row answered only with frames with a wrong checksum</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n request(s) in a row answered only with answers to no request sent</source>
+        <translation>
+            <numerusform>%n request in a row answered only with answers to no request sent</numerusform>
+            <numerusform>%n requests in a row answered only with answers to no request sent</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n request(s) in a row answered only with characters the line flagged as broken</source>
+        <translation>
+            <numerusform>%n request in a row answered only with characters the line flagged as broken</numerusform>
+            <numerusform>%n requests in a row answered only with characters the line flagged as broken</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n request(s) in a row answered only with bytes that never made a telegram</source>
+        <translation>
+            <numerusform>%n request in a row answered only with bytes that never made a telegram</numerusform>
+            <numerusform>%n requests in a row answered only with bytes that never made a telegram</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the drive has gone silent: a request was given up after every attempt and no valid answer came from the drive since</source>
+        <translation>the drive has gone silent: a request was given up after every attempt and no valid answer came from the drive since</translation>
     </message>
 </context>
 <context>
@@ -1319,6 +1357,10 @@
     <message>
         <source>Nothing written: could not read the file: %1</source>
         <translation>Nothing written: could not read the file: %1</translation>
+    </message>
+    <message>
+        <source>A drive read for this comparison is not written to here: open the drive in the editor to change it.</source>
+        <translation>A drive read for this comparison is not written to here: open the drive in the editor to change it.</translation>
     </message>
 </context>
 <context>
@@ -2694,10 +2736,6 @@
         <translation>Incomplete: %1</translation>
     </message>
     <message>
-        <source>The drive is not answering: the connection to %1 is open, but nothing came from the drive since %2. The values shown are the last read and are marked stale. This clears by itself when the drive answers again.</source>
-        <translation>The drive is not answering: the connection to %1 is open, but nothing came from the drive since %2. The values shown are the last read and are marked stale. This clears by itself when the drive answers again.</translation>
-    </message>
-    <message>
         <source>The drive is not answering</source>
         <translation>The drive is not answering</translation>
     </message>
@@ -2767,6 +2805,10 @@
     <message>
         <source>Drive Inf&amp;ormation...</source>
         <translation>Drive Inf&amp;ormation...</translation>
+    </message>
+    <message>
+        <source>The drive is not answering: the connection to %1 is open, but no valid answer came from the drive since %2 (nothing at all, or only what cannot be an answer). The values shown are the last read and are marked stale. This clears by itself when the drive answers again.</source>
+        <translation>The drive is not answering: the connection to %1 is open, but no valid answer came from the drive since %2 (nothing at all, or only what cannot be an answer). The values shown are the last read and are marked stale. This clears by itself when the drive answers again.</translation>
     </message>
 </context>
 <context>
@@ -3044,6 +3086,10 @@
         <source>Changed in the file: %1; save to keep it</source>
         <translation>Changed in the file: %1; save to keep it</translation>
     </message>
+    <message>
+        <source>Whether the drive took %1 is unknown: %2</source>
+        <translation>Whether the drive took %1 is unknown: %2</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::PasswordDialog</name>
@@ -3238,10 +3284,6 @@
         <translation>Download All: Report</translation>
     </message>
     <message>
-        <source>The addresses found were written to %1.</source>
-        <translation>The addresses found were written to %1.</translation>
-    </message>
-    <message>
         <source>No drive would be written to: each is already equal to its file, or cannot take it (see why).</source>
         <translation>No drive would be written to: each is already equal to its file, or cannot take it (see why).</translation>
     </message>
@@ -3267,6 +3309,22 @@
     <message>
         <source>%1 and %2 read; the compare window shows them side by side.</source>
         <translation>%1 and %2 read; the compare window shows them side by side.</translation>
+    </message>
+    <message>
+        <source>%1. The addresses found were written to %2.</source>
+        <translation>%1. The addresses found were written to %2.</translation>
+    </message>
+    <message>
+        <source>%1. The plant file was not changed: %2</source>
+        <translation>%1. The plant file was not changed: %2</translation>
+    </message>
+    <message>
+        <source>%1 as read at %2</source>
+        <translation>%1 as read at %2</translation>
+    </message>
+    <message>
+        <source>the editor is connected to this line (%1): disconnect it (Drive &gt; Disconnect) and start again; %2</source>
+        <translation>the editor is connected to this line (%1): disconnect it (Drive &gt; Disconnect) and start again; %2</translation>
     </message>
 </context>
 <context>
@@ -4010,10 +4068,10 @@ Home: the whole recording; End: follow the newest samples; A: fit the values; Sp
         <translation>Connect to a drive to record, or open a recording.</translation>
     </message>
     <message numerus="yes">
-        <source>%1: %n sample(s)</source>
+        <source>%1: %Ln sample(s)</source>
         <translation>
-            <numerusform>%1: %n sample</numerusform>
-            <numerusform>%1: %n samples</numerusform>
+            <numerusform>%1: %Ln sample</numerusform>
+            <numerusform>%1: %Ln samples</numerusform>
         </translation>
     </message>
     <message>
@@ -4109,17 +4167,17 @@ Home: the whole recording; End: follow the newest samples; A: fit the values; Sp
         <translation>%1; into %2</translation>
     </message>
     <message numerus="yes">
-        <source>Recording stopped: %1. The %n sample(s) recorded are kept.</source>
+        <source>Recording stopped: %1. The %Ln sample(s) recorded are kept.</source>
         <translation>
-            <numerusform>Recording stopped: %1. The %n sample recorded is kept.</numerusform>
-            <numerusform>Recording stopped: %1. The %n samples recorded are kept.</numerusform>
+            <numerusform>Recording stopped: %1. The %Ln sample recorded is kept.</numerusform>
+            <numerusform>Recording stopped: %1. The %Ln samples recorded are kept.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <source>Recorded %n sample(s) at %1 Hz on average; %2 lost, %3 failed.</source>
+        <source>Recorded %Ln sample(s) at %1 Hz on average; %2 lost, %3 failed.</source>
         <translation>
-            <numerusform>Recorded %n sample at %1 Hz on average; %2 lost, %3 failed.</numerusform>
-            <numerusform>Recorded %n samples at %1 Hz on average; %2 lost, %3 failed.</numerusform>
+            <numerusform>Recorded %Ln sample at %1 Hz on average; %2 lost, %3 failed.</numerusform>
+            <numerusform>Recorded %Ln samples at %1 Hz on average; %2 lost, %3 failed.</numerusform>
         </translation>
     </message>
     <message>
@@ -4173,10 +4231,10 @@ Home: the whole recording; End: follow the newest samples; A: fit the values; Sp
         <translation>Cannot save %1: %2</translation>
     </message>
     <message numerus="yes">
-        <source>Shot of %n sample(s) around the trigger.</source>
+        <source>Shot of %Ln sample(s) around the trigger.</source>
         <translation>
-            <numerusform>Shot of %n sample around the trigger.</numerusform>
-            <numerusform>Shot of %n samples around the trigger.</numerusform>
+            <numerusform>Shot of %Ln sample around the trigger.</numerusform>
+            <numerusform>Shot of %Ln samples around the trigger.</numerusform>
         </translation>
     </message>
     <message>
@@ -4214,6 +4272,10 @@ Home: the whole recording; End: follow the newest samples; A: fit the values; Sp
     <message>
         <source>The scope recording shown is not saved. Closing DriveDesk loses it.</source>
         <translation>The scope recording shown is not saved. Closing DriveDesk loses it.</translation>
+    </message>
+    <message>
+        <source>the connection went away</source>
+        <translation>the connection went away</translation>
     </message>
 </context>
 <context>
@@ -4629,6 +4691,22 @@ dialog.
         <source>the drive holds %1%2</source>
         <translation>the drive holds %1%2</translation>
     </message>
+    <message>
+        <source>%1 reset%2 unknown: no answer, so whether the drive took it is unknown (%3)</source>
+        <translation>%1 reset%2 unknown: no answer, so whether the drive took it is unknown (%3)</translation>
+    </message>
+    <message>
+        <source>%1 = %2%3 unknown: no answer, so whether the drive took it is unknown (%4)</source>
+        <translation>%1 = %2%3 unknown: no answer, so whether the drive took it is unknown (%4)</translation>
+    </message>
+    <message>
+        <source>; its answer was lost, and reading it back showed it taken</source>
+        <translation>; its answer was lost, and reading it back showed it taken</translation>
+    </message>
+    <message>
+        <source>; whether the drive took it%1 is unknown: no answer (%2)</source>
+        <translation>; whether the drive took it%1 is unknown: no answer (%2)</translation>
+    </message>
 </context>
 <context>
     <name>FindDrivesJob</name>
@@ -4686,10 +4764,6 @@ dialog.
 </context>
 <context>
     <name>MetadataCache</name>
-    <message>
-        <source>too large (%1 bytes)</source>
-        <translation>too large (%1 bytes)</translation>
-    </message>
     <message>
         <source>not JSON (%1 at byte %2)</source>
         <translation>not JSON (%1 at byte %2)</translation>
@@ -4774,6 +4848,25 @@ dialog.
     </message>
 </context>
 <context>
+    <name>ParameterCsv</name>
+    <message>
+        <source>id</source>
+        <translation>id</translation>
+    </message>
+    <message>
+        <source>name</source>
+        <translation>name</translation>
+    </message>
+    <message>
+        <source>unit</source>
+        <translation>unit</translation>
+    </message>
+    <message>
+        <source>set %1</source>
+        <translation>set %1</translation>
+    </message>
+</context>
+<context>
     <name>ParameterDocument</name>
     <message>
         <source>expected an object</source>
@@ -4806,14 +4899,6 @@ dialog.
     <message>
         <source>unknown field</source>
         <translation>unknown field</translation>
-    </message>
-    <message>
-        <source>cannot read &apos;%1&apos;: %2</source>
-        <translation>cannot read &apos;%1&apos;: %2</translation>
-    </message>
-    <message>
-        <source>&apos;%1&apos; is too large for a parameter file (%2 bytes, at most %3)</source>
-        <translation>&apos;%1&apos; is too large for a parameter file (%2 bytes, at most %3)</translation>
     </message>
     <message>
         <source>&apos;%1&apos; names %2, not the address %3</source>
@@ -5548,14 +5633,6 @@ dialog.
         <source>empty: a plant has at least one link</source>
         <translation>empty: a plant has at least one link</translation>
     </message>
-    <message>
-        <source>cannot read &apos;%1&apos;: %2</source>
-        <translation>cannot read &apos;%1&apos;: %2</translation>
-    </message>
-    <message>
-        <source>&apos;%1&apos; is too large for a plant file (%2 bytes, at most %3)</source>
-        <translation>&apos;%1&apos; is too large for a plant file (%2 bytes, at most %3)</translation>
-    </message>
 </context>
 <context>
     <name>Reply</name>
@@ -6204,6 +6281,32 @@ dialog.
             <numerusform>no value read for set %1</numerusform>
             <numerusform>no value read for sets %1</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>ValueChangeText</name>
+    <message>
+        <source>the drive&apos;s answer cannot be its value: %1</source>
+        <translation>the drive&apos;s answer cannot be its value: %1</translation>
+    </message>
+</context>
+<context>
+    <name>WholeFile</name>
+    <message>
+        <source>cannot read &apos;%1&apos;: %2</source>
+        <translation>cannot read &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is too large (%2 bytes, at most %3)</source>
+        <translation>&apos;%1&apos; is too large (%2 bytes, at most %3)</translation>
+    </message>
+    <message>
+        <source>cannot read &apos;%1&apos;: it is a folder, not a file</source>
+        <translation>cannot read &apos;%1&apos;: it is a folder, not a file</translation>
+    </message>
+    <message>
+        <source>cannot read &apos;%1&apos;: it is not a regular file but a device or a pipe, whose reading may never end</source>
+        <translation>cannot read &apos;%1&apos;: it is not a regular file but a device or a pipe, whose reading may never end</translation>
     </message>
 </context>
 </TS>
