@@ -72,8 +72,9 @@ bool DriveScanner::leaveLiveValueUnconfirmed(quint8 page, quint8 number, const R
         if (sets & (1u << set))
             parameter.description.values[std::size_t(set)].reset();
     }
-    parameter.errors.append(tr("value: not confirmed: the drive changes it by itself, and on a "
-                               "line with errors no two reads agreed"));
+    parameter.errors.append(tr("%1: not confirmed: the drive changes it by itself, and on a line "
+                               "with errors no two reads agreed")
+                                .arg(tr("value")));
     return true;
 }
 
