@@ -12,6 +12,7 @@
 #include <QTcpSocket>
 #include <QTimer>
 
+#include <deque>
 #include <memory>
 #include <utility>
 
@@ -36,6 +37,9 @@ public:
         EndlessRandom, // answers dropped; random bytes at the line's pace, without end
         EndlessDigits, // answers dropped; STX, then digits at the line's pace, without end
         EndlessAck, // answers dropped; "1 ACK" at the line's pace, over and over
+        // The answers to writes lost on their way back, every attempt's: the drive took the
+        // value, its word on it never came. Every other answer passes.
+        WritesUnanswered,
     };
 
     SpoilingProxy(Protocol protocol, quint16 drivePort, Spoil spoil, QObject *parent = nullptr)
@@ -47,6 +51,7 @@ public:
     {
         if (protocol == Protocol::Hsp5)
             m_decoder = makeCodec(protocol)->makeDecoder(Role::Operator);
+        m_requests = makeCodec(protocol)->makeDecoder(Role::Drive);
         m_stream.setInterval(kStreamIntervalMs);
         connect(&m_stream, &QTimer::timeout, this, &SpoilingProxy::streamOn);
         connect(&m_server, &QTcpServer::newConnection, this, &SpoilingProxy::accept);
@@ -104,6 +109,12 @@ private:
                     [this] { fromDrive(m_drive->readAll()); });
             connect(m_client, &QTcpSocket::readyRead, this, [this] {
                 const QByteArray bytes = m_client->readAll();
+                // The drive answers in the order it was asked: which answer is a write's.
+                m_requests->feed(bytes);
+                while (const std::optional<Decoded> item = m_requests->next()) {
+                    if (const auto *request = std::get_if<Telegram>(&*item))
+                        m_writes.push_back(request->isWrite());
+                }
                 if (m_drive->state() == QAbstractSocket::ConnectedState)
                     m_drive->write(bytes);
                 else
@@ -129,6 +140,14 @@ private:
             if (answer.isEmpty())
                 return;
             ++m_answers;
+            const bool toWrite = !m_writes.empty() && m_writes.front();
+            if (!m_writes.empty())
+                m_writes.pop_front();
+            if (m_spoil == Spoil::WritesUnanswered) {
+                if (!toWrite)
+                    toClient(answer);
+                continue;
+            }
             toClient(spoiled(answer));
         }
     }
@@ -170,6 +189,7 @@ private:
     {
         switch (m_spoil) {
         case Spoil::None:
+        case Spoil::WritesUnanswered: // decided in fromDrive()
             return answer;
         case Spoil::Doubled:
             return answer + answer;
@@ -278,6 +298,8 @@ private:
     Spoil m_spoil;
     QRandomGenerator m_random;
     std::unique_ptr<FrameDecoder> m_decoder; // HSP5: where a telegram ends
+    std::unique_ptr<FrameDecoder> m_requests; // the requests, as the drive reads them
+    std::deque<bool> m_writes; // per request not yet answered: whether it is a write
     QTcpServer m_server;
     QPointer<QTcpSocket> m_client;
     QPointer<QTcpSocket> m_drive;

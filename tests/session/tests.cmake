@@ -15,6 +15,11 @@ drivedesk_add_test(NAME tst_valuechange LABELS unit
 drivedesk_add_test(NAME tst_download LABELS integration TIMEOUT 300
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_download.cpp
     LIBS drivedesk_session drivedesk_bus)
+# A write whose answer is lost on the line, through a proxy in front of the simulated drive.
+drivedesk_add_test(NAME tst_lostanswers LABELS integration TIMEOUT 300
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_lostanswers.cpp
+        ${CMAKE_CURRENT_LIST_DIR}/../client/SpoilingProxy.h
+    LIBS drivedesk_session drivedesk_bus)
 
 # Scope recording: channels assigned and read back, samples in order with the drive's values,
 # the rate limit, a lost link and a silent drive, over HSP5 and DIN66019II.

@@ -1,0 +1,95 @@
+#include "../client/ClientTestSupport.h"
+#include "../client/SpoilingProxy.h"
+
+#include "bus/SimulatedBus.h"
+#include "parameters/DriveDescription.h"
+#include "session/EditText.h"
+#include "session/ValueEdits.h"
+
+using namespace DriveDesk;
+using namespace DriveDesk::ClientTest;
+
+namespace {
+
+// op.11 as the drive describes it: 0..4000 1/min, 8 sets.
+ParameterDescription maxSpeedForward()
+{
+    ParameterDescription parameter;
+    parameter.address = kMaxSpeedForward;
+    parameter.name = QStringLiteral("Maximum speed forward");
+    parameter.minimum = 0;
+    parameter.maximum = 4000;
+    parameter.properties1 = 1u << 11; // set-programmable
+    parameter.scaling = DisplayScalingData{kMaxSpeedForward, 1, 1, 0, 0};
+    return parameter;
+}
+
+} // namespace
+
+// A drive that takes a write whose answer never reaches DriveDesk (lost on the line, every
+// attempt's): the edit says what the drive holds, found by reading it, never "not written".
+class TestLostAnswers : public QObject
+{
+    Q_OBJECT
+private slots:
+    void aWriteTheDriveTookIsWrittenThoughItsAnswerWasLost_data()
+    {
+        QTest::addColumn<Protocol>("protocol");
+        QTest::newRow("hsp5") << Protocol::Hsp5;
+        QTest::newRow("din66019ii") << Protocol::Din66019II;
+    }
+
+    void aWriteTheDriveTookIsWrittenThoughItsAnswerWasLost()
+    {
+        QFETCH(Protocol, protocol);
+        SimulatorServer server(protocol, fast());
+        QString error;
+        QVERIFY2(server.listenTcp(QStringLiteral("127.0.0.1"), 0, &error), qPrintable(error));
+        SpoilingProxy proxy(protocol, server.tcpPort(), SpoilingProxy::Spoil::None);
+        QVERIFY2(proxy.listen(&error), qPrintable(error));
+        Session s(proxy.settings());
+        QVERIFY(s.connected());
+
+        proxy.setSpoil(SpoilingProxy::Spoil::WritesUnanswered);
+        ValueEdits edits(s.client.get());
+        const ParameterDescription parameter = maxSpeedForward();
+        std::optional<EditOutcome> outcome;
+        edits.write(parameter, 0x04, 2345, [&outcome](const EditOutcome &o) { outcome = o; });
+        QTRY_VERIFY_WITH_TIMEOUT(outcome, kWaitMs);
+        const QString said = EditText(QStringLiteral("op.11"), &parameter).outcome(*outcome);
+        QVERIFY2(outcome->complete(), qPrintable(said));
+        QCOMPARE(outcome->confirmedByReadingMask, quint8(0x04));
+        QVERIFY2(said.startsWith(QStringLiteral("op.11 = 2345 written (set 2)"))
+                     && said.contains(QStringLiteral("reading it back showed it taken")),
+                 qPrintable(said));
+
+        // What the drive holds, asked with every answer passing again.
+        proxy.setSpoil(SpoilingProxy::Spoil::None);
+        QCOMPARE(valueOf(s.call(s.client->readValue(kMaxSpeedForward, 0x04))), 2345);
+    }
+
+    // The line freezes once the write is on its way: neither the write nor the read after it
+    // is answered. Whether the drive took it is unknown, and said so.
+    void aWriteWhoseSetCannotBeReadIsUnknown()
+    {
+        SimulatorServer server(Protocol::Din66019II, fast());
+        QString error;
+        QVERIFY2(server.listenTcp(QStringLiteral("127.0.0.1"), 0, &error), qPrintable(error));
+        Session s(tcpTo(server, Protocol::Din66019II));
+        QVERIFY(s.connected());
+        ValueEdits edits(s.client.get());
+        const ParameterDescription parameter = maxSpeedForward();
+        server.bus().setSilent(true);
+        std::optional<EditOutcome> outcome;
+        edits.write(parameter, 0x04, 2345, [&outcome](const EditOutcome &o) { outcome = o; });
+        QTRY_VERIFY_WITH_TIMEOUT(outcome, kWaitMs);
+        const QString said = EditText(QStringLiteral("op.11"), &parameter).outcome(*outcome);
+        QVERIFY(outcome->anyUnknown());
+        QVERIFY2(said.startsWith(QStringLiteral("op.11 = 2345 (set 2) unknown: no answer"))
+                     && !said.contains(QStringLiteral("not written")),
+                 qPrintable(said));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestLostAnswers)
+#include "tst_lostanswers.moc"
