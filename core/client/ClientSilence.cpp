@@ -12,7 +12,8 @@
 // garbage most of the run's requests got (Garbage).
 //
 // A drive nobody asks anything can freeze unnoticed. With ClientOptions::idleCheckMs, once
-// nothing was sent or received for that long, one cheap request (the one the drive search asks)
+// nothing was sent or received for that long, one cheap request (a read of the parameter
+// DriveClient::setIdleCheckAddress() names, else the drive search's)
 // checks the drive; its timeout counts like any request's, so a silent drive is reported within
 // idleSilenceLimitMs(). It goes out only when nothing is queued or in flight, so it never stands
 // in front of a request of the user's: HSP5 sends one alongside it at once; on DIN66019(II),
@@ -271,7 +272,8 @@ void ClientWorker::checkIdleLine()
         return armIdleCheck();
     // Its answer, or its silence, speaks through noteAnswered() and complete(): nothing to do
     // here.
-    submitRequest(ValueRequests::presence(m_settings.protocol), {}, [](const Reply &, bool) {});
+    submitRequest(ValueRequests::presence(m_settings.protocol, m_idleCheckAddress), {},
+                  [](const Reply &, bool) {});
 }
 
 void ClientWorker::stopAnswering()

@@ -41,6 +41,7 @@ public:
     void disconnectFromDrive();
     // Every queued and in-flight request finishes as Cancelled.
     void cancelAll();
+    void setIdleCheckAddress(quint16 address) { m_idleCheckAddress = address; }
 
     void submit(const Telegram &request, std::function<void(const Reply &)> done) override;
     void cancelPending() override { cancelAll(); }
@@ -187,6 +188,7 @@ private:
     QTimer *m_deadlineTimer = nullptr;
     QTimer *m_quietTimer = nullptr; // recovery: wakes the queue once the line is quiet
     QTimer *m_idleTimer = nullptr;  // the idle line's check; none without idleCheckMs
+    quint16 m_idleCheckAddress = 0; // what it reads
     QElapsedTimer m_sinceLastByte;
     QElapsedTimer m_sinceLastAnswer; // valid: matched to its request
     QElapsedTimer m_sinceLastSend;

@@ -107,6 +107,13 @@ QFuture<Reply> DriveClient::send(const Telegram &request)
     return future;
 }
 
+void DriveClient::setIdleCheckAddress(quint16 address)
+{
+    QMetaObject::invokeMethod(
+        m_worker, [worker = m_worker, address] { worker->setIdleCheckAddress(address); },
+        Qt::QueuedConnection);
+}
+
 QFuture<Reply> DriveClient::readValue(quint16 address, quint8 setMask)
 {
     return send(ValueRequests::read(address, setMask));

@@ -112,6 +112,10 @@ public:
     // Ends the running scan with what it has read so far: its future gets the description,
     // incompleteReason "cancelled" (cancelling the future instead gives no result at all).
     void stopScan();
+    // The parameter the idle line's check reads (ClientOptions::idleCheckMs): one the drive has,
+    // once it is known, so that the check's answer is a value, not a refusal every few seconds
+    // in the telegram monitor. Until then, and after a new connection, address 0000h.
+    void setIdleCheckAddress(quint16 address);
 
     // Runs a job of many requests in the client's thread, on the client's queue, and returns
     // its future. Cancelling the future stops the job.

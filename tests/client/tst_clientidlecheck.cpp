@@ -127,6 +127,38 @@ private slots:
         QCOMPARE(replyOf(read).status, Reply::Status::Ok);
     }
 
+    // Told a parameter the drive has, the check reads it and is answered with its value: no
+    // refusal ("address invalid") in the monitor every two seconds.
+    void theCheckReadsTheParameterItIsGiven()
+    {
+        SimulatorServer server(Protocol::Hsp5, fast());
+        QString error;
+        QVERIFY2(server.listenTcp(QStringLiteral("127.0.0.1"), 0, &error), qPrintable(error));
+        Session s(tcpTo(server, Protocol::Hsp5), checkingIdleLine(300));
+        QVERIFY(s.connected());
+        s.client->setIdleCheckAddress(kMaxSpeedForward);
+        const auto answers = [&s] {
+            const auto decoder = makeCodec(Protocol::Hsp5)->makeDecoder(Role::Operator);
+            QList<Telegram> telegrams;
+            for (const TrafficRecord &record : s.records()) {
+                if (record.kind != TrafficRecord::Kind::Received)
+                    continue;
+                decoder->feed(record.bytes);
+                while (const std::optional<Decoded> item = decoder->next()) {
+                    if (const auto *telegram = std::get_if<Telegram>(&*item))
+                        telegrams << *telegram;
+                }
+            }
+            return telegrams;
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(answers().size() >= 2, kWaitMs);
+        const Telegram last = answers().constLast();
+        QCOMPARE(last.ack, Ack::Ok);
+        const auto *value = last.as<ParameterValue>();
+        QVERIFY(value);
+        QCOMPARE(value->value, kMaxSpeedDefault);
+    }
+
     // Without the option the line stays as quiet as the caller leaves it.
     void withoutTheOptionNothingIsSentUnasked()
     {

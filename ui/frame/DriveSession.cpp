@@ -3,6 +3,7 @@
 #include "bus/LinkFactory.h"
 #include "client/WhenFinished.h"
 #include "model/ParameterModel.h"
+#include "session/ValueReads.h"
 
 namespace DriveDesk {
 
@@ -137,6 +138,11 @@ void DriveSession::onScanFinished()
         m_setPointer = address(kSetPointerNumber);
     }
     m_model->setDescription(drive);
+    // The idle line's check reads a value the drive has, not address 0000h, which a drive
+    // without it refuses every few seconds in the telegram monitor.
+    const QList<ValueRead> readable = readableValues(drive, m_model->passwordLevel());
+    if (!readable.isEmpty())
+        m_client->setIdleCheckAddress(readable.constFirst().address);
     m_described = true;
     m_incompleteReason = drive.incompleteReason;
     emit described(drive);
