@@ -1,5 +1,6 @@
 #pragma once
 
+#include "bus/SimulatorServer.h"
 #include "link/ConnectionSettings.h"
 #include "protocol/Codec.h"
 #include "protocol/din/DinCharacters.h"
@@ -64,6 +65,9 @@ public:
         *error = m_server.errorString();
         return false;
     }
+
+    // Where the drive's server is, when it was not known at construction.
+    void setDrivePort(quint16 port) { m_drivePort = port; }
 
     // A client's way to the drive through the proxy.
     ConnectionSettings settings() const
@@ -294,7 +298,7 @@ private:
     }
 
     const Protocol m_protocol;
-    const quint16 m_drivePort;
+    quint16 m_drivePort;
     Spoil m_spoil;
     QRandomGenerator m_random;
     std::unique_ptr<FrameDecoder> m_decoder; // HSP5: where a telegram ends
@@ -309,6 +313,28 @@ private:
     QTimer m_stream;
     qint64 m_streamed = 0;
     int m_answers = 0;
+};
+
+// The simulated drive behind its TCP server, and the proxy in front of it: what a test of a
+// spoilt line starts with.
+struct ProxiedDrive
+{
+    SimulatorServer server;
+    SpoilingProxy proxy;
+
+    ProxiedDrive(Protocol protocol, const SimulationOptions &options, SpoilingProxy::Spoil spoil)
+        : server(protocol, options)
+        , proxy(protocol, 0, spoil)
+    {}
+
+    // Both listening on loopback; false with the reason when either cannot.
+    bool listen(QString *error)
+    {
+        if (!server.listenTcp(QStringLiteral("127.0.0.1"), 0, error))
+            return false;
+        proxy.setDrivePort(server.tcpPort());
+        return proxy.listen(error);
+    }
 };
 
 } // namespace DriveDesk::ClientTest

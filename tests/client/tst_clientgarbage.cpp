@@ -114,12 +114,10 @@ private slots:
         QFETCH(Protocol, protocol);
         QFETCH(Spoil, spoil);
         QFETCH(QString, cameInstead);
-        SimulatorServer server(protocol, fast());
+        ProxiedDrive line(protocol, fast(), spoil);
         QString error;
-        QVERIFY2(server.listenTcp(QStringLiteral("127.0.0.1"), 0, &error), qPrintable(error));
-        SpoilingProxy proxy(protocol, server.tcpPort(), spoil);
-        QVERIFY2(proxy.listen(&error), qPrintable(error));
-        Session s(proxy.settings());
+        QVERIFY2(line.listen(&error), qPrintable(error));
+        Session s(line.proxy.settings());
         QVERIFY(s.connected());
         QSignalSpy stopped(s.client.get(), &DriveClient::driveStoppedAnswering);
 
@@ -179,12 +177,10 @@ private slots:
         QFETCH(Protocol, protocol);
         QFETCH(Spoil, spoil);
         QFETCH(QString, cameInstead);
-        SimulatorServer server(protocol, fast());
+        ProxiedDrive line(protocol, fast(), spoil);
         QString error;
-        QVERIFY2(server.listenTcp(QStringLiteral("127.0.0.1"), 0, &error), qPrintable(error));
-        SpoilingProxy proxy(protocol, server.tcpPort(), spoil);
-        QVERIFY2(proxy.listen(&error), qPrintable(error));
-        Session s(proxy.settings());
+        QVERIFY2(line.listen(&error), qPrintable(error));
+        Session s(line.proxy.settings());
         QVERIFY(s.connected());
         QSignalSpy stopped(s.client.get(), &DriveClient::driveStoppedAnswering);
 
@@ -220,12 +216,10 @@ private slots:
     void aValidAnswerEndsTheStop()
     {
         QFETCH(Protocol, protocol);
-        SimulatorServer server(protocol, fast());
+        ProxiedDrive line(protocol, fast(), Spoil::EndlessRandom);
         QString error;
-        QVERIFY2(server.listenTcp(QStringLiteral("127.0.0.1"), 0, &error), qPrintable(error));
-        SpoilingProxy proxy(protocol, server.tcpPort(), Spoil::EndlessRandom);
-        QVERIFY2(proxy.listen(&error), qPrintable(error));
-        Session s(proxy.settings());
+        QVERIFY2(line.listen(&error), qPrintable(error));
+        Session s(line.proxy.settings());
         QVERIFY(s.connected());
         QSignalSpy silence(s.client.get(), &DriveClient::driveSilentChanged);
 
@@ -241,7 +235,7 @@ private slots:
         QVERIFY(s.client->isDriveSilent());
         QCOMPARE(silence.size(), 1);
 
-        proxy.setSpoil(Spoil::None);
+        line.proxy.setSpoil(Spoil::None);
         QTest::qWait(100); // what the stream still had on its way arrives first
         const Reply back = s.call(s.client->readValue(kMotorVoltage, 1));
         QVERIFY2(back.ok(), qPrintable(back.message()));
@@ -258,12 +252,10 @@ private slots:
     void doubledAnswersAreStillRead()
     {
         QFETCH(Protocol, protocol);
-        SimulatorServer server(protocol, fast());
+        ProxiedDrive line(protocol, fast(), Spoil::Doubled);
         QString error;
-        QVERIFY2(server.listenTcp(QStringLiteral("127.0.0.1"), 0, &error), qPrintable(error));
-        SpoilingProxy proxy(protocol, server.tcpPort(), Spoil::Doubled);
-        QVERIFY2(proxy.listen(&error), qPrintable(error));
-        Session s(proxy.settings());
+        QVERIFY2(line.listen(&error), qPrintable(error));
+        Session s(line.proxy.settings());
         QVERIFY(s.connected());
         QSignalSpy stopped(s.client.get(), &DriveClient::driveStoppedAnswering);
 
@@ -282,7 +274,7 @@ private slots:
             QVERIFY2(reply.ok(), qPrintable(describeReply(reply)));
             QCOMPARE(valueOf(reply), expectedFor(i).value);
         }
-        QVERIFY(proxy.answersSeen() >= kDoubledReads);
+        QVERIFY(line.proxy.answersSeen() >= kDoubledReads);
         QCOMPARE(stopped.size(), 0);
         QVERIFY(!s.client->isDriveSilent());
     }

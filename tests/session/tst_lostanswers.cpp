@@ -42,15 +42,13 @@ private slots:
     void aWriteTheDriveTookIsWrittenThoughItsAnswerWasLost()
     {
         QFETCH(Protocol, protocol);
-        SimulatorServer server(protocol, fast());
+        ProxiedDrive line(protocol, fast(), SpoilingProxy::Spoil::None);
         QString error;
-        QVERIFY2(server.listenTcp(QStringLiteral("127.0.0.1"), 0, &error), qPrintable(error));
-        SpoilingProxy proxy(protocol, server.tcpPort(), SpoilingProxy::Spoil::None);
-        QVERIFY2(proxy.listen(&error), qPrintable(error));
-        Session s(proxy.settings());
+        QVERIFY2(line.listen(&error), qPrintable(error));
+        Session s(line.proxy.settings());
         QVERIFY(s.connected());
 
-        proxy.setSpoil(SpoilingProxy::Spoil::WritesUnanswered);
+        line.proxy.setSpoil(SpoilingProxy::Spoil::WritesUnanswered);
         ValueEdits edits(s.client.get());
         const ParameterDescription parameter = maxSpeedForward();
         std::optional<EditOutcome> outcome;
@@ -64,7 +62,7 @@ private slots:
                  qPrintable(said));
 
         // What the drive holds, asked with every answer passing again.
-        proxy.setSpoil(SpoilingProxy::Spoil::None);
+        line.proxy.setSpoil(SpoilingProxy::Spoil::None);
         QCOMPARE(valueOf(s.call(s.client->readValue(kMaxSpeedForward, 0x04))), 2345);
     }
 
