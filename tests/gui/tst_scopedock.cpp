@@ -515,6 +515,16 @@ private slots:
         QVERIFY(visible.fromMs <= shot.firstTime() && visible.toMs >= shot.lastTime());
         QVERIFY2(status(*dock).contains(QStringLiteral("Shot")), qPrintable(status(*dock)));
 
+        // Another shot while this one is not saved: the question is titled after what was
+        // asked for (it said "Record").
+        action(*dock, "scopeTriggerAction")->trigger();
+        QMessageBox *question = nullptr;
+        QTRY_VERIFY((question = shownQuestion(*dock)) != nullptr);
+        QCOMPARE(question->windowTitle(), QStringLiteral("Single Shot"));
+        question->button(QMessageBox::Cancel)->click();
+        QTRY_VERIFY(!shownQuestion(*dock));
+        QVERIFY(!dock->isRecording());
+
         QTemporaryDir dir;
         const QString csv = dir.filePath(QStringLiteral("shot.csv"));
         QString error;

@@ -40,7 +40,8 @@ void ScopeDock::startRecording()
     const bool shot = m_triggerAction->isChecked();
     m_triggerAction->setChecked(false);
     updateActions();
-    confirmReplacing(tr("Record"),
+    // Titled after what was asked for: Record, or a single shot (armed by its own button).
+    confirmReplacing(shot ? m_triggerAction->text().remove(QLatin1Char('&')) : tr("Record"),
                      tr("The recording shown is not saved. A new recording replaces it."),
                      [this, shot] {
                          m_triggerAction->setChecked(shot);
