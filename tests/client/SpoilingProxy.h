@@ -58,6 +58,17 @@ public:
         connect(&m_server, &QTcpServer::newConnection, this, &SpoilingProxy::accept);
     }
 
+    ~SpoilingProxy() override
+    {
+        // The sockets go with the server member and the QObject base, after the members their
+        // slots use (the stream's timer): nothing of theirs may reach this object any more.
+        if (m_client)
+            m_client->disconnect(this);
+        if (m_drive)
+            m_drive->disconnect(this);
+        m_stream.stop();
+    }
+
     bool listen(QString *error)
     {
         if (m_server.listen(QHostAddress::LocalHost, 0))
