@@ -140,9 +140,13 @@ void DriveSession::onScanFinished()
     m_model->setDescription(drive);
     // The idle line's check reads a value the drive has, not address 0000h, which a drive
     // without it refuses every few seconds in the telegram monitor.
-    const QList<ValueRead> readable = readableValues(drive, m_model->passwordLevel());
-    if (!readable.isEmpty())
-        m_client->setIdleCheckAddress(readable.constFirst().address);
+    for (const GroupDescription &group : drive.groups) {
+        const QList<ValueRead> readable = readableValues(group, m_model->passwordLevel());
+        if (!readable.isEmpty()) {
+            m_client->setIdleCheckAddress(readable.constFirst().address);
+            break;
+        }
+    }
     m_described = true;
     m_incompleteReason = drive.incompleteReason;
     emit described(drive);
