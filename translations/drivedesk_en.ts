@@ -704,10 +704,6 @@
         <translation>%1  %2 = %3  (raw %4, %5)</translation>
     </message>
     <message>
-        <source>%1 is read-only; nothing was written</source>
-        <translation>%1 is read-only; nothing was written</translation>
-    </message>
-    <message>
         <source>%1: %2; nothing was written</source>
         <translation>%1: %2; nothing was written</translation>
     </message>
@@ -871,6 +867,10 @@
     <message>
         <source>the connection to the drive was lost (%1): %2</source>
         <translation>the connection to the drive was lost (%1): %2</translation>
+    </message>
+    <message>
+        <source>%1; nothing was written</source>
+        <translation>%1; nothing was written</translation>
     </message>
 </context>
 <context>
@@ -1600,20 +1600,8 @@
         <translation>the file has no parameter %1</translation>
     </message>
     <message>
-        <source>no set chosen</source>
-        <translation>no set chosen</translation>
-    </message>
-    <message>
-        <source>%1 is read-only</source>
-        <translation>%1 is read-only</translation>
-    </message>
-    <message>
         <source>Change %1 to %2%3</source>
         <translation>Change %1 to %2%3</translation>
-    </message>
-    <message>
-        <source>%1 = %2 not changed%3: %4</source>
-        <translation>%1 = %2 not changed%3: %4</translation>
     </message>
     <message>
         <source>%1 = %2 in the file%3; save to keep it</source>
@@ -1630,10 +1618,6 @@
     <message>
         <source>%1 holds its default already%2</source>
         <translation>%1 holds its default already%2</translation>
-    </message>
-    <message>
-        <source>%1 not reset%2: %3</source>
-        <translation>%1 not reset%2: %3</translation>
     </message>
     <message>
         <source>%1 reset to its default in the file%2</source>
@@ -1686,6 +1670,10 @@
     <message>
         <source>Redone in the file: %1</source>
         <translation>Redone in the file: %1</translation>
+    </message>
+    <message>
+        <source>%1; the file is unchanged</source>
+        <translation>%1; the file is unchanged</translation>
     </message>
 </context>
 <context>
@@ -2060,6 +2048,17 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::DriveState</name>
+    <message>
+        <source>there is no parameter %1</source>
+        <translation>there is no parameter %1</translation>
+    </message>
+    <message>
+        <source>the drive holds %1, not %2</source>
+        <translation>the drive holds %1, not %2</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::EditController</name>
     <message>
         <source>Not written: this drive has no parameter %1</source>
@@ -2274,10 +2273,6 @@
     <message>
         <source>%1 is not set-programmable: it holds one value for every set.</source>
         <translation>%1 is not set-programmable: it holds one value for every set.</translation>
-    </message>
-    <message>
-        <source>%1 cannot be changed: it is read-only or above the password level in force.</source>
-        <translation>%1 cannot be changed: it is read-only or above the password level in force.</translation>
     </message>
     <message>
         <source>%1 has no value read in set %2 to write.</source>
@@ -2960,24 +2955,8 @@
 <context>
     <name>DriveDesk::ParameterModel</name>
     <message>
-        <source>this drive has no parameter %1</source>
-        <translation>this drive has no parameter %1</translation>
-    </message>
-    <message>
-        <source>%1 is read-only</source>
-        <translation>%1 is read-only</translation>
-    </message>
-    <message>
-        <source>%1: no set chosen</source>
-        <translation>%1: no set chosen</translation>
-    </message>
-    <message>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
-    </message>
-    <message>
-        <source>the drive holds %1, not %2</source>
-        <translation>the drive holds %1, not %2</translation>
     </message>
     <message numerus="yes">
         <source>%1, %n parameter(s)</source>
@@ -3061,10 +3040,6 @@
     <message>
         <source>Access</source>
         <translation>Access</translation>
-    </message>
-    <message>
-        <source>%1 needs password level %2 (in force: %3)</source>
-        <translation>%1 needs password level %2 (in force: %3)</translation>
     </message>
     <message>
         <source>The drive runs with this set (active set, Fr.02)</source>
@@ -4659,6 +4634,25 @@ dialog.
     <message>
         <source>Type %1, software %2, serial number %3</source>
         <translation>Type %1, software %2, serial number %3</translation>
+    </message>
+</context>
+<context>
+    <name>EditCheck</name>
+    <message>
+        <source>%1 is read-only</source>
+        <translation>%1 is read-only</translation>
+    </message>
+    <message>
+        <source>%1 needs password level %2 (in force: %3)</source>
+        <translation>%1 needs password level %2 (in force: %3)</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: no set chosen</source>
+        <translation>%1: no set chosen</translation>
     </message>
 </context>
 <context>

@@ -1,5 +1,7 @@
 #include "CliRunner.h"
 
+#include "state/EditCheck.h"
+
 #include "client/WhenFinished.h"
 
 #include "bus/LinkFactory.h"
@@ -15,8 +17,9 @@
 #include "session/ScopeRecorder.h"
 #include "scope/ScopeRecording.h"
 #include "session/PasswordLevelJob.h"
-#include "session/EditText.h"
-#include "session/ValueEdits.h"
+#include "state/EditText.h"
+#include "state/EditCheck.h"
+#include "state/ValueEdits.h"
 
 #include <QFutureWatcher>
 
@@ -279,16 +282,21 @@ void CliRunner::runWrite()
     lookUpParameter([this](const GroupDescription &group, const ParameterDescription &parameter) {
         const QString id
             = ParameterId::format(parameter.address, GroupAddress{group.id, group.address});
-        if (ParameterProperties(parameter.properties1, parameter.properties2).isReadOnly())
-            return fail(2, tr("%1 is read-only; nothing was written").arg(id));
-        // The window's rule: a plaintext or a number in display units (or a raw integer with
-        // --raw), refused when it cannot be held exactly or lies outside the limits.
-        const ParameterFormat display(parameter);
-        const ParameterFormat format = m_request.raw ? display.rawFormat() : display;
+        // The window's rule (EditCheck) at the level the drive enforces itself: a plaintext or
+        // a number in display units (or a raw integer with --raw), refused when it cannot be
+        // held exactly or lies outside the limits.
+        const ParameterState state(parameter, id);
+        if (const QString refusal = EditCheck::refusal(state, PasswordLevel::Supervisor);
+            !refusal.isEmpty())
+            return fail(2, tr("%1; nothing was written").arg(refusal));
+        const ParameterFormat format = m_request.raw ? state.format().rawFormat() : state.format();
         QString error;
         const std::optional<qint32> raw = format.parse(m_request.value, &error);
         if (!raw)
             return fail(2, tr("%1: %2; nothing was written").arg(id, error));
+        if (const QString refusal = EditCheck::valueRefusal(state, *raw, PasswordLevel::Supervisor);
+            !refusal.isEmpty())
+            return fail(2, tr("%1; nothing was written").arg(refusal));
         writeValue(id, parameter, true, *raw);
     });
 }

@@ -37,10 +37,10 @@ private slots:
         QCOMPARE(m_levels->constFirst().at(0).value<PasswordLevel>(), PasswordLevel::Application);
         QVERIFY(m_access->isLevelKnown());
         QCOMPARE(m_access->level(), PasswordLevel::Application);
-        QCOMPARE(m_drive->model.passwordLevel(), PasswordLevel::Application);
-        QCOMPARE(m_drive->model.value(kPassword, 0), -4);
-        QVERIFY(!m_drive->model.isEditable(kControlMode));
-        QVERIFY(m_drive->model.isEditable(kMaxSpeedForward));
+        QCOMPARE(m_drive->model.state()->passwordLevel(), PasswordLevel::Application);
+        QCOMPARE(m_drive->model.state()->value(kPassword, 0), -4);
+        QVERIFY(!m_drive->model.state()->isEditable(kControlMode));
+        QVERIFY(m_drive->model.state()->isEditable(kMaxSpeedForward));
 
         // The same level read again is no change, once its answer is in.
         QSignalSpy traffic(&m_drive->client, &DriveClient::traffic);
@@ -78,7 +78,7 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(m_levels->size(), 1, kWaitMs);
         QVERIFY(m_drive->model.requestWrite(kPassword, 0x01, 500));
         QTRY_COMPARE_WITH_TIMEOUT(m_drive->state(kPassword), EditState::Written, kWaitMs);
-        QCOMPARE(m_drive->model.value(kPassword, 0), -5);
+        QCOMPARE(m_drive->model.state()->value(kPassword, 0), -5);
         QTRY_COMPARE_WITH_TIMEOUT(m_access->level(), PasswordLevel::DriveMode, kWaitMs);
         QCOMPARE(m_drive->undoStack.count(), 0);
         QTRY_VERIFY_WITH_TIMEOUT(!said.isEmpty(), kWaitMs);
@@ -91,7 +91,7 @@ private slots:
     {
         m_access->readLevel();
         QTRY_COMPARE_WITH_TIMEOUT(m_levels->size(), 1, kWaitMs);
-        QVERIFY(!m_drive->model.isEditable(kControlMode));
+        QVERIFY(!m_drive->model.state()->isEditable(kControlMode));
         QVERIFY(m_drive->model.flags(m_drive->model.valueIndex(kControlMode, 0))
                     .testFlag(Qt::ItemIsEditable)
                 == false);
@@ -103,9 +103,9 @@ private slots:
         QCOMPARE(raised.constFirst().at(0).value<PasswordLevel>(), PasswordLevel::Application);
         QCOMPARE(raised.constFirst().at(1).value<PasswordLevel>(), PasswordLevel::DriveMode);
         QCOMPARE(m_levels->constLast().at(0).value<PasswordLevel>(), PasswordLevel::DriveMode);
-        QCOMPARE(m_drive->model.passwordLevel(), PasswordLevel::DriveMode);
-        QVERIFY(m_drive->model.isEditable(kControlMode));
-        QVERIFY(!m_drive->model.isAboveLevel(kControlMode));
+        QCOMPARE(m_drive->model.state()->passwordLevel(), PasswordLevel::DriveMode);
+        QVERIFY(m_drive->model.state()->isEditable(kControlMode));
+        QVERIFY(!m_drive->model.state()->isAboveLevel(kControlMode));
 
         // And the drive agrees: cn.00 can be written now.
         EditController editor(&m_drive->client, &m_drive->model, &m_drive->undoStack);
@@ -118,13 +118,13 @@ private slots:
     {
         m_access->enterPassword(100);
         QTRY_COMPARE_WITH_TIMEOUT(m_access->level(), PasswordLevel::CpReadOnly, kWaitMs);
-        QVERIFY(!m_drive->model.isEditable(kMaxSpeedForward));
-        QVERIFY(m_drive->model.isAboveLevel(kMaxSpeedForward));
+        QVERIFY(!m_drive->model.state()->isEditable(kMaxSpeedForward));
+        QVERIFY(m_drive->model.state()->isAboveLevel(kMaxSpeedForward));
         // ud.01 stays open at every level.
-        QVERIFY(m_drive->model.isEditable(kPassword));
+        QVERIFY(m_drive->model.state()->isEditable(kPassword));
         m_access->enterPassword(7070);
         QTRY_COMPARE_WITH_TIMEOUT(m_access->level(), PasswordLevel::Supervisor, kWaitMs);
-        QVERIFY(m_drive->model.isEditable(kCalibration));
+        QVERIFY(m_drive->model.state()->isEditable(kCalibration));
     }
 
     void aRefreshThatReadsThePasswordParameterTellsTheLevel()

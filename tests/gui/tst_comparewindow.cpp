@@ -348,20 +348,20 @@ private slots:
         QVERIFY2(isWriteText(button(*window, "writeToAButton")->text(), 1, QStringLiteral("A (a.json (shown))")), qPrintable(button(*window, "writeToAButton")->text()));
         window->writeChosen(true);
         // An unsaved, undoable edit of the window; the file on disk is as it was.
-        QCOMPARE(main.model()->value(kFixedSpeed1, 5), -300);
+        QCOMPARE(main.model()->state()->value(kFixedSpeed1, 5), -300);
         QVERIFY(main.feature<ParameterFileFeature>()->hasUnsavedChanges());
         QCOMPARE(load(m_pathA), m_a);
         QCOMPARE(window->comparisonModel()->comparison().count(ComparisonRow::State::Different),
                  2);
         main.undoStack()->undo();
-        QCOMPARE(main.model()->value(kFixedSpeed1, 5), 100);
+        QCOMPARE(main.model()->state()->value(kFixedSpeed1, 5), 100);
         QVERIFY(!main.feature<ParameterFileFeature>()->hasUnsavedChanges());
         // Chosen by its path, the file shown is still written through the window.
         window->setSide(true, CompareWindow::Source::File, m_pathA);
         QVERIFY(window->compare());
         QVERIFY(choose(*window, kFixedSpeed1, 3));
         window->writeChosen(true);
-        QCOMPARE(main.model()->value(kFixedSpeed1, 3), 250);
+        QCOMPARE(main.model()->state()->value(kFixedSpeed1, 3), 250);
         QCOMPARE(load(m_pathA), m_a);
         main.undoStack()->undo();
         window->close();

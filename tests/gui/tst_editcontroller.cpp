@@ -35,14 +35,14 @@ private slots:
         ParameterModel &model = m_drive->model;
         QAbstractItemModelTester tester(&model,
                                         QAbstractItemModelTester::FailureReportingMode::QtTest);
-        QCOMPARE(model.value(kMaxSpeedForward, 2), 3000);
+        QCOMPARE(model.state()->value(kMaxSpeedForward, 2), 3000);
 
         // As the view's delegate does it.
         QVERIFY(model.setData(model.valueIndex(kMaxSpeedForward, 2), 2500));
         QCOMPARE(m_drive->state(kMaxSpeedForward, 2), EditState::Pending);
         QTRY_COMPARE_WITH_TIMEOUT(m_drive->state(kMaxSpeedForward, 2), EditState::Written, kWaitMs);
 
-        QCOMPARE(model.value(kMaxSpeedForward, 2), 2500);
+        QCOMPARE(model.state()->value(kMaxSpeedForward, 2), 2500);
         QCOMPARE(model.valueIndex(kMaxSpeedForward, 2).data().toString(),
                  QStringLiteral("2500 1/min"));
         QCOMPARE(m_drive->driveValue(kMaxSpeedForward, 2), 2500);
@@ -70,7 +70,7 @@ private slots:
             const bool chosen = sets & (1u << set);
             QCOMPARE(m_drive->state(kMaxSpeedForward, set),
                      chosen ? EditState::Written : EditState::None);
-            QCOMPARE(model.value(kMaxSpeedForward, set), chosen ? 1234 : 3000);
+            QCOMPARE(model.state()->value(kMaxSpeedForward, set), chosen ? 1234 : 3000);
             QCOMPARE(m_drive->driveValue(kMaxSpeedForward, set), chosen ? 1234 : 3000);
         }
     }
@@ -83,14 +83,14 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(m_drive->undoStack.count(), 2, kWaitMs);
         QTRY_VERIFY(!m_editor->isBusy());
         QCOMPARE(m_drive->state(kMaxSpeedForward, 1), EditState::Written);
-        QCOMPARE(model.value(kMaxSpeedForward, 1), 2000);
+        QCOMPARE(model.state()->value(kMaxSpeedForward, 1), 2000);
         QCOMPARE(m_drive->driveValue(kMaxSpeedForward, 1), 2000);
 
         m_drive->undoStack.undo();
         m_drive->undoStack.undo();
         QTRY_VERIFY_WITH_TIMEOUT(!m_editor->isBusy(), kWaitMs);
         QCOMPARE(m_drive->state(kMaxSpeedForward, 1), EditState::Written);
-        QCOMPARE(model.value(kMaxSpeedForward, 1), 3000);
+        QCOMPARE(model.state()->value(kMaxSpeedForward, 1), 3000);
         QCOMPARE(m_drive->driveValue(kMaxSpeedForward, 1), 3000);
     }
 
@@ -98,7 +98,7 @@ private slots:
     {
         m_editor->write(kDemoPeriod, 0xFF, 300);
         QTRY_COMPARE_WITH_TIMEOUT(m_drive->state(kDemoPeriod), EditState::Written, kWaitMs);
-        QCOMPARE(m_drive->model.value(kDemoPeriod, 0), 300);
+        QCOMPARE(m_drive->model.state()->value(kDemoPeriod, 0), 300);
         const Reply reply = m_drive->call(m_drive->client.readValueStandard(kDemoPeriod, 0));
         QVERIFY(reply.data<ParameterValue>());
         QCOMPARE(reply.data<ParameterValue>()->value, 300);
@@ -106,7 +106,7 @@ private slots:
 
     void readOnlyParameterIsRefusedWithTheDrivesReason()
     {
-        const std::optional<qint32> before = m_drive->model.value(kActualFrequency, 0);
+        const std::optional<qint32> before = m_drive->model.state()->value(kActualFrequency, 0);
         m_editor->write(kActualFrequency, 0x01, 100);
         QCOMPARE(m_drive->state(kActualFrequency), EditState::Pending);
         QTRY_COMPARE_WITH_TIMEOUT(m_drive->state(kActualFrequency), EditState::Failed, kWaitMs);
@@ -116,7 +116,7 @@ private slots:
         QTRY_VERIFY(!m_messages->isEmpty());
         const QString said = m_messages->constLast().at(0).toString();
         QVERIFY2(said.contains(QStringLiteral("ru.03")) && said.contains(reason), qPrintable(said));
-        QCOMPARE(m_drive->model.value(kActualFrequency, 0), before);
+        QCOMPARE(m_drive->model.state()->value(kActualFrequency, 0), before);
         QCOMPARE(m_drive->undoStack.count(), 0);
     }
 
@@ -131,7 +131,7 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(m_drive->state(kMaxSpeedForward), EditState::Failed, kWaitMs);
         QVERIFY2(m_drive->toolTip(kMaxSpeedForward).contains(ackText(Ack::DataInvalid)),
                  qPrintable(m_drive->toolTip(kMaxSpeedForward)));
-        QCOMPARE(m_drive->model.value(kMaxSpeedForward, 0), 3000);
+        QCOMPARE(m_drive->model.state()->value(kMaxSpeedForward, 0), 3000);
         QCOMPARE(m_drive->driveValue(kMaxSpeedForward, 0), 3000);
         QCOMPARE(m_drive->undoStack.count(), 0);
         QTRY_VERIFY(!m_editor->isBusy());
@@ -143,7 +143,7 @@ private slots:
         QUndoStack &stack = m_drive->undoStack;
         // Two sets with different values, then one write over both.
         QVERIFY(m_drive->setDriveValue(kFixedSpeed1, 1, 222));
-        QVERIFY(model.setValue(kFixedSpeed1, 1, 222));
+        QVERIFY(model.state()->setValue(kFixedSpeed1, 1, 222));
         QVERIFY(model.requestWrite(kFixedSpeed1, 0x03, 999));
         QTRY_COMPARE_WITH_TIMEOUT(stack.count(), 1, kWaitMs);
         QCOMPARE(m_drive->driveValue(kFixedSpeed1, 0), 999);
@@ -155,15 +155,15 @@ private slots:
         QTRY_COMPARE(m_drive->state(kFixedSpeed1, 0), EditState::Written);
         QCOMPARE(m_drive->driveValue(kFixedSpeed1, 0), 100);
         QCOMPARE(m_drive->driveValue(kFixedSpeed1, 1), 222);
-        QCOMPARE(model.value(kFixedSpeed1, 0), 100);
-        QCOMPARE(model.value(kFixedSpeed1, 1), 222);
+        QCOMPARE(model.state()->value(kFixedSpeed1, 0), 100);
+        QCOMPARE(model.state()->value(kFixedSpeed1, 1), 222);
         QVERIFY(stack.canRedo());
 
         stack.redo();
         QTRY_VERIFY_WITH_TIMEOUT(!m_editor->isBusy(), kWaitMs);
         QCOMPARE(m_drive->driveValue(kFixedSpeed1, 0), 999);
         QCOMPARE(m_drive->driveValue(kFixedSpeed1, 1), 999);
-        QCOMPARE(model.value(kFixedSpeed1, 1), 999);
+        QCOMPARE(model.state()->value(kFixedSpeed1, 1), 999);
         QVERIFY(texts(*m_messages).contains(QStringLiteral("Redone: ") + stack.undoText()));
     }
 
@@ -207,7 +207,7 @@ private slots:
         QCOMPARE(m_drive->state(kMaxSpeedForward, 3), EditState::Pending);
         QTRY_COMPARE_WITH_TIMEOUT(m_drive->undoStack.count(), 2, kWaitMs);
         QCOMPARE(m_drive->state(kMaxSpeedForward, 3), EditState::Written);
-        QCOMPARE(m_drive->model.value(kMaxSpeedForward, 3), 3000);
+        QCOMPARE(m_drive->model.state()->value(kMaxSpeedForward, 3), 3000);
         QCOMPARE(m_drive->driveValue(kMaxSpeedForward, 3), 3000);
         QCOMPARE(m_drive->driveValue(kMaxSpeedForward, 4), 1000);
         QVERIFY(m_drive->undoStack.undoText().contains(QStringLiteral("default")));
@@ -215,7 +215,7 @@ private slots:
         m_drive->undoStack.undo();
         QTRY_VERIFY_WITH_TIMEOUT(!m_editor->isBusy(), kWaitMs);
         QCOMPARE(m_drive->driveValue(kMaxSpeedForward, 3), 1000);
-        QCOMPARE(m_drive->model.value(kMaxSpeedForward, 3), 1000);
+        QCOMPARE(m_drive->model.state()->value(kMaxSpeedForward, 3), 1000);
     }
 
     void resetOfThePasswordIsRefused()
@@ -250,7 +250,7 @@ private slots:
 
         QCOMPARE(m_drive->driveValue(kMaxSpeedForward, 5), 1111);
         QCOMPARE(m_drive->driveValue(kFixedSpeed1, 5), -222);
-        QCOMPARE(m_drive->model.value(kFixedSpeed1, 5), -222);
+        QCOMPARE(m_drive->model.state()->value(kFixedSpeed1, 5), -222);
         QCOMPARE(m_drive->state(kFixedSpeed1, 5), EditState::Written);
         QCOMPARE(m_drive->driveValue(kMaxSpeedForward, 4), 3000);
         QCOMPARE(m_drive->undoStack.count(), 3);
@@ -295,7 +295,7 @@ private slots:
         // op.11 comes before op.20: only it was copied, and the window shows what the drive holds.
         QCOMPARE(m_drive->driveValue(kMaxSpeedForward, 6), 1111);
         QCOMPARE(m_drive->driveValue(kFixedSpeed1, 6), 100);
-        QCOMPARE(m_drive->model.value(kFixedSpeed1, 6), 100);
+        QCOMPARE(m_drive->model.state()->value(kFixedSpeed1, 6), 100);
         QCOMPARE(m_drive->state(kFixedSpeed1, 6), EditState::None);
         QCOMPARE(m_drive->state(kMaxSpeedForward, 6), EditState::Written);
 
@@ -322,15 +322,15 @@ private slots:
         // Changed behind the model's back.
         QVERIFY(m_drive->setDriveValue(kMaxSpeedForward, 4, 2222));
         QVERIFY(m_drive->setDriveValue(kDemoPeriod, 0, 450));
-        QCOMPARE(model.value(kMaxSpeedForward, 4), 3000);
+        QCOMPARE(model.state()->value(kMaxSpeedForward, 4), 3000);
 
         QSignalSpy progress(m_editor.get(), &EditController::progress);
         QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
         m_editor->refresh();
         QVERIFY(m_editor->isBusy());
         QTRY_VERIFY_WITH_TIMEOUT(!m_editor->isBusy(), kWaitMs);
-        QCOMPARE(model.value(kMaxSpeedForward, 4), 2222);
-        QCOMPARE(model.value(kDemoPeriod, 0), 450);
+        QCOMPARE(model.state()->value(kMaxSpeedForward, 4), 2222);
+        QCOMPARE(model.state()->value(kDemoPeriod, 0), 450);
         QCOMPARE(m_drive->state(kMaxSpeedForward, 4), EditState::None);
         const QList<QVariant> last = progress.constLast();
         QCOMPARE(last.at(0).toInt(), last.at(1).toInt());
@@ -345,7 +345,7 @@ private slots:
         QVERIFY(m_messages->constLast().at(0).toString().contains(QStringLiteral("could not")));
 
         // With the level known, what it locks is not asked for.
-        model.setPasswordLevel(PasswordLevel::Application);
+        model.state()->setPasswordLevel(PasswordLevel::Application);
         m_editor->refresh();
         QTRY_VERIFY_WITH_TIMEOUT(!m_editor->isBusy(), kWaitMs);
         QCOMPARE(m_editor->readFailureCount(), 0);

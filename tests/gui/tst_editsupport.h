@@ -65,7 +65,7 @@ struct SimulatedDrive
         const QFuture<DriveDescription> scan = client.scan(options);
         if (!waitFinished(scan) || scan.resultCount() == 0)
             return false;
-        model.setDescription(scan.result());
+        model.state()->setDescription(scan.result());
         return model.rowCount() > 0;
     }
 
@@ -102,7 +102,7 @@ struct SimulatedDrive
         return call(client.writeValue(address, raw, quint8(1u << set))).ok();
     }
 
-    EditState state(quint16 address, int set = 0) const { return model.editState(address, set); }
+    EditState state(quint16 address, int set = 0) const { return model.state()->editState(address, set); }
     QString toolTip(quint16 address, int set = 0) const
     {
         return model.valueIndex(address, set).data(Qt::ToolTipRole).toString();

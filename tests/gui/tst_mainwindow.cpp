@@ -100,7 +100,7 @@ private slots:
         QCOMPARE(text(1, 0), QStringLiteral("ru  Run parameters"));
         QCOMPARE(text(1, 1), QStringLiteral("18"));
         QCOMPARE(shownAddresses(*m_window).size(), kSimulatedParameters);
-        QVERIFY(m_window->model()->value(kInverterState, 0).has_value());
+        QVERIFY(m_window->model()->state()->value(kInverterState, 0).has_value());
         QVERIFY(polling->isEnabled());
 
         QTRY_COMPARE(statusLabel("passwordLevel"), QStringLiteral("Password level: Application"));
@@ -242,7 +242,7 @@ private slots:
         for (quint16 address : shown) {
             QVERIFY(model->indexOf(address).data(ParameterModel::DiffersFromDefaultRole).toBool());
             // Only what the user sets: no read-only value, nothing the drive changes itself.
-            const ParameterDescription *parameter = model->parameter(address);
+            const ParameterDescription *parameter = model->state()->parameter(address);
             const ParameterProperties properties(parameter->properties1, parameter->properties2);
             QVERIFY2(!properties.isReadOnly() && !properties.isChangedByInverter(),
                      qPrintable(model->indexOf(address).data().toString()));
@@ -324,13 +324,13 @@ private slots:
             = m_window->statusBar()->findChild<QLabel *>(QStringLiteral("metadataSource"));
         QVERIFY(fromCache);
         QVERIFY(!fromCache->isVisible());
-        const DriveDescription cold = m_window->model()->description();
+        const DriveDescription cold = m_window->model()->state()->description();
         QVERIFY(!cold.metadataFromCache);
 
         MainWindow second;
         second.show();
         QVERIFY(connectAndRead(second, simulated()));
-        const DriveDescription warm = second.model()->description();
+        const DriveDescription warm = second.model()->state()->description();
         QVERIFY(warm.metadataFromCache);
         QCOMPARE(metadataOf(warm), metadataOf(cold));
         const auto *secondLabel
@@ -350,10 +350,10 @@ private slots:
         auto *again = second.findChild<QAction *>(QStringLiteral("readMetadataAction"));
         QVERIFY(again && again->isEnabled());
         again->trigger();
-        QTRY_VERIFY_WITH_TIMEOUT(!second.model()->description().metadataFromCache, kWaitMs);
+        QTRY_VERIFY_WITH_TIMEOUT(!second.model()->state()->description().metadataFromCache, kWaitMs);
         QTRY_VERIFY_WITH_TIMEOUT(second.isReady(), kWaitMs);
         QVERIFY(!secondLabel->isVisible());
-        QCOMPARE(metadataOf(second.model()->description()), metadataOf(cold));
+        QCOMPARE(metadataOf(second.model()->state()->description()), metadataOf(cold));
     }
 
     void lostLinkKeepsWhatWasReadAndReconnects()
@@ -361,7 +361,7 @@ private slots:
         ServedDrive server(Protocol::Hsp5, answeringAtOnce());
         const QString problem = serveAndConnect(*m_window, server);
         QVERIFY2(problem.isEmpty(), qPrintable(problem));
-        const std::optional<qint32> before = m_window->model()->value(kDemoPeriod, 0);
+        const std::optional<qint32> before = m_window->model()->state()->value(kDemoPeriod, 0);
         QVERIFY(before);
 
         server.close();
@@ -372,7 +372,7 @@ private slots:
         QVERIFY(m_window->statusBar()->currentMessage().contains(QStringLiteral("lost")));
         // What was read stays; nothing can be edited meanwhile.
         QCOMPARE(m_window->model()->rowCount(), kSimulatedGroups);
-        QCOMPARE(m_window->model()->value(kDemoPeriod, 0), before);
+        QCOMPARE(m_window->model()->state()->value(kDemoPeriod, 0), before);
         QCOMPARE(m_window->browser()->view()->editTriggers(), QAbstractItemView::NoEditTriggers);
         QVERIFY(!m_window->isReady());
         QVERIFY(!m_window->findChild<QAction *>(QStringLiteral("pollingAction"))->isEnabled());
@@ -486,7 +486,7 @@ private slots:
         ServedDrive server(Protocol::Hsp5, options);
         const QString problem = serveAndConnect(*m_window, server);
         QVERIFY2(problem.isEmpty(), qPrintable(problem));
-        const std::optional<qint32> before = m_window->model()->value(kDemoPeriod, 0);
+        const std::optional<qint32> before = m_window->model()->state()->value(kDemoPeriod, 0);
         QVERIFY(before);
         const QString title = m_window->windowTitle();
 
@@ -501,7 +501,7 @@ private slots:
         QVERIFY2(m_window->noticeBar()->text().contains(QStringLiteral("Could not connect")),
                  qPrintable(m_window->noticeBar()->text()));
         QCOMPARE(m_window->model()->rowCount(), kSimulatedGroups);
-        QCOMPARE(m_window->model()->value(kDemoPeriod, 0), before);
+        QCOMPARE(m_window->model()->state()->value(kDemoPeriod, 0), before);
         QCOMPARE(m_window->windowTitle(), title);
         const auto *reconnect
             = m_window->noticeBar()->findChild<QPushButton *>(QStringLiteral("noticeReconnect"));
@@ -578,7 +578,7 @@ private slots:
                                  60000);
         QCOMPARE(m_window->browser()->shownParameterCount(), kSimulatedParameters);
         QVERIFY(m_window->session()->incompleteReason().isEmpty());
-        const QList<GroupDescription> complete = metadataOf(m_window->model()->description());
+        const QList<GroupDescription> complete = metadataOf(m_window->model()->state()->description());
         const auto shownSpeed = [this] {
             return m_window->model()->valueIndex(kFixedSpeed1, 3).data().toString();
         };
@@ -597,9 +597,9 @@ private slots:
                  qPrintable(m_window->noticeBar()->text()));
         QCOMPARE(described.count(), 0);
         QCOMPARE(m_window->browser()->shownParameterCount(), kSimulatedParameters);
-        QCOMPARE(metadataOf(m_window->model()->description()), complete);
+        QCOMPARE(metadataOf(m_window->model()->state()->description()), complete);
         QCOMPARE(shownSpeed(), QStringLiteral("100 1/min"));
-        QVERIFY(m_window->model()->isEditable(kFixedSpeed1));
+        QVERIFY(m_window->model()->state()->isEditable(kFixedSpeed1));
 
         // And after a reconnect: the values read again into the same complete table.
         QSignalSpy connected(m_window->session(), &DriveSession::connected);
@@ -607,9 +607,9 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(connected.count() == 1 && m_window->isReady(), kWaitMs);
         QVERIFY(!m_window->session()->isScanning());
         QCOMPARE(m_window->browser()->shownParameterCount(), kSimulatedParameters);
-        QCOMPARE(metadataOf(m_window->model()->description()), complete);
+        QCOMPARE(metadataOf(m_window->model()->state()->description()), complete);
         QCOMPARE(shownSpeed(), QStringLiteral("100 1/min"));
-        QVERIFY(m_window->model()->isEditable(kFixedSpeed1));
+        QVERIFY(m_window->model()->state()->isEditable(kFixedSpeed1));
     }
 
     void layoutAndFiltersAreRemembered()

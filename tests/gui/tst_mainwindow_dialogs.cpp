@@ -348,7 +348,7 @@ private slots:
     {
         MainWindow window;
         QVERIFY(connectAndRead(window, simulated()));
-        const DriveDescription drive = window.model()->description();
+        const DriveDescription drive = window.model()->state()->description();
         const QList<DriveInfoDialog::Line> lines
             = DriveInfoDialog::lines(drive, window.session()->settings());
         QStringList labels;

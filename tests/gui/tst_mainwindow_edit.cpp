@@ -44,7 +44,7 @@ private:
     DriveClient *client() const { return m_window->session()->client(); }
     EditState state(quint16 address, int set) const
     {
-        return m_window->model()->editState(address, set);
+        return m_window->model()->state()->editState(address, set);
     }
     // Works the modal dialog `T` that `trigger` opens, once it is up.
     template<typename T>
@@ -102,7 +102,7 @@ private slots:
         m_window->session()->start();
         QTRY_VERIFY_WITH_TIMEOUT(m_window->isReady(), kWaitMs);
         // The drive starts afresh: its value, no mark, nothing to undo.
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->model()->value(kFixedSpeed1, 2), 100, kWaitMs);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->model()->state()->value(kFixedSpeed1, 2), 100, kWaitMs);
         QCOMPARE(state(kFixedSpeed1, 2), EditState::None);
         QCOMPARE(m_window->undoStack()->count(), 0);
     }
@@ -123,7 +123,7 @@ private slots:
         QTest::keyClick(editor, Qt::Key_Return);
 
         QTRY_COMPARE_WITH_TIMEOUT(state(kFixedSpeed1, 2), EditState::Written, kWaitMs);
-        QCOMPARE(m_window->model()->value(kFixedSpeed1, 2), 250);
+        QCOMPARE(m_window->model()->state()->value(kFixedSpeed1, 2), 250);
         QCOMPARE(viewIndex(*m_window, kFixedSpeed1, 2).data().toString(),
                  QStringLiteral("250 1/min"));
         QCOMPARE(driveValue(client(), kFixedSpeed1, 2), 250);
@@ -151,7 +151,7 @@ private slots:
 
         for (int set = 1; set <= 3; ++set) {
             QTRY_COMPARE_WITH_TIMEOUT(state(kFixedSpeed1, set), EditState::Written, kWaitMs);
-            QCOMPARE(m_window->model()->value(kFixedSpeed1, set), 300);
+            QCOMPARE(m_window->model()->state()->value(kFixedSpeed1, set), 300);
             QCOMPARE(driveValue(client(), kFixedSpeed1, set), 300);
         }
         QCOMPARE(driveValue(client(), kFixedSpeed1, 4), 100);
@@ -192,7 +192,7 @@ private slots:
     void undoWritesTheOldValueBack()
     {
         m_window->browser()->showGroup(QStringLiteral("op"));
-        QCOMPARE(m_window->model()->value(kDemoPeriod, 0), 200);
+        QCOMPARE(m_window->model()->state()->value(kDemoPeriod, 0), 200);
         QVERIFY(!action("undoAction")->isEnabled());
         const QModelIndex index = viewIndex(*m_window, kDemoPeriod, 0);
         QVERIFY(m_window->browser()->view()->model()->setData(index, QStringLiteral("30.0")));
@@ -201,12 +201,12 @@ private slots:
         QTRY_VERIFY(action("undoAction")->isEnabled());
 
         action("undoAction")->trigger();
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->model()->value(kDemoPeriod, 0), 200, kWaitMs);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->model()->state()->value(kDemoPeriod, 0), 200, kWaitMs);
         QCOMPARE(driveValue(client(), kDemoPeriod), 200);
         QTRY_VERIFY(action("redoAction")->isEnabled());
 
         action("redoAction")->trigger();
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->model()->value(kDemoPeriod, 0), 300, kWaitMs);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->model()->state()->value(kDemoPeriod, 0), 300, kWaitMs);
         QCOMPARE(driveValue(client(), kDemoPeriod), 300);
     }
 
@@ -221,7 +221,7 @@ private slots:
         view->selectionModel()->select(index, QItemSelectionModel::ClearAndSelect);
         QVERIFY(action("resetAction")->isEnabled());
         action("resetAction")->trigger();
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->model()->value(kFixedSpeed1, 5), 100, kWaitMs);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->model()->state()->value(kFixedSpeed1, 5), 100, kWaitMs);
         QCOMPARE(driveValue(client(), kFixedSpeed1, 5), 100);
     }
 
@@ -231,9 +231,9 @@ private slots:
         const QFuture<Reply> write = client()->writeValue(kDemoPeriod, 450, 0x01);
         QVERIFY(waitFinished(write));
         QVERIFY(write.result().ok());
-        QCOMPARE(m_window->model()->value(kDemoPeriod, 0), 200);
+        QCOMPARE(m_window->model()->state()->value(kDemoPeriod, 0), 200);
         action("refreshAction")->trigger();
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->model()->value(kDemoPeriod, 0), 450, kWaitMs);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->model()->state()->value(kDemoPeriod, 0), 450, kWaitMs);
     }
 
     void passwordOpensAHigherLevel()
@@ -276,17 +276,17 @@ private slots:
     {
         constexpr quint16 kCalibration = 0x0E28; // In.40, read at Security (6)
         ParameterModel *model = m_window->model();
-        QCOMPARE(model->value(kCalibration, 0), std::nullopt);
-        QVERIFY(model->isAboveLevel(kCalibration));
+        QCOMPARE(model->state()->value(kCalibration, 0), std::nullopt);
+        QVERIFY(model->state()->isAboveLevel(kCalibration));
         QVERIFY(m_window->findChild<AccessController *>());
         m_window->findChild<AccessController *>()->enterPassword(7070);
         // No refresh asked for: the level's change reads what it opened.
-        QTRY_VERIFY_WITH_TIMEOUT(model->value(kCalibration, 0).has_value(), kWaitMs);
+        QTRY_VERIFY_WITH_TIMEOUT(model->state()->value(kCalibration, 0).has_value(), kWaitMs);
         QCOMPARE(model->valueIndex(kCalibration, 0).data().toString(), QStringLiteral("5A5Ah"));
-        QVERIFY(!model->isAboveLevel(kCalibration));
+        QVERIFY(!model->state()->isAboveLevel(kCalibration));
 
         m_window->findChild<AccessController *>()->enterPassword(440);
-        QTRY_VERIFY_WITH_TIMEOUT(model->isAboveLevel(kCalibration), kWaitMs);
+        QTRY_VERIFY_WITH_TIMEOUT(model->state()->isAboveLevel(kCalibration), kWaitMs);
         QCOMPARE(model->valueIndex(kCalibration, 0).data(Qt::ForegroundRole).value<QColor>(),
                  QGuiApplication::palette().color(QPalette::Disabled, QPalette::Text));
     }

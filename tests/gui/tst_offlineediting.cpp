@@ -146,7 +146,7 @@ private slots:
         m_driveDocument = *saved;
         // Read afresh, it is what the table shows of the drive just read.
         QCOMPARE(settled(m_driveDocument),
-                 settled(ParameterList::fromScan(m_window->model()->description())));
+                 settled(ParameterList::fromScan(m_window->model()->state()->description())));
         QVERIFY(m_driveDocument.parameterCount() > 100);
         // The drive's values, as the drive holds them.
         const ParameterDescription *fixedSpeed = m_driveDocument.find(kFixedSpeed1);
@@ -180,7 +180,7 @@ private slots:
         QVERIFY(!m_window->isReady());
         QVERIFY(m_window->editing());
         QCOMPARE(m_window->parameterFilePath(), file);
-        QCOMPARE(m_window->model()->description(), m_driveDocument);
+        QCOMPARE(m_window->model()->state()->description(), m_driveDocument);
         QCOMPARE(m_window->model()->rowCount(), m_driveDocument.groups.size());
         QVERIFY(m_window->windowTitle().contains(QStringLiteral("shown.json[*]")));
         QVERIFY(!m_window->isWindowModified());
@@ -203,8 +203,8 @@ private slots:
 
         typeValue(kFixedSpeed1, 2, QStringLiteral("250"));
         // The view commits an editor on its next turn.
-        QTRY_COMPARE(m_window->model()->value(kFixedSpeed1, 2), 250);
-        QCOMPARE(m_window->model()->value(kFixedSpeed1, 1), 100);
+        QTRY_COMPARE(m_window->model()->state()->value(kFixedSpeed1, 2), 250);
+        QCOMPARE(m_window->model()->state()->value(kFixedSpeed1, 1), 100);
         QCOMPARE(viewIndex(*m_window, kFixedSpeed1, 2).data().toString(),
                  QStringLiteral("250 1/min"));
         QCOMPARE(stack->count(), 1);
@@ -214,17 +214,17 @@ private slots:
 
         QVERIFY(action("undoAction")->isEnabled());
         action("undoAction")->trigger();
-        QCOMPARE(m_window->model()->value(kFixedSpeed1, 2), 100);
+        QCOMPARE(m_window->model()->state()->value(kFixedSpeed1, 2), 100);
         QVERIFY(!m_window->isWindowModified());
         // The status bar no longer speaks of the edit as if it stood.
         QVERIFY2(statusMessage().startsWith(QStringLiteral("Undone in the file: "))
                      && statusMessage().contains(QStringLiteral("op.20")),
                  qPrintable(statusMessage()));
-        QCOMPARE(m_window->model()->description(), m_driveDocument);
+        QCOMPARE(m_window->model()->state()->description(), m_driveDocument);
 
         QVERIFY(action("redoAction")->isEnabled());
         action("redoAction")->trigger();
-        QCOMPARE(m_window->model()->value(kFixedSpeed1, 2), 250);
+        QCOMPARE(m_window->model()->state()->value(kFixedSpeed1, 2), 250);
         QVERIFY(m_window->isWindowModified());
         QVERIFY2(statusMessage().startsWith(QStringLiteral("Redone in the file: ")),
                  qPrintable(statusMessage()));
@@ -259,12 +259,12 @@ private slots:
         const QString file = openCopy(QStringLiteral("marked.json"));
         QVERIFY(!file.isEmpty());
         ParameterModel *model = m_window->model();
-        const auto state = [model](int set) { return model->editState(kFixedSpeed1, set); };
+        const auto state = [model](int set) { return model->state()->editState(kFixedSpeed1, set); };
         const QModelIndex cell = model->valueIndex(kFixedSpeed1, 2);
         const QModelIndex neighbour = model->valueIndex(kFixedSpeed1, 1);
 
         typeValue(kFixedSpeed1, 2, QStringLiteral("250"));
-        QTRY_COMPARE(model->value(kFixedSpeed1, 2), 250);
+        QTRY_COMPARE(model->state()->value(kFixedSpeed1, 2), 250);
         QCOMPARE(state(2), EditState::Changed);
         QCOMPARE(state(1), EditState::None);
         // The written cell's look: its ground and icon, and a tip that says what is unsaved.
@@ -279,11 +279,11 @@ private slots:
         QVERIFY(model->requestWrite(kFixedSpeed1, 0x04, 300));
         QCOMPARE(state(2), EditState::Changed);
         m_window->undoStack()->undo();
-        QCOMPARE(model->value(kFixedSpeed1, 2), 250);
+        QCOMPARE(model->state()->value(kFixedSpeed1, 2), 250);
         QCOMPARE(state(2), EditState::Changed);
         // Undone back to the file's value: unmarked; redone: marked again.
         m_window->undoStack()->undo();
-        QCOMPARE(model->value(kFixedSpeed1, 2), 100);
+        QCOMPARE(model->state()->value(kFixedSpeed1, 2), 100);
         QCOMPARE(state(2), EditState::None);
         QVERIFY(!cell.data(Qt::BackgroundRole).isValid());
         m_window->undoStack()->redo();
@@ -300,7 +300,7 @@ private slots:
         QCOMPARE(state(2), EditState::None);
         QVERIFY(!cell.data(Qt::BackgroundRole).isValid());
         m_window->undoStack()->undo();
-        QCOMPARE(model->value(kFixedSpeed1, 2), 100);
+        QCOMPARE(model->state()->value(kFixedSpeed1, 2), 100);
         QCOMPARE(state(2), EditState::Changed);
         m_window->undoStack()->redo();
         QCOMPARE(state(2), EditState::None);
@@ -308,7 +308,7 @@ private slots:
         // A set copied: every cell it changed is marked, and unmarked by its undo.
         ParameterEditing *editing = m_window->editing();
         editing->copySet(2, 6);
-        QCOMPARE(model->value(kFixedSpeed1, 6), 250);
+        QCOMPARE(model->state()->value(kFixedSpeed1, 6), 250);
         QCOMPARE(state(6), EditState::Changed);
         QCOMPARE(state(2), EditState::None);
         m_window->undoStack()->undo();
@@ -320,26 +320,26 @@ private slots:
         QVERIFY(!openCopy(QStringLiteral("sets.json")).isEmpty());
         ParameterModel *model = m_window->model();
         QVERIFY(model->requestWrite(kFixedSpeed1, 0x01, -300));
-        QCOMPARE(model->value(kFixedSpeed1, 0), -300);
+        QCOMPARE(model->state()->value(kFixedSpeed1, 0), -300);
 
         m_window->browser()->showGroup(QStringLiteral("op"));
         m_window->browser()->view()->setCurrentIndex(viewIndex(*m_window, kFixedSpeed1, 0));
         QVERIFY(action("resetAction")->isEnabled());
         action("resetAction")->trigger();
-        QCOMPARE(model->value(kFixedSpeed1, 0), 100); // its default
+        QCOMPARE(model->state()->value(kFixedSpeed1, 0), 100); // its default
         QCOMPARE(m_window->undoStack()->count(), 2);
         m_window->undoStack()->undo();
-        QCOMPARE(model->value(kFixedSpeed1, 0), -300);
+        QCOMPARE(model->state()->value(kFixedSpeed1, 0), -300);
 
         ParameterEditing *editing = m_window->editing();
         QVERIFY(editing);
         editing->copySet(0, 5);
-        QCOMPARE(model->value(kFixedSpeed1, 5), -300);
+        QCOMPARE(model->state()->value(kFixedSpeed1, 5), -300);
         QVERIFY(statusMessage().contains(QStringLiteral("Copied")));
         m_window->undoStack()->undo();
-        QCOMPARE(model->value(kFixedSpeed1, 5), 100);
+        QCOMPARE(model->state()->value(kFixedSpeed1, 5), 100);
         m_window->undoStack()->undo();
-        QCOMPARE(model->description(), m_driveDocument);
+        QCOMPARE(model->state()->description(), m_driveDocument);
         QVERIFY(!m_window->isWindowModified());
     }
 
@@ -356,10 +356,10 @@ private slots:
         QVERIFY(ParameterDocument::save(file, unread));
         QVERIFY(files()->openParameterFile(file));
         QVERIFY(m_window->model()->requestWrite(kFixedSpeed1, 0x10, 42));
-        QCOMPARE(m_window->model()->value(kFixedSpeed1, 4), 42);
+        QCOMPARE(m_window->model()->state()->value(kFixedSpeed1, 4), 42);
         m_window->undoStack()->undo();
-        QCOMPARE(m_window->model()->value(kFixedSpeed1, 4), std::nullopt);
-        QCOMPARE(m_window->model()->description(), unread);
+        QCOMPARE(m_window->model()->state()->value(kFixedSpeed1, 4), std::nullopt);
+        QCOMPARE(m_window->model()->state()->description(), unread);
     }
 
     // (c)
@@ -368,7 +368,7 @@ private slots:
         const QString file = openCopy(QStringLiteral("kept.json"));
         QVERIFY(!file.isEmpty());
         QVERIFY(m_window->model()->requestWrite(kFixedSpeed1, 0x01, 321));
-        const DriveDescription shown = m_window->model()->description();
+        const DriveDescription shown = m_window->model()->state()->description();
         const QString title = m_window->windowTitle();
 
         const QString corrupt = path(QStringLiteral("corrupt.json"));
@@ -387,7 +387,7 @@ private slots:
         QCOMPARE(m_window->parameterFilePath(), file);
         QCOMPARE(m_window->windowTitle(), title);
         QVERIFY(m_window->isWindowModified());
-        QCOMPARE(m_window->model()->description(), shown);
+        QCOMPARE(m_window->model()->state()->description(), shown);
         QCOMPARE(m_window->undoStack()->count(), 1);
     }
 
@@ -405,14 +405,14 @@ private slots:
         QVERIFY(!openCopy(QStringLiteral("limits.json")).isEmpty());
         typeValue(kFixedSpeed1, 0, QStringLiteral("9999"));
         QTRY_VERIFY2(statusMessage().contains(QStringLiteral("4000")), qPrintable(statusMessage()));
-        QCOMPARE(m_window->model()->value(kFixedSpeed1, 0), 100);
-        QCOMPARE(m_window->model()->editState(kFixedSpeed1, 0), EditState::None);
+        QCOMPARE(m_window->model()->state()->value(kFixedSpeed1, 0), 100);
+        QCOMPARE(m_window->model()->state()->editState(kFixedSpeed1, 0), EditState::None);
 
         // Past the table's own check, the editor of the file refuses it as well.
         m_window->showMessage(QString());
         emit m_window->model()->valueEdited(kFixedSpeed1, 0x01, 9999);
         QVERIFY2(statusMessage().contains(QStringLiteral("4000")), qPrintable(statusMessage()));
-        QCOMPARE(m_window->model()->value(kFixedSpeed1, 0), 100);
+        QCOMPARE(m_window->model()->state()->value(kFixedSpeed1, 0), 100);
         // Read-only stays read-only in a file.
         QString problem;
         QVERIFY(!m_window->model()->requestWrite(kInverterState, 0x01, 1, &problem));
@@ -420,7 +420,7 @@ private slots:
 
         QCOMPARE(m_window->undoStack()->count(), 0);
         QVERIFY(!m_window->isWindowModified());
-        QCOMPARE(m_window->model()->description(), m_driveDocument);
+        QCOMPARE(m_window->model()->state()->description(), m_driveDocument);
     }
 
     void openingAFileDisconnectsTheDrive()
@@ -432,7 +432,7 @@ private slots:
         QVERIFY(!m_window->session());
         QVERIFY(statusMessage().contains(QStringLiteral("Disconnected")));
         QCOMPARE(m_window->undoStack()->count(), 0); // the drive's writes are not the file's
-        QCOMPARE(m_window->model()->value(kFixedSpeed1, 0), 100);
+        QCOMPARE(m_window->model()->state()->value(kFixedSpeed1, 0), 100);
 
         // And back to a drive: the file goes.
         QVERIFY(connectAndRead(*m_window, simulated()));
@@ -454,7 +454,7 @@ private slots:
         QVERIFY(box);
         box->button(QMessageBox::Cancel)->click();
         QCOMPARE(m_window->parameterFilePath(), first);
-        QCOMPARE(m_window->model()->value(kDemoPeriod, 0), 300);
+        QCOMPARE(m_window->model()->state()->value(kDemoPeriod, 0), 300);
 
         // Discard: the second file shows; the first is as it was on disk.
         QVERIFY(files()->openParameterFile(second));
@@ -472,7 +472,7 @@ private slots:
         box->button(QMessageBox::Cancel)->click();
         QVERIFY(!m_window->session());
         QCOMPARE(m_window->parameterFilePath(), second);
-        QCOMPARE(m_window->model()->value(kDemoPeriod, 0), 350);
+        QCOMPARE(m_window->model()->state()->value(kDemoPeriod, 0), 350);
 
         // Closing with changes: Save, then the window closes.
         QVERIFY(m_window->model()->requestWrite(kDemoPeriod, 0x01, 400));

@@ -59,10 +59,10 @@ private slots:
     void init()
     {
         m_model = std::make_unique<ParameterModel>();
-        m_model->setDescription(drive());
+        m_model->state()->setDescription(drive());
         // As the edit path does (ValueEdits::pending): the cells show pending once asked for.
-        connect(m_model.get(), &ParameterModel::valueEdited, m_model.get(),
-                &ParameterModel::markPending);
+        connect(m_model.get(), &ParameterModel::valueEdited, m_model->state(),
+                &DriveState::markPending);
         m_filter = std::make_unique<ParameterFilterModel>();
         m_filter->setSourceModel(m_model.get());
         m_delegate = std::make_unique<ParameterDelegate>();
@@ -103,7 +103,7 @@ private slots:
         QCOMPARE(edited.at(0).at(0).value<quint16>(), kMaxFrequency);
         QCOMPARE(edited.at(0).at(1).value<quint8>(), quint8(0x02));
         QCOMPARE(edited.at(0).at(2).value<qint32>(), 6001);
-        QCOMPARE(m_model->editState(kMaxFrequency, 1), EditState::Pending);
+        QCOMPARE(m_model->state()->editState(kMaxFrequency, 1), EditState::Pending);
 
         spin = qobject_cast<ScaledSpinBox *>(openEditor(kMaxFrequency, 0));
         QVERIFY(spin);
@@ -151,12 +151,12 @@ private slots:
         QWidget *editor = openEditor(kRampTime);
         QVERIFY(editor);
         // The drive reports a new value while the editor is open: what the user sees stays.
-        m_model->setValue(kRampTime, 0, 900);
+        m_model->state()->setValue(kRampTime, 0, 900);
         QCOMPARE(qobject_cast<ScaledSpinBox *>(editor)->text(), QStringLiteral("5.00 s"));
         QTest::keyClick(editor, Qt::Key_Return);
         QTRY_VERIFY(!m_view->indexWidget(viewIndex(kRampTime)));
         QCOMPARE(edited.size(), 0);
-        QCOMPARE(m_model->editState(kRampTime, 0), EditState::None);
+        QCOMPARE(m_model->state()->editState(kRampTime, 0), EditState::None);
     }
 
     void enumerationsGetAComboBoxOfTheirPlaintexts()
@@ -215,7 +215,7 @@ private slots:
 
     void bitFieldsOpenAPopupWithALabelPerDefinition()
     {
-        m_model->setValue(kControl, 0, 0x0105); // bit 8 belongs to no definition
+        m_model->state()->setValue(kControl, 0, 0x0105); // bit 8 belongs to no definition
         const QModelIndex cell = viewIndex(kControl);
         auto *editor = qobject_cast<BitFieldEditor *>(openEditor(kControl));
         QVERIFY(editor);
@@ -271,7 +271,7 @@ private slots:
 
     void enterWritesTheComposedBitField()
     {
-        m_model->setValue(kControl, 0, 0x0105);
+        m_model->state()->setValue(kControl, 0, 0x0105);
         auto *editor = qobject_cast<BitFieldEditor *>(openEditor(kControl));
         QVERIFY(editor);
         QSignalSpy edited(m_model.get(), &ParameterModel::valueEdited);
@@ -329,7 +329,7 @@ private slots:
         editor->close(); // as a click outside the popup closes it
         QTRY_VERIFY(!m_view->indexWidget(viewIndex(kControl)));
 
-        QCOMPARE(m_model->editState(kControl, 0), EditState::None);
+        QCOMPARE(m_model->state()->editState(kControl, 0), EditState::None);
         QCOMPARE(m_model->valueIndex(kControl, 0).data().toString(),
                  QStringLiteral("forward | released"));
         // An edit of another parameter is the one that must come, and alone: anything the three
@@ -345,7 +345,7 @@ private slots:
     void aBitFieldOutsideTheLimitsIsRefused()
     {
         // Below the minimum 0 already: left alone it may stay, changed it may not.
-        m_model->setValue(kControl, 0, qint32(0x80000005));
+        m_model->state()->setValue(kControl, 0, qint32(0x80000005));
         QSignalSpy edited(m_model.get(), &ParameterModel::valueEdited);
         QSignalSpy refused(m_delegate.get(), &ParameterDelegate::editRefused);
         auto *editor = qobject_cast<BitFieldEditor *>(openEditor(kControl));
@@ -412,7 +412,7 @@ private slots:
         QVERIFY(!openEditor(kState));
         QVERIFY(openEditor(kService));
         QTest::keyClick(m_view->indexWidget(viewIndex(kService)), Qt::Key_Escape);
-        m_model->setPasswordLevel(PasswordLevel::CpReadWrite);
+        m_model->state()->setPasswordLevel(PasswordLevel::CpReadWrite);
         QVERIFY(!openEditor(kService));
         const QModelIndex name
             = m_filter->mapFromSource(m_model->indexOf(kMaxFrequency, ParameterModel::NameColumn));

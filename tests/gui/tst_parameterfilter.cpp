@@ -51,9 +51,9 @@ private:
 private slots:
     void init()
     {
-        m_model.setDescription(drive());
+        m_model.state()->setDescription(drive());
         m_model.setFavourites({});
-        m_model.setPasswordLevel(PasswordLevel::Supervisor);
+        m_model.state()->setPasswordLevel(PasswordLevel::Supervisor);
         m_filter.setSourceModel(&m_model);
         m_filter.setFilterText({});
         m_filter.setDiffersFromDefaultOnly(false);
@@ -68,24 +68,24 @@ private slots:
         filter.setSourceModel(&model);
         QAbstractItemModelTester tester(&filter,
                                         QAbstractItemModelTester::FailureReportingMode::QtTest);
-        model.setDescription(drive());
+        model.state()->setDescription(drive());
         for (const char *text : { "o", "op", "op.1", "frequency", "zzz", "" })
             filter.setFilterText(QString::fromLatin1(text));
         filter.setFilterText(QStringLiteral("fcon"));
-        model.setValue(kState, 0, 0);
-        model.setValue(kState, 0, 66);
+        model.state()->setValue(kState, 0, 0);
+        model.state()->setValue(kState, 0, 66);
         filter.setDiffersFromDefaultOnly(true);
-        model.setValue(kMaxFrequency, 1, 5000);
+        model.state()->setValue(kMaxFrequency, 1, 5000);
         filter.setFavouritesOnly(true);
         model.setFavourite(kState, true);
         filter.setHideAboveLevel(true);
-        model.setPasswordLevel(PasswordLevel::CpReadOnly);
+        model.state()->setPasswordLevel(PasswordLevel::CpReadOnly);
         filter.sort(ParameterModel::columnOfSet(0));
-        model.setDescription(drive());
+        model.state()->setDescription(drive());
         filter.setFilterText({});
         filter.setFavouritesOnly(false);
         filter.setDiffersFromDefaultOnly(false);
-        model.clear();
+        model.state()->clear();
         QCOMPARE(filter.rowCount(), 0);
     }
 
@@ -93,7 +93,7 @@ private slots:
     {
         QVERIFY(!m_filter.isFiltering());
         QCOMPARE(visibleGroups(m_filter), ids({ "ru", "oP", "Pn", "dr" }));
-        QCOMPARE(visibleIds(m_filter).size(), m_model.description().parameterCount());
+        QCOMPARE(visibleIds(m_filter).size(), m_model.state()->description().parameterCount());
     }
 
     void searchesById()
@@ -149,9 +149,9 @@ private slots:
     void searchFollowsValueUpdates()
     {
         m_filter.setFilterText(QStringLiteral("fcon"));
-        m_model.setValue(kState, 0, 0); // noP
+        m_model.state()->setValue(kState, 0, 0); // noP
         QVERIFY(visibleGroups(m_filter).isEmpty());
-        m_model.setValue(kState, 0, 66);
+        m_model.state()->setValue(kState, 0, 66);
         QCOMPARE(visibleIds(m_filter), ids({ "ru.00" }));
         m_model.setShowRawValues(true);
         m_filter.setFilterText(QStringLiteral("-4180"));
@@ -163,9 +163,9 @@ private slots:
         // ru.00 and ru.03 differ too, but are read-only: no setting anyone changed.
         m_filter.setDiffersFromDefaultOnly(true);
         QCOMPARE(visibleIds(m_filter), ids({ "oP.10", "oP.12", "Pn.05" }));
-        m_model.setValue(kMaxFrequency, 1, 5000);
+        m_model.state()->setValue(kMaxFrequency, 1, 5000);
         QCOMPARE(visibleIds(m_filter), ids({ "oP.12", "Pn.05" }));
-        m_model.setValue(kRampTime, 0, 600);
+        m_model.state()->setValue(kRampTime, 0, 600);
         QCOMPARE(visibleIds(m_filter), ids({ "oP.11", "oP.12", "Pn.05" }));
         m_filter.setFilterText(QStringLiteral("oP"));
         QCOMPARE(visibleIds(m_filter), ids({ "oP.11", "oP.12" }));
@@ -187,13 +187,13 @@ private slots:
     {
         m_filter.setHideAboveLevel(true);
         QCOMPARE(visibleIds(m_filter).size(), 8);
-        m_model.setPasswordLevel(PasswordLevel::CpReadWrite);
+        m_model.state()->setPasswordLevel(PasswordLevel::CpReadWrite);
         QVERIFY(!visibleIds(m_filter).contains(QStringLiteral("Pn.07")));
         QCOMPARE(visibleIds(m_filter).size(), 7);
         m_filter.setHideAboveLevel(false); // greyed instead
         QVERIFY(visibleIds(m_filter).contains(QStringLiteral("Pn.07")));
         m_filter.setHideAboveLevel(true);
-        m_model.setPasswordLevel(PasswordLevel::CpReadOnly);
+        m_model.state()->setPasswordLevel(PasswordLevel::CpReadOnly);
         // Read-only parameters stay; those written from CP read/write on go.
         QCOMPARE(visibleIds(m_filter), ids({ "ru.00", "ru.03" }));
     }

@@ -29,7 +29,7 @@ QString shownValue(const ParameterModel &model, quint16 address, int set = 0)
 // The model only asks for a write; the edit path (ValueEdits::pending) has the cells marked.
 void markPendingAsTheEditPathDoes(ParameterModel &model)
 {
-    QObject::connect(&model, &ParameterModel::valueEdited, &model, &ParameterModel::markPending);
+    QObject::connect(&model, &ParameterModel::valueEdited, model.state(), &DriveState::markPending);
 }
 
 } // namespace
@@ -44,25 +44,25 @@ private slots:
         ParameterModel model;
         QAbstractItemModelTester tester(&model,
                                         QAbstractItemModelTester::FailureReportingMode::QtTest);
-        model.setDescription(drive());
-        model.setValue(kMaxFrequency, 2, 7000);
-        model.setValues(kMaxFrequency, 0xF0, 100);
+        model.state()->setDescription(drive());
+        model.state()->setValue(kMaxFrequency, 2, 7000);
+        model.state()->setValues(kMaxFrequency, 0xF0, 100);
         model.setShowRawValues(true);
-        model.setPasswordLevel(PasswordLevel::CpReadOnly);
+        model.state()->setPasswordLevel(PasswordLevel::CpReadOnly);
         model.setFavourite(kRampTime, true);
         QVERIFY(model.setData(model.indexOf(kState), true, ParameterModel::FavouriteRole));
-        model.setPasswordLevel(PasswordLevel::Supervisor);
+        model.state()->setPasswordLevel(PasswordLevel::Supervisor);
         QVERIFY(model.setData(model.valueIndex(kMaxFrequency, 1), 7100));
-        model.markFailed(kMaxFrequency, 0x02, QStringLiteral("write protected"));
-        model.setDescription(drive());
-        model.clear();
+        model.state()->markFailed(kMaxFrequency, 0x02, QStringLiteral("write protected"));
+        model.state()->setDescription(drive());
+        model.state()->clear();
         QCOMPARE(model.rowCount(), 0);
     }
 
     void groupsInTheDrivesOrderWithTheirParameters()
     {
         ParameterModel model;
-        model.setDescription(drive());
+        model.state()->setDescription(drive());
         QCOMPARE(model.rowCount(), 4);
         QCOMPARE(model.columnCount(), int(ParameterModel::ColumnCount));
         const QModelIndex ru = model.index(0, 0);
@@ -87,7 +87,7 @@ private slots:
     void showsValuesAsTheDriveDoes()
     {
         ParameterModel model;
-        model.setDescription(drive());
+        model.state()->setDescription(drive());
         QCOMPARE(shownValue(model, kState), QStringLiteral("Fcon"));
         QCOMPARE(shownValue(model, kFrequency), QStringLiteral("-52.25 Hz"));
         QCOMPARE(shownValue(model, kMaxFrequency, 0), QStringLiteral("50.00 Hz"));
@@ -118,7 +118,7 @@ private slots:
     void aSingleValueFillsTheFirstValueColumnOnly()
     {
         ParameterModel model;
-        model.setDescription(drive());
+        model.state()->setDescription(drive());
         const QModelIndex first = model.indexOf(kRampTime, ParameterModel::columnOfSet(0));
         const QModelIndex second = model.indexOf(kRampTime, ParameterModel::columnOfSet(1));
         QCOMPARE(first.data(ParameterModel::SetRole).toInt(), 0);
@@ -128,9 +128,9 @@ private slots:
         QVERIFY(!(second.flags() & Qt::ItemIsEditable));
         // Any set reaches the one value; its cell is the first.
         QCOMPARE(model.valueIndex(kRampTime, 5), first);
-        QVERIFY(model.setValue(kRampTime, 5, 700));
+        QVERIFY(model.state()->setValue(kRampTime, 5, 700));
         QCOMPARE(first.data().toString(), QStringLiteral("7.00 s"));
-        QCOMPARE(model.value(kRampTime, 0).value_or(-1), 700);
+        QCOMPARE(model.state()->value(kRampTime, 0).value_or(-1), 700);
     }
 
     void unreadValuesAreMarkedNotGuessed()
@@ -139,18 +139,18 @@ private slots:
         description.groups[1].parameters[1].values[0].reset();
         description.groups[1].parameters[1].error = QStringLiteral("inverter busy");
         ParameterModel model;
-        model.setDescription(description);
+        model.state()->setDescription(description);
         const QModelIndex cell = model.valueIndex(kRampTime, 0);
         QCOMPARE(cell.data().toString(), QStringLiteral("?"));
         QVERIFY(!cell.data(ParameterModel::RawValueRole).isValid());
         QVERIFY(cell.data(Qt::ToolTipRole).toString().contains(QStringLiteral("inverter busy")));
-        QVERIFY(!model.value(kRampTime, 0));
+        QVERIFY(!model.state()->value(kRampTime, 0));
     }
 
     void showsRawValuesOnDemand()
     {
         ParameterModel model;
-        model.setDescription(drive());
+        model.state()->setDescription(drive());
         QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
         QCOMPARE(model.valueIndex(kFrequency, 0).data(ParameterModel::RawValueRole).toInt(), -4180);
         model.setShowRawValues(true);
@@ -169,10 +169,10 @@ private slots:
     void aValueUpdateChangesJustItsCell()
     {
         ParameterModel model;
-        model.setDescription(drive());
+        model.state()->setDescription(drive());
         QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
         QSignalSpy reset(&model, &QAbstractItemModel::modelAboutToBeReset);
-        QVERIFY(model.setValue(kMaxFrequency, 3, 7000));
+        QVERIFY(model.state()->setValue(kMaxFrequency, 3, 7000));
         QCOMPARE(changed.size(), 1);
         const QModelIndex cell = model.valueIndex(kMaxFrequency, 3);
         QCOMPARE(changed.at(0).at(0).value<QModelIndex>(), cell);
@@ -180,27 +180,27 @@ private slots:
         QCOMPARE(cell.data().toString(), QStringLiteral("70.00 Hz"));
 
         // The same value again: nothing to redraw.
-        QVERIFY(model.setValue(kMaxFrequency, 3, 7000));
+        QVERIFY(model.state()->setValue(kMaxFrequency, 3, 7000));
         QCOMPARE(changed.size(), 1);
 
         // A burst, as polling the run display brings it: one cell each, never a reset.
         for (int i = 0; i < 500; ++i)
-            model.setValue(kFrequency, 0, i);
+            model.state()->setValue(kFrequency, 0, i);
         QCOMPARE(changed.size(), 1 + 500);
         QCOMPARE(reset.size(), 0);
         QCOMPARE(shownValue(model, kFrequency), QStringLiteral("6.24 Hz"));
 
-        QVERIFY(!model.setValue(0x0999, 0, 1));
-        QVERIFY(!model.setValue(kMaxFrequency, 8, 1));
+        QVERIFY(!model.state()->setValue(0x0999, 0, 1));
+        QVERIFY(!model.state()->setValue(kMaxFrequency, 8, 1));
         QCOMPARE(changed.size(), 501);
     }
 
     void valuesNotReadSinceTheDriveFellSilentAreStale()
     {
         ParameterModel model;
-        model.setDescription(drive());
+        model.state()->setDescription(drive());
         QAbstractItemModelTester tester(&model);
-        QVERIFY(model.setValue(kFrequency, 0, 100));
+        QVERIFY(model.state()->setValue(kFrequency, 0, 100));
         const QModelIndex cell = model.valueIndex(kFrequency, 0);
         const QDateTime read = cell.data(ParameterModel::LastReadRole).toDateTime();
         QVERIFY(read.isValid());
@@ -208,9 +208,9 @@ private slots:
         const QVariant freshForeground = cell.data(Qt::ForegroundRole);
 
         QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
-        model.setStaleSince(read.toMSecsSinceEpoch() + 1000);
+        model.state()->setStaleSince(read.toMSecsSinceEpoch() + 1000);
         QVERIFY(!changed.isEmpty());
-        QVERIFY(model.isStale(kFrequency));
+        QVERIFY(model.state()->isStale(kFrequency));
         QVERIFY(cell.data(ParameterModel::StaleRole).toBool());
         QVERIFY(cell.data(Qt::FontRole).value<QFont>().italic());
         QVERIFY(cell.data(Qt::ForegroundRole) != freshForeground);
@@ -222,26 +222,26 @@ private slots:
         QVERIFY(!model.indexOf(kFrequency).data(ParameterModel::StaleRole).toBool());
 
         // The drive answers again: nothing is stale.
-        model.setStaleSince(0);
+        model.state()->setStaleSince(0);
         QVERIFY(!cell.data(ParameterModel::StaleRole).toBool());
         QVERIFY(!cell.data(Qt::FontRole).value<QFont>().italic());
         QVERIFY(!cell.data(Qt::ToolTipRole).toString().contains(QStringLiteral("not answering")));
 
         // A value read after the drive fell silent is fresh, even when it did not change.
         const qint64 since = read.toMSecsSinceEpoch() + 1;
-        model.setStaleSince(since);
-        QVERIFY(model.isStale(kFrequency));
+        model.state()->setStaleSince(since);
+        QVERIFY(model.state()->isStale(kFrequency));
         changed.clear();
         QTRY_VERIFY(QDateTime::currentMSecsSinceEpoch() > since);
-        QVERIFY(model.setValue(kFrequency, 0, 100));
-        QVERIFY(!model.isStale(kFrequency));
+        QVERIFY(model.state()->setValue(kFrequency, 0, 100));
+        QVERIFY(!model.state()->isStale(kFrequency));
         QCOMPARE(changed.size(), 1); // its row, so that the mark goes
     }
 
     void editingEmitsValueEditedAndMarksThePendingCell()
     {
         ParameterModel model;
-        model.setDescription(drive());
+        model.state()->setDescription(drive());
         markPendingAsTheEditPathDoes(model);
         QSignalSpy edited(&model, &ParameterModel::valueEdited);
         const QModelIndex cell = model.valueIndex(kMaxFrequency, 2);
@@ -255,7 +255,7 @@ private slots:
         QVERIFY(cell.data(Qt::BackgroundRole).value<QColor>().isValid());
         QVERIFY(!cell.data(Qt::DecorationRole).value<QIcon>().isNull());
         // The drive's value stays what it reported until the write is confirmed.
-        QCOMPARE(model.value(kMaxFrequency, 2).value_or(-1), 5000);
+        QCOMPARE(model.state()->value(kMaxFrequency, 2).value_or(-1), 5000);
 
         // A parameter that is not set-programmable is written as set 0.
         QVERIFY(model.setData(model.valueIndex(kRampTime, 0), QStringLiteral("12.5 s")));
@@ -268,7 +268,7 @@ private slots:
         QVERIFY(!model.setData(model.valueIndex(kRampTime, 0), QStringLiteral("12.555")));
         QVERIFY(model.setData(model.valueIndex(kMaxFrequency, 0), 5000));
         QCOMPARE(edited.size(), 2);
-        QCOMPARE(model.editState(kMaxFrequency, 0), EditState::None);
+        QCOMPARE(model.state()->editState(kMaxFrequency, 0), EditState::None);
 
         QString error;
         QVERIFY(!model.requestWrite(kMaxFrequency, 0x01, -1, &error));
@@ -276,24 +276,24 @@ private slots:
         QVERIFY(model.requestWrite(kMaxFrequency, 0xFF, 100, &error));
         QCOMPARE(edited.size(), 3);
         for (int set = 0; set < kParameterSets; ++set)
-            QCOMPARE(model.editState(kMaxFrequency, set), EditState::Pending);
+            QCOMPARE(model.state()->editState(kMaxFrequency, set), EditState::Pending);
     }
 
     void writtenAndFailedCellsSayWhy()
     {
         ParameterModel model;
-        model.setDescription(drive());
+        model.state()->setDescription(drive());
         markPendingAsTheEditPathDoes(model);
         QVERIFY(model.requestWrite(kMaxFrequency, 0x06, 7000));
         QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
-        model.markWritten(kMaxFrequency, 0x02);
+        model.state()->markWritten(kMaxFrequency, 0x02);
         QCOMPARE(changed.size(), 1);
-        QCOMPARE(model.editState(kMaxFrequency, 1), EditState::Written);
-        QCOMPARE(model.value(kMaxFrequency, 1).value_or(-1), 7000);
+        QCOMPARE(model.state()->editState(kMaxFrequency, 1), EditState::Written);
+        QCOMPARE(model.state()->value(kMaxFrequency, 1).value_or(-1), 7000);
         const QColor written
             = model.valueIndex(kMaxFrequency, 1).data(Qt::BackgroundRole).value<QColor>();
 
-        model.markFailed(kMaxFrequency, 0x04, QStringLiteral("parameter write protected"));
+        model.state()->markFailed(kMaxFrequency, 0x04, QStringLiteral("parameter write protected"));
         const QModelIndex failed = model.valueIndex(kMaxFrequency, 2);
         QCOMPARE(failed.data(ParameterModel::EditStateRole).value<EditState>(), EditState::Failed);
         QCOMPARE(failed.data(Qt::ToolTipRole).toString(),
@@ -303,17 +303,17 @@ private slots:
 
         // A read-back that differs from what was written fails the cell.
         QVERIFY(model.requestWrite(kMaxFrequency, 0x08, 8000));
-        model.confirmReadBack(kMaxFrequency, 3, 7999);
-        QCOMPARE(model.editState(kMaxFrequency, 3), EditState::Failed);
+        model.state()->confirmReadBack(kMaxFrequency, 3, 7999);
+        QCOMPARE(model.state()->editState(kMaxFrequency, 3), EditState::Failed);
         QCOMPARE(model.valueIndex(kMaxFrequency, 3).data(Qt::ToolTipRole).toString(),
                  QStringLiteral("Writing 80.00 Hz failed: the drive holds 79.99 Hz, not 80.00 Hz"));
         QVERIFY(model.requestWrite(kMaxFrequency, 0x10, 8000));
-        model.confirmReadBack(kMaxFrequency, 4, 8000);
-        QCOMPARE(model.editState(kMaxFrequency, 4), EditState::Written);
+        model.state()->confirmReadBack(kMaxFrequency, 4, 8000);
+        QCOMPARE(model.state()->editState(kMaxFrequency, 4), EditState::Written);
 
-        model.clearEditStates();
+        model.state()->clearEditStates();
         for (int set = 0; set < kParameterSets; ++set)
-            QCOMPARE(model.editState(kMaxFrequency, set), EditState::None);
+            QCOMPARE(model.state()->editState(kMaxFrequency, set), EditState::None);
         QVERIFY(!model.valueIndex(kMaxFrequency, 2).data(Qt::BackgroundRole).isValid());
     }
 
@@ -322,10 +322,10 @@ private slots:
     void changedFileCellsLookWrittenAndSaySo()
     {
         ParameterModel model;
-        model.setDescription(drive());
-        QVERIFY(model.putValue(kMaxFrequency, 1, 7000));
+        model.state()->setDescription(drive());
+        QVERIFY(model.state()->putValue(kMaxFrequency, 1, 7000));
         QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
-        model.markChanged(kMaxFrequency, 0x02);
+        model.state()->markChanged(kMaxFrequency, 0x02);
         QCOMPARE(changed.size(), 1);
         const QModelIndex cell = model.valueIndex(kMaxFrequency, 1);
         QCOMPARE(cell.data(ParameterModel::EditStateRole).value<EditState>(), EditState::Changed);
@@ -336,19 +336,19 @@ private slots:
                  QStringLiteral("Changed in the file: 70.00 Hz; save to keep it"));
         QCOMPARE(cell.data().toString(), QStringLiteral("70.00 Hz"));
         // Nothing was asked of a drive: a stray "written" leaves the cell as it is.
-        model.markWritten(kMaxFrequency, 0x02);
-        QCOMPARE(model.editState(kMaxFrequency, 1), EditState::Changed);
-        QCOMPARE(model.value(kMaxFrequency, 1), 7000);
+        model.state()->markWritten(kMaxFrequency, 0x02);
+        QCOMPARE(model.state()->editState(kMaxFrequency, 1), EditState::Changed);
+        QCOMPARE(model.state()->value(kMaxFrequency, 1), 7000);
 
-        QVERIFY(model.putValue(kMaxFrequency, 1, 5000));
-        QCOMPARE(model.editState(kMaxFrequency, 1), EditState::None);
+        QVERIFY(model.state()->putValue(kMaxFrequency, 1, 5000));
+        QCOMPARE(model.state()->editState(kMaxFrequency, 1), EditState::None);
         QVERIFY(!cell.data(Qt::BackgroundRole).isValid());
     }
 
     void editStateColoursKeepTheThemesLightness()
     {
         ParameterModel model;
-        model.setDescription(drive());
+        model.state()->setDescription(drive());
         markPendingAsTheEditPathDoes(model);
         QVERIFY(model.requestWrite(kRampTime, 0x01, 900));
         const QModelIndex cell = model.valueIndex(kRampTime, 0);
@@ -368,7 +368,7 @@ private slots:
     void readOnlyParametersAreNotEditable()
     {
         ParameterModel model;
-        model.setDescription(drive());
+        model.state()->setDescription(drive());
         const QModelIndex cell = model.valueIndex(kFrequency, 0);
         QVERIFY(!(cell.flags() & Qt::ItemIsEditable));
         QVERIFY(!cell.data(ParameterModel::EditableRole).toBool());
@@ -383,30 +383,30 @@ private slots:
     void parametersAboveThePasswordLevelAreLocked()
     {
         ParameterModel model;
-        model.setDescription(drive());
-        QVERIFY(model.isEditable(kService));
-        QSignalSpy level(&model, &ParameterModel::passwordLevelChanged);
-        model.setPasswordLevel(PasswordLevel::CpReadWrite);
+        model.state()->setDescription(drive());
+        QVERIFY(model.state()->isEditable(kService));
+        QSignalSpy level(model.state(), &DriveState::passwordLevelChanged);
+        model.state()->setPasswordLevel(PasswordLevel::CpReadWrite);
         QCOMPARE(level.size(), 1);
         const QModelIndex service = model.valueIndex(kService, 0);
         QVERIFY(service.data(ParameterModel::AboveLevelRole).toBool());
         QVERIFY(!(service.flags() & Qt::ItemIsEditable));
         QVERIFY(service.data(Qt::ForegroundRole).value<QColor>().isValid());
-        QVERIFY(model.isEditable(kMaxFrequency));
+        QVERIFY(model.state()->isEditable(kMaxFrequency));
         QString error;
         QVERIFY(!model.requestWrite(kService, 0x01, 20, &error));
         QCOMPARE(error, QStringLiteral("Pn.07 needs password level Application (in force: CP read/write)"));
 
-        model.setPasswordLevel(PasswordLevel::CpReadOnly);
-        QVERIFY(model.isAboveLevel(kMaxFrequency)); // written from CP read/write on
-        QVERIFY(!model.isAboveLevel(kFrequency)); // read-only: only its read level counts
+        model.state()->setPasswordLevel(PasswordLevel::CpReadOnly);
+        QVERIFY(model.state()->isAboveLevel(kMaxFrequency)); // written from CP read/write on
+        QVERIFY(!model.state()->isAboveLevel(kFrequency)); // read-only: only its read level counts
         QVERIFY(!model.indexOf(kFrequency).data(Qt::ForegroundRole).isValid());
     }
 
     void marksFavourites()
     {
         ParameterModel model;
-        model.setDescription(drive());
+        model.state()->setDescription(drive());
         QSignalSpy favourites(&model, &ParameterModel::favouritesChanged);
         QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
         const QModelIndex id = model.indexOf(kRampTime);
@@ -425,14 +425,14 @@ private slots:
         QVERIFY(!model.isFavourite(kRampTime));
         QCOMPARE(favourites.size(), 3);
 
-        model.setDescription(drive());
+        model.state()->setDescription(drive());
         QVERIFY(model.indexOf(kSource).data(ParameterModel::FavouriteRole).toBool());
     }
 
     void knowsWhichValuesDifferFromTheDefault()
     {
         ParameterModel model;
-        model.setDescription(drive());
+        model.state()->setDescription(drive());
         auto differs = [&model](quint16 address) {
             return model.indexOf(address).data(ParameterModel::DiffersFromDefaultRole).toBool();
         };
@@ -440,33 +440,33 @@ private slots:
         QVERIFY(!differs(kRampTime));
         QVERIFY(differs(kControl));
         QVERIFY(!differs(kErrorMask));
-        model.setValue(kMaxFrequency, 1, 5000);
+        model.state()->setValue(kMaxFrequency, 1, 5000);
         QVERIFY(!differs(kMaxFrequency));
 
         // What the user cannot set is no setting that differs: read-only values, values the
         // drive changes itself (properties 2 bit 9), the password parameter.
-        QVERIFY(model.value(kFrequency, 0) != model.parameter(kFrequency)->defaultValue);
+        QVERIFY(model.state()->value(kFrequency, 0) != model.state()->parameter(kFrequency)->defaultValue);
         QVERIFY(!differs(kFrequency));
         DriveDescription changing = drive();
         auto *ramp = const_cast<ParameterDescription *>(changing.find(kRampTime));
         ramp->properties2 |= 1u << 9;
         ramp->values[0] = 700;
-        model.setDescription(changing);
+        model.state()->setDescription(changing);
         QVERIFY(!differs(kRampTime));
         ramp->properties2 &= ~(1u << 9);
-        model.setDescription(changing);
+        model.state()->setDescription(changing);
         QVERIFY(differs(kRampTime));
     }
 
     void searchTextHoldsIdsNameAndShownValues()
     {
         ParameterModel model;
-        model.setDescription(drive());
+        model.state()->setDescription(drive());
         const QString text
             = model.indexOf(kFrequency).data(ParameterModel::SearchTextRole).toString();
         for (const char *part : { "ru.03", "ru.3", "0203h", "actual frequency", "-52.25 hz" })
             QVERIFY2(text.contains(QLatin1String(part)), part);
-        model.setValue(kFrequency, 0, 800);
+        model.state()->setValue(kFrequency, 0, 800);
         QVERIFY(model.indexOf(kFrequency)
                     .data(ParameterModel::SearchTextRole)
                     .toString()
@@ -477,15 +477,15 @@ private slots:
     {
         ParameterModel model;
         const DriveDescription original = drive();
-        model.setDescription(original);
-        QCOMPARE(model.description(), original);
-        model.setValue(kMaxFrequency, 7, 1234);
+        model.state()->setDescription(original);
+        QCOMPARE(model.state()->description(), original);
+        model.state()->setValue(kMaxFrequency, 7, 1234);
         QVERIFY(model.requestWrite(kRampTime, 0x01, 900)); // pending: not the drive's yet
-        const DriveDescription now = model.description();
+        const DriveDescription now = model.state()->description();
         QCOMPARE(now.find(kMaxFrequency)->values[7].value_or(-1), 1234);
         QCOMPARE(now.find(kRampTime)->values[0].value_or(-1), 500);
-        QCOMPARE(model.parameter(kControl)->name, QStringLiteral("Control word"));
-        QVERIFY(!model.parameter(0x0999));
+        QCOMPARE(model.state()->parameter(kControl)->name, QStringLiteral("Control word"));
+        QVERIFY(!model.state()->parameter(0x0999));
     }
 };
 

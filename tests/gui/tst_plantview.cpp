@@ -281,7 +281,7 @@ private slots:
         QVERIFY(m_dock->backupAction()->isEnabled());
         m_dock->backupAction()->trigger();
         QVERIFY(m_dock->job() == PlantDock::Job::Backup);
-        const qint32 before = m_window->model()->value(kDemoPeriod, 0).value_or(0);
+        const qint32 before = m_window->model()->state()->value(kDemoPeriod, 0).value_or(0);
         QVERIFY(m_window->model()->requestWrite(kDemoPeriod, 0x01, 1234));
         QVERIFY(QTest::qWaitFor(
             [this] { return driveValue(m_window->session()->client(), kDemoPeriod) == 1234; },
@@ -315,7 +315,7 @@ private slots:
         QVERIFY(openDrive(QStringLiteral("cabinet"), 5,
                           QStringLiteral("tcp:127.0.0.1:%1").arg(m_cabinet->port())));
         QVERIFY(m_window->windowTitle().contains(QStringLiteral("DriveDesk")));
-        const qint32 before = m_window->model()->value(kFixedSpeed1, 0).value_or(0);
+        const qint32 before = m_window->model()->state()->value(kFixedSpeed1, 0).value_or(0);
         QVERIFY(m_window->model()->requestWrite(kFixedSpeed1, 0x01, before + 17));
         QVERIFY(QTest::qWaitFor(
             [&] { return driveValue(m_window->session()->client(), kFixedSpeed1) == before + 17; },

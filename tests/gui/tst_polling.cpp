@@ -32,20 +32,20 @@ private slots:
     {
         SimulatedDrive drive;
         QVERIFY(drive.start());
-        PollingController polling(&drive.client, &drive.model);
+        PollingController polling(&drive.client, drive.model.state());
         QCOMPARE(polling.group(), QStringLiteral("ru"));
         QVERIFY(!polling.isEnabled());
         QSignalSpy enabled(&polling, &PollingController::enabledChanged);
         QSignalSpy changed(&drive.model, &QAbstractItemModel::dataChanged);
 
-        const std::optional<qint32> first = drive.model.value(kActualFrequency, 0);
+        const std::optional<qint32> first = drive.model.state()->value(kActualFrequency, 0);
         QVERIFY(first);
         polling.setIntervalMs(100);
         polling.setEnabled(true);
         QVERIFY(polling.isEnabled());
         QCOMPARE(enabled.size(), 1);
         // The demo cycle starts the motor a second after the drive's clock began.
-        QTRY_VERIFY_WITH_TIMEOUT(drive.model.value(kActualFrequency, 0) != first, kWaitMs);
+        QTRY_VERIFY_WITH_TIMEOUT(drive.model.state()->value(kActualFrequency, 0) != first, kWaitMs);
         QTRY_VERIFY_WITH_TIMEOUT(polling.roundsCompleted() >= 3, kWaitMs);
         const QModelIndex frequency = drive.model.valueIndex(kActualFrequency, 0);
         bool announced = false;
@@ -66,7 +66,7 @@ private slots:
     {
         SimulatedDrive drive;
         QVERIFY(drive.start());
-        PollingController polling(&drive.client, &drive.model);
+        PollingController polling(&drive.client, drive.model.state());
         polling.setIntervalMs(PollingController::kMinimumIntervalMs);
         polling.setEnabled(true);
         QTRY_VERIFY_WITH_TIMEOUT(polling.roundsCompleted() >= 2, kWaitMs);
@@ -84,7 +84,7 @@ private slots:
         // request of the test's own.
         QVERIFY(drive.answerToALaterRead());
         const int settled = records(traffic, TrafficRecord::Kind::Sent) - 1;
-        const DriveDescription shown = drive.model.description();
+        const DriveDescription shown = drive.model.state()->description();
         const GroupDescription *run = shown.findGroup(QStringLiteral("ru"));
         QVERIFY(run);
         QVERIFY2(settled <= int(run->parameters.size()), qPrintable(QString::number(settled)));
@@ -98,7 +98,7 @@ private slots:
     {
         SimulatedDrive drive(20000); // 20 ms per answer: a round outlasts the interval
         QVERIFY(drive.start({ 0x02 })); // the run display alone, or the scan takes long
-        PollingController polling(&drive.client, &drive.model);
+        PollingController polling(&drive.client, drive.model.state());
         QSignalSpy rounds(&polling, &PollingController::roundFinished);
         polling.setIntervalMs(PollingController::kMinimumIntervalMs);
         polling.setEnabled(true);
@@ -110,7 +110,7 @@ private slots:
     {
         SimulatedDrive drive;
         QVERIFY(drive.start());
-        PollingController polling(&drive.client, &drive.model);
+        PollingController polling(&drive.client, drive.model.state());
         QSignalSpy enabled(&polling, &PollingController::enabledChanged);
         QSignalSpy messages(&polling, &PollingController::message);
         polling.setIntervalMs(100);
@@ -129,7 +129,7 @@ private slots:
     {
         SimulatedDrive drive;
         QVERIFY(drive.start());
-        PollingController polling(&drive.client, &drive.model);
+        PollingController polling(&drive.client, drive.model.state());
         QSignalSpy messages(&polling, &PollingController::message);
         polling.setGroup(QStringLiteral("zz"));
         polling.setIntervalMs(PollingController::kMinimumIntervalMs);
@@ -144,7 +144,7 @@ private slots:
     void intervalStaysWithinBounds()
     {
         SimulatedDrive drive;
-        PollingController polling(&drive.client, &drive.model);
+        PollingController polling(&drive.client, drive.model.state());
         polling.setIntervalMs(0);
         QCOMPARE(polling.intervalMs(), PollingController::kMinimumIntervalMs);
         polling.setIntervalMs(1'000'000);

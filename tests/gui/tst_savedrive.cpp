@@ -94,7 +94,7 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(m_window->noticeBar()->kind(), NoticeBar::Kind::Problem, kWaitMs);
         const QString partNotice = m_window->noticeBar()->text();
         QVERIFY2(partNotice.contains(QStringLiteral("read only in part")), qPrintable(partNotice));
-        const int shown = m_window->model()->description().parameterCount();
+        const int shown = m_window->model()->state()->description().parameterCount();
         QVERIFY2(shown > 0 && shown < kSimulatedParameters, qPrintable(QString::number(shown)));
 
         const QString file = path(QStringLiteral("part.json"));
@@ -133,7 +133,7 @@ private slots:
         }
         // The notice of the part read is back; the table is as it was.
         QCOMPARE(m_window->noticeBar()->text(), partNotice);
-        QCOMPARE(m_window->model()->description().parameterCount(), shown);
+        QCOMPARE(m_window->model()->state()->description().parameterCount(), shown);
     }
 
     void staleValuesAreReadAgainBeforeTheyAreSaved()
@@ -142,7 +142,7 @@ private slots:
         const QString problem = serveAndConnect(*m_window, server);
         QVERIFY2(problem.isEmpty(), qPrintable(problem));
         const QModelIndex speed = m_window->model()->valueIndex(kFixedSpeed1, 2);
-        QCOMPARE(m_window->model()->value(kFixedSpeed1, 2), 100);
+        QCOMPARE(m_window->model()->state()->value(kFixedSpeed1, 2), 100);
 
         // Polling notices the silence (and, later, the drive back).
         auto *polling = m_window->findChild<QAction *>(QStringLiteral("pollingAction"));
@@ -172,7 +172,7 @@ private slots:
         const QFuture<Reply> write
             = m_window->session()->client()->writeValue(kFixedSpeed1, 777, quint8(1u << 2));
         QVERIFY(waitFinished(write) && write.result().ok());
-        QCOMPARE(m_window->model()->value(kFixedSpeed1, 2), 100);
+        QCOMPARE(m_window->model()->state()->value(kFixedSpeed1, 2), 100);
 
         const QString file = path(QStringLiteral("fresh.json"));
         QVERIFY(saveDriveAndWait(*m_window, file));

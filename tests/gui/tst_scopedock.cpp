@@ -211,8 +211,8 @@ private slots:
         QCOMPARE(driveValue(client, kChannel3Source), qint32(kOutputVoltage));
         QCOMPARE(driveValue(client, kChannel4Source), ChannelAssignment::kOff);
         // The parameter table shows what the scope wrote, not what it read before.
-        QCOMPARE(window.model()->value(kChannel1Source, 0), std::optional<qint32>(kActualFrequency));
-        QCOMPARE(window.model()->value(kChannel4Source, 0), std::optional<qint32>(ChannelAssignment::kOff));
+        QCOMPARE(window.model()->state()->value(kChannel1Source, 0), std::optional<qint32>(kActualFrequency));
+        QCOMPARE(window.model()->state()->value(kChannel4Source, 0), std::optional<qint32>(ChannelAssignment::kOff));
         const ScopeRecording &recording = *dock->recording();
         QCOMPARE(recording.channels[0].id, QStringLiteral("ru.03"));
         QCOMPARE(recording.channels[0].unit(), QStringLiteral("Hz"));

@@ -146,7 +146,7 @@ private slots:
         QVERIFY2(report.contains(QStringLiteral("op.20  Fixed speed 1: set 3: 777 1/min")), qPrintable(report));
         QVERIFY(part<QLabel>("downloadStatus")->text().contains(QStringLiteral("everything to write was written")));
         // The table reads the drive again.
-        QTRY_COMPARE_WITH_TIMEOUT(m_window->model()->value(kFixedSpeed1, 3), 777, kWaitMs);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->model()->state()->value(kFixedSpeed1, 3), 777, kWaitMs);
         dialog()->reject();
         QTRY_VERIFY(!dialog());
         QTRY_VERIFY(action->isEnabled());

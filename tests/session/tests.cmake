@@ -2,7 +2,7 @@
 # real client.
 drivedesk_add_test(NAME tst_sessionjobs LABELS unit TIMEOUT 300
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_sessionjobs.cpp
-    LIBS drivedesk_session drivedesk_bus)
+    LIBS drivedesk_state drivedesk_bus)
 
 # One change written and read back, against a sink the test answers in any order: when a
 # read-back sent before its write's answer counts.
@@ -19,7 +19,7 @@ drivedesk_add_test(NAME tst_download LABELS integration TIMEOUT 300
 drivedesk_add_test(NAME tst_lostanswers LABELS integration TIMEOUT 300
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_lostanswers.cpp
         ${CMAKE_CURRENT_LIST_DIR}/../client/SpoilingProxy.h
-    LIBS drivedesk_session drivedesk_bus)
+    LIBS drivedesk_state drivedesk_bus)
 
 # Scope recording: channels assigned and read back, samples in order with the drive's values,
 # the rate limit, a lost link and a silent drive, over HSP5 and DIN66019II.

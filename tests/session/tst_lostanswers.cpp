@@ -3,8 +3,8 @@
 
 #include "bus/SimulatedBus.h"
 #include "parameters/DriveDescription.h"
-#include "session/EditText.h"
-#include "session/ValueEdits.h"
+#include "state/EditText.h"
+#include "state/ValueEdits.h"
 
 using namespace DriveDesk;
 using namespace DriveDesk::ClientTest;

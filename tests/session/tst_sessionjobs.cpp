@@ -1,11 +1,11 @@
 #include "../client/ClientTestSupport.h"
 
 #include "session/CopySet.h"
-#include "session/EditText.h"
+#include "state/EditText.h"
 #include "session/PasswordLevelJob.h"
 #include "session/Polling.h"
 #include "session/ValueChange.h"
-#include "session/ValueEdits.h"
+#include "state/ValueEdits.h"
 #include "session/ValueReads.h"
 
 using namespace DriveDesk;

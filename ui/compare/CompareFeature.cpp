@@ -66,7 +66,7 @@ bool CompareFeature::hasDrive() const
 
 DriveDescription CompareFeature::drive() const
 {
-    return hasDrive() ? frame().model()->description() : DriveDescription();
+    return hasDrive() ? frame().state()->description() : DriveDescription();
 }
 
 QString CompareFeature::shownFilePath() const
@@ -77,7 +77,7 @@ QString CompareFeature::shownFilePath() const
 
 DriveDescription CompareFeature::shownFile() const
 {
-    return shownFilePath().isEmpty() ? DriveDescription() : frame().model()->description();
+    return shownFilePath().isEmpty() ? DriveDescription() : frame().state()->description();
 }
 
 int CompareFeature::writeToShownFile(const QList<ChosenValue> &values, QStringList *refusals)
@@ -86,7 +86,7 @@ int CompareFeature::writeToShownFile(const QList<ChosenValue> &values, QStringLi
         return 0;
     // The same rule as for a file on disk (what a download would write, within the limits),
     // then each value as if typed into the table: the file's editor makes it an edit.
-    DriveDesk::DriveDescription checked = frame().model()->description();
+    DriveDesk::DriveDescription checked = frame().state()->description();
     QList<ChosenValue> accepted;
     for (const ChosenValue &value : values) {
         if (ChosenValues::apply(checked, { value }, refusals) == 1)

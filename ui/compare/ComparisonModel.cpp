@@ -19,8 +19,10 @@ QString searchTextOf(const ComparisonRow &row, const DriveDescription &a,
 {
     QString text;
     for (const DriveDescription *side : { &a, &b }) {
-        if (const ParameterDescription *parameter = side->find(row.address))
-            text += ParameterRow(*parameter, row.id).searchText(false) + QLatin1Char('\n');
+        if (const ParameterDescription *parameter = side->find(row.address)) {
+            const ParameterState state(*parameter, row.id);
+            text += ParameterRow(state).searchText(false) + QLatin1Char('\n');
+        }
     }
     return text;
 }

@@ -16,7 +16,7 @@ AccessController::AccessController(DriveClient *client, ParameterModel *model, Q
     // A refresh or a scan reading ud.01 tells the level as well.
     connect(m_model, &QAbstractItemModel::dataChanged, this, &AccessController::modelDataChanged);
     connect(m_model, &QAbstractItemModel::modelReset, this, [this] {
-        const std::optional<qint32> value = m_model->value(kPasswordParameterAddress, 0);
+        const std::optional<qint32> value = m_model->state()->value(kPasswordParameterAddress, 0);
         if (value && passwordLevelFromReadValue(*value))
             takeReadValue(*value);
     });
@@ -24,7 +24,7 @@ AccessController::AccessController(DriveClient *client, ParameterModel *model, Q
 
 PasswordLevel AccessController::level() const
 {
-    return m_model->passwordLevel();
+    return m_model->state()->passwordLevel();
 }
 
 void AccessController::readLevel()
@@ -62,7 +62,7 @@ void AccessController::run(std::optional<qint32> password)
             emit message(tr("The password level could not be read: %1").arg(outcome.error));
             return;
         }
-        m_model->setValue(kPasswordParameterAddress, 0, *outcome.readValue);
+        m_model->state()->setValue(kPasswordParameterAddress, 0, *outcome.readValue);
         takeReadValue(*outcome.readValue);
     });
     watcher->setFuture(m_client->run(
@@ -83,7 +83,7 @@ void AccessController::takeReadValue(qint32 value)
     const PasswordLevel before = this->level();
     const bool changed = !m_known || *level != before;
     m_known = true;
-    m_model->setPasswordLevel(*level);
+    m_model->state()->setPasswordLevel(*level);
     if (changed) {
         emit levelChanged(*level);
         emit message(tr("Password level: %1").arg(levelName(*level)));
@@ -102,7 +102,7 @@ void AccessController::modelDataChanged(const QModelIndex &topLeft, const QModel
         return;
     }
     // A value that names no level is a password on its way, not a reading.
-    const std::optional<qint32> value = m_model->value(kPasswordParameterAddress, 0);
+    const std::optional<qint32> value = m_model->state()->value(kPasswordParameterAddress, 0);
     const std::optional<PasswordLevel> level
         = value ? passwordLevelFromReadValue(*value) : std::nullopt;
     if (level && (!m_known || *level != this->level()))

@@ -52,7 +52,7 @@ void DocumentEditor::rememberSaved(quint16 address)
         return;
     DocumentValueCommand::Values values {};
     for (int set = 0; set < kParameterSets; ++set)
-        values[std::size_t(set)] = m_model->value(address, set);
+        values[std::size_t(set)] = m_model->state()->value(address, set);
     m_saved.insert(address, values);
 }
 
@@ -60,24 +60,24 @@ void DocumentEditor::markChanges()
 {
     for (auto it = m_saved.cbegin(); it != m_saved.cend(); ++it) {
         const quint16 address = it.key();
-        const ParameterDescription *parameter = m_model->parameter(address);
+        const ParameterDescription *parameter = m_model->state()->parameter(address);
         if (!parameter)
             continue;
         const int cells = parameter->isSetProgrammable() ? kParameterSets : 1;
         quint8 changed = 0;
         quint8 unchanged = 0;
         for (int set = 0; set < cells; ++set) {
-            const bool differs = m_model->value(address, set) != it.value()[std::size_t(set)];
-            const bool marked = m_model->editState(address, set) == EditState::Changed;
+            const bool differs = m_model->state()->value(address, set) != it.value()[std::size_t(set)];
+            const bool marked = m_model->state()->editState(address, set) == EditState::Changed;
             if (differs && !marked)
                 changed |= quint8(1u << set);
             else if (!differs && marked)
                 unchanged |= quint8(1u << set);
         }
         if (changed)
-            m_model->markChanged(address, changed);
+            m_model->state()->markChanged(address, changed);
         if (unchanged)
-            m_model->clearEditState(address, unchanged);
+            m_model->state()->clearEditState(address, unchanged);
     }
 }
 
@@ -88,7 +88,7 @@ void DocumentEditor::onCleanChanged(bool clean)
     // Saved (or undone back to what was saved): the model is what the file holds on disk.
     for (auto it = m_saved.begin(); it != m_saved.end(); ++it) {
         for (int set = 0; set < kParameterSets; ++set)
-            it.value()[std::size_t(set)] = m_model->value(it.key(), set);
+            it.value()[std::size_t(set)] = m_model->state()->value(it.key(), set);
     }
     markChanges();
 }
@@ -97,23 +97,15 @@ QUndoCommand *DocumentEditor::makeChange(quint16 address, quint8 *setMask, qint3
                                          const QString &text, QString *refusal,
                                          QUndoCommand *parent)
 {
-    const ParameterDescription *parameter = m_model->parameter(address);
+    const ParameterDescription *parameter = m_model->state()->parameter(address);
     if (!parameter) {
         *refusal = tr("the file has no parameter %1").arg(ParameterId::hexAddress(address));
         return nullptr;
     }
     *setMask = SetList::setsWritten(*parameter, *setMask);
-    if (*setMask == 0) {
-        *refusal = tr("no set chosen");
-        return nullptr;
-    }
-    if (!m_model->isEditable(address)) {
-        *refusal = tr("%1 is read-only").arg(m_model->editText(address).id());
-        return nullptr;
-    }
-    if (const QString problem = ParameterFormat(*parameter).limitsProblem(raw);
-        !problem.isEmpty()) {
-        *refusal = problem;
+    if (const QString refused = m_model->state()->writeRefusal(address, *setMask, raw);
+        !refused.isEmpty()) {
+        *refusal = refused;
         return nullptr;
     }
     DocumentValueCommand::Values before {};
@@ -122,7 +114,7 @@ QUndoCommand *DocumentEditor::makeChange(quint16 address, quint8 *setMask, qint3
     for (int set = 0; set < kParameterSets; ++set) {
         if (!(*setMask & (1u << set)))
             continue;
-        before[std::size_t(set)] = m_model->value(address, set);
+        before[std::size_t(set)] = m_model->state()->value(address, set);
         after[std::size_t(set)] = raw;
         changes = changes || before[std::size_t(set)] != raw;
     }
@@ -136,15 +128,14 @@ QUndoCommand *DocumentEditor::makeChange(quint16 address, quint8 *setMask, qint3
 
 void DocumentEditor::write(quint16 address, quint8 setMask, qint32 raw)
 {
-    const EditText text = m_model->editText(address);
+    const EditText text = m_model->state()->editText(address);
     QString refusal;
     QUndoCommand *command = makeChange(
         address, &setMask, raw,
         tr("Change %1 to %2%3").arg(text.id(), text.value(raw), text.inSets(setMask)), &refusal);
     if (!command) {
         if (!refusal.isEmpty()) {
-            emit message(tr("%1 = %2 not changed%3: %4")
-                             .arg(text.id(), text.value(raw), text.inSets(setMask), refusal));
+            emit message(tr("%1; the file is unchanged").arg(refusal));
         }
         return;
     }
@@ -155,13 +146,13 @@ void DocumentEditor::write(quint16 address, quint8 setMask, qint32 raw)
 
 void DocumentEditor::resetToDefault(quint16 address, quint8 setMask)
 {
-    const ParameterDescription *parameter = m_model->parameter(address);
+    const ParameterDescription *parameter = m_model->state()->parameter(address);
     if (!parameter) {
         emit message(
             tr("Not reset: the file has no parameter %1").arg(ParameterId::hexAddress(address)));
         return;
     }
-    const EditText text = m_model->editText(address);
+    const EditText text = m_model->state()->editText(address);
     QString refusal;
     QUndoCommand *command = makeChange(
         address, &setMask, parameter->defaultValue,
@@ -169,7 +160,7 @@ void DocumentEditor::resetToDefault(quint16 address, quint8 setMask)
     if (!command) {
         emit message(refusal.isEmpty()
                          ? tr("%1 holds its default already%2").arg(text.id(), text.inSets(setMask))
-                         : tr("%1 not reset%2: %3").arg(text.id(), text.inSets(setMask), refusal));
+                         : tr("%1; the file is unchanged").arg(refusal));
         return;
     }
     push(command);
@@ -179,7 +170,7 @@ void DocumentEditor::resetToDefault(quint16 address, quint8 setMask)
 void DocumentEditor::copySet(int fromSet, int toSet)
 {
     const CopySetPlan plan
-        = planCopySet(m_model->description(), fromSet, toSet, m_model->passwordLevel());
+        = planCopySet(m_model->state()->description(), fromSet, toSet, m_model->state()->passwordLevel());
     const QString text = tr("Copy set %1 to set %2").arg(fromSet).arg(toSet);
     auto macro = std::make_unique<QUndoCommand>(text);
     QStringList notes;

@@ -29,7 +29,7 @@ void DocumentValueCommand::put(const Values &values)
 {
     for (int set = 0; set < kParameterSets; ++set) {
         if (m_setMask & (1u << set))
-            m_model->putValue(m_address, set, values[std::size_t(set)]);
+            m_model->state()->putValue(m_address, set, values[std::size_t(set)]);
     }
 }
 

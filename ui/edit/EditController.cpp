@@ -18,27 +18,29 @@ EditController::EditController(DriveClient *client, ParameterModel *model, QUndo
     , m_edits(new ValueEdits(client, this))
 {
     m_edits->setHeldValues(
-        [model](quint16 address, int set) { return model->value(address, set); });
+        [model](quint16 address, int set) { return model->state()->value(address, set); });
     connect(m_model, &ParameterModel::valueEdited, this, &EditController::write);
-    connect(m_edits, &ValueEdits::pending, m_model, &ParameterModel::markPending);
+    connect(m_edits, &ValueEdits::pending, m_model->state(), &DriveState::markPending);
     connect(m_edits, &ValueEdits::edited, m_model, [model](const EditOutcome &outcome) {
-        model->showOutcome(outcome, outcome.superseded);
+        model->state()->showOutcome(outcome, outcome.superseded);
     });
     connect(m_edits, &ValueEdits::runningCountChanged, this, &EditController::updateBusy);
 }
 
 EditController::~EditController() = default;
 
+// The rule for what may be written (DriveState::writeRefusal) was applied where the write
+// was asked for; the drive's own refusals come back in the outcome.
 void EditController::write(quint16 address, quint8 setMask, qint32 raw)
 {
-    const ParameterDescription *parameter = m_model->parameter(address);
+    const ParameterDescription *parameter = m_model->state()->parameter(address);
     if (!parameter) {
         emit message(tr("Not written: this drive has no parameter %1")
                          .arg(ParameterId::hexAddress(address)));
         return;
     }
     if (setMask == 0) {
-        emit message(tr("%1 not written: no set chosen").arg(m_model->editText(address).id()));
+        emit message(tr("%1 not written: no set chosen").arg(m_model->state()->editText(address).id()));
         return;
     }
     m_edits->write(*parameter, setMask, raw,
@@ -47,14 +49,14 @@ void EditController::write(quint16 address, quint8 setMask, qint32 raw)
 
 void EditController::resetToDefault(quint16 address, quint8 setMask)
 {
-    const ParameterDescription *parameter = m_model->parameter(address);
+    const ParameterDescription *parameter = m_model->state()->parameter(address);
     if (!parameter) {
         emit message(
             tr("Not reset: this drive has no parameter %1").arg(ParameterId::hexAddress(address)));
         return;
     }
     if (setMask == 0) {
-        emit message(tr("%1 not reset: no set chosen").arg(m_model->editText(address).id()));
+        emit message(tr("%1 not reset: no set chosen").arg(m_model->state()->editText(address).id()));
         return;
     }
     m_edits->resetToDefault(*parameter, setMask,
@@ -64,12 +66,12 @@ void EditController::resetToDefault(quint16 address, quint8 setMask)
 void EditController::changeDone(const EditOutcome &outcome)
 {
     const quint16 address = outcome.address;
-    const EditText text = m_model->editText(address);
+    const EditText text = m_model->state()->editText(address);
     if (!outcome.anyAcknowledged()) {
         emit message(text.outcome(outcome));
         return;
     }
-    const ParameterDescription *parameter = m_model->parameter(address);
+    const ParameterDescription *parameter = m_model->state()->parameter(address);
     // Writing the earlier value back would not undo what the drive changes itself, and for the
     // password parameter it would send a password that fails and block every older step.
     const bool undoable = !parameter || !readBackMayDiffer(*parameter);
@@ -90,7 +92,7 @@ void EditController::changeDone(const EditOutcome &outcome)
 QString EditController::commandText(WriteValueCommand::Kind kind, quint16 address, quint8 setMask,
                                     qint32 raw) const
 {
-    const EditText text = m_model->editText(address);
+    const EditText text = m_model->state()->editText(address);
     return kind == WriteValueCommand::Kind::ResetToDefault
         ? tr("Reset %1 to its default%2").arg(text.id(), text.inSets(setMask))
         : tr("Write %1 = %2%3").arg(text.id(), text.value(raw), text.inSets(setMask));
@@ -100,7 +102,7 @@ void EditController::perform(WriteValueCommand *command, Direction direction)
 {
     const bool undo = direction == Direction::Undo;
     const quint16 address = command->address();
-    const EditText text = m_model->editText(address);
+    const EditText text = m_model->state()->editText(address);
     if (undo && command->unknownBeforeMask()) {
         emit message(tr("%1%2: the value before the change is not known, so it stays as it is")
                          .arg(text.id(), text.inSets(command->unknownBeforeMask())));
@@ -108,7 +110,7 @@ void EditController::perform(WriteValueCommand *command, Direction direction)
     const QList<WriteStep> steps = undo ? command->undoSteps() : command->redoSteps();
     if (steps.isEmpty())
         return;
-    const ParameterDescription *parameter = m_model->parameter(address);
+    const ParameterDescription *parameter = m_model->state()->parameter(address);
     if (!parameter) {
         EditOutcome outcome;
         outcome.address = address;
@@ -128,10 +130,10 @@ void EditController::performed(WriteValueCommand *command, const std::weak_ptr<c
 {
     const bool undo = direction == Direction::Undo;
     const QString what
-        = alive.expired() ? m_model->editText(outcome.address).id() : command->text();
+        = alive.expired() ? m_model->state()->editText(outcome.address).id() : command->text();
     if (outcome.ok()) {
         const QString result = undo ? tr("Undone: %1").arg(what) : tr("Redone: %1").arg(what);
-        emit message(result + m_model->editText(outcome.address).readBackNotes(outcome));
+        emit message(result + m_model->state()->editText(outcome.address).readBackNotes(outcome));
         return;
     }
     emit message(undo ? tr("Undo failed: %1: %2").arg(what, outcome.error)
@@ -152,7 +154,7 @@ void EditController::performed(WriteValueCommand *command, const std::weak_ptr<c
 
 QString EditController::readFailure(quint16 address, int set) const
 {
-    const ParameterDescription *parameter = m_model->parameter(address);
+    const ParameterDescription *parameter = m_model->state()->parameter(address);
     if (!parameter || set < 0 || set >= kParameterSets)
         return {};
     const int cell = parameter->isSetProgrammable() ? set : 0;

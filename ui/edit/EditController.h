@@ -5,7 +5,7 @@
 #include "WriteValueCommand.h"
 
 #include "session/CopySet.h"
-#include "session/ValueEdits.h"
+#include "state/ValueEdits.h"
 
 #include <QFutureWatcher>
 #include <QHash>

@@ -37,14 +37,14 @@ void EditController::copySet(int fromSet, int toSet)
     if (refuseWhileJobRuns())
         return;
     auto job = std::make_unique<CopyJob>();
-    job->plan = planCopySet(m_model->description(), fromSet, toSet, m_model->passwordLevel());
+    job->plan = planCopySet(m_model->state()->description(), fromSet, toSet, m_model->state()->passwordLevel());
     job->macro
         = std::make_unique<QUndoCommand>(tr("Copy set %1 to set %2").arg(fromSet).arg(toSet));
     for (const CopySetPlan::Item &item : std::as_const(job->plan.items)) {
         WriteValueCommand::Values before{};
-        before[std::size_t(toSet)] = m_model->value(item.address, toSet);
+        before[std::size_t(toSet)] = m_model->state()->value(item.address, toSet);
         job->before << before;
-        m_model->markPending(item.address, quint8(1u << toSet), item.raw);
+        m_model->state()->markPending(item.address, quint8(1u << toSet), item.raw);
     }
     connect(&job->watcher, &QFutureWatcherBase::resultsReadyAt, this, &EditController::copyTake);
     connect(&job->watcher, &QFutureWatcherBase::progressValueChanged, this,
@@ -64,7 +64,7 @@ void EditController::copyTake(int begin, int end)
     for (int index = begin; index < end; ++index) {
         const WriteOutcome outcome = future.resultAt(index);
         const CopySetPlan::Item &item = copy.plan.items.at(index);
-        m_model->showOutcome(outcome);
+        m_model->state()->showOutcome(outcome);
         if (outcome.acknowledgedMask) {
             new WriteValueCommand(this, WriteValueCommand::Kind::Write, item.address,
                                   outcome.acknowledgedMask, item.raw, copy.before.at(index),
@@ -75,7 +75,7 @@ void EditController::copyTake(int begin, int end)
         } else if (outcome.connectionFailed) {
             copy.stopReason = outcome.error;
         } else {
-            copy.refusals << tr("%1: %2").arg(m_model->editText(item.address).id(), outcome.error);
+            copy.refusals << tr("%1: %2").arg(m_model->state()->editText(item.address).id(), outcome.error);
         }
     }
 }
@@ -88,7 +88,7 @@ void EditController::copyFinished()
     // An item without an outcome was never sent: its cell shows again what it held.
     for (qsizetype index = 0; index < job->plan.items.size(); ++index) {
         if (!job->watcher.future().isResultReadyAt(int(index)))
-            m_model->clearEditState(job->plan.items.at(index).address, quint8(1u << job->plan.to));
+            m_model->state()->clearEditState(job->plan.items.at(index).address, quint8(1u << job->plan.to));
     }
 
     const int from = job->plan.from;
@@ -126,14 +126,14 @@ void EditController::copyFinished()
 void EditController::forgetWrites()
 {
     m_undoStack->clear();
-    m_model->clearEditStates();
+    m_model->state()->clearEditStates();
 }
 
 void EditController::refresh()
 {
     if (refuseWhileJobRuns())
         return;
-    startReads(readableValues(m_model->description(), m_model->passwordLevel()));
+    startReads(readableValues(m_model->state()->description(), m_model->state()->passwordLevel()));
 }
 
 void EditController::readAgain(const QList<ValueRead> &reads)
@@ -155,7 +155,7 @@ void EditController::startQueuedReads()
 
 void EditController::startReads(const QList<ValueRead> &reads)
 {
-    m_refresh = new ValueReadBatch(m_client, m_model, reads, this);
+    m_refresh = new ValueReadBatch(m_client, m_model->state(), reads, this);
     connect(m_refresh, &ValueReadBatch::progress, this, &EditController::progress);
     connect(m_refresh, &ValueReadBatch::finished, this, &EditController::refreshFinished);
     updateBusy();
@@ -177,7 +177,7 @@ void EditController::refreshFinished()
     parts << tr("%n value(s) read", nullptr, batch->done() - int(batch->failures().size()));
     if (!batch->failures().isEmpty()) {
         const ValueReading &first = batch->failures().constFirst();
-        const EditText text = m_model->editText(first.read.address);
+        const EditText text = m_model->state()->editText(first.read.address);
         parts << tr("%n could not be read (first: %1%2: %3)", nullptr,
                     int(batch->failures().size()))
                      .arg(text.id(), text.inSets(quint8(1u << first.read.set)), first.reason);

@@ -135,7 +135,7 @@ ParameterEditing *EditingFeature::editing() const
 void EditingFeature::readOpenedValues(PasswordLevel from, PasswordLevel to)
 {
     if (m_edit)
-        m_edit->readAgain(valuesOpenedBy(frame().model()->description(), from, to));
+        m_edit->readAgain(valuesOpenedBy(frame().state()->description(), from, to));
 }
 
 void EditingFeature::updateActions()
@@ -161,10 +161,10 @@ void EditingFeature::resetToDefault()
     QStringList skipped;
     const QList<QPair<quint16, quint8>> selected = frame().browser()->selectedParameters();
     for (const auto &[address, setMask] : selected) {
-        if (model->isEditable(address))
+        if (model->state()->isEditable(address))
             editing->resetToDefault(address, setMask);
         else
-            skipped << model->editText(address).id();
+            skipped << model->state()->editText(address).id();
     }
     if (skipped.isEmpty())
         return;
@@ -194,23 +194,21 @@ void EditingFeature::writeToSets()
     const quint16 address = current.isValid()
         ? current.data(ParameterModel::AddressRole).value<quint16>()
         : selected.constFirst().first;
-    const ParameterDescription *parameter = model->parameter(address);
+    const ParameterDescription *parameter = model->state()->parameter(address);
     if (!parameter)
         return;
-    const QString id = model->editText(address).id();
+    const QString id = model->state()->editText(address).id();
     if (!parameter->isSetProgrammable()) {
         frame().showMessage(
             tr("%1 is not set-programmable: it holds one value for every set.").arg(id));
         return;
     }
-    if (!model->isEditable(address)) {
-        frame().showMessage(tr("%1 cannot be changed: it is read-only or above the password "
-                               "level in force.")
-                                .arg(id));
+    if (const QString refusal = frame().state()->editRefusal(address); !refusal.isEmpty()) {
+        frame().showMessage(refusal);
         return;
     }
     const int set = std::max(0, ParameterModel::setOfColumn(current.column()));
-    if (!model->value(address, set)) {
+    if (!model->state()->value(address, set)) {
         frame().showMessage(tr("%1 has no value read in set %2 to write.").arg(id).arg(set));
         return;
     }
@@ -225,7 +223,7 @@ void EditingFeature::writeToSets()
         // The value as it is now: polling or another write may have changed it meanwhile.
         ParameterModel *model = frame().model();
         const std::optional<qint32> now
-            = frame().editing() ? model->value(address, set) : std::nullopt;
+            = frame().editing() ? model->state()->value(address, set) : std::nullopt;
         if (!now) {
             frame().showMessage(tr("%1 has no value read in set %2 to write.").arg(id).arg(set));
             return;

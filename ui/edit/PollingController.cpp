@@ -1,20 +1,20 @@
 #include "PollingController.h"
 
-#include "model/ParameterModel.h"
+#include "state/DriveState.h"
 
 #include <utility>
 
 namespace DriveDesk {
 
-PollingController::PollingController(DriveClient *client, ParameterModel *model, QObject *parent)
+PollingController::PollingController(DriveClient *client, DriveState *state, QObject *parent)
     : QObject(parent)
-    , m_model(model)
+    , m_state(state)
     , m_polling(client)
 {
     m_polling.setReads([this] { return groupReads(); });
     connect(&m_polling, &Polling::enabledChanged, this, &PollingController::enabledChanged);
     connect(&m_polling, &Polling::reading, this, [this](const ValueReading &reading) {
-        m_model->setValue(reading.read.address, reading.read.set, *reading.value);
+        m_state->setValue(reading.read.address, reading.read.set, *reading.value);
     });
     connect(&m_polling, &Polling::roundFinished, this, &PollingController::roundDone);
     connect(&m_polling, &Polling::nothingToRead, this, [this] {
@@ -25,8 +25,8 @@ PollingController::PollingController(DriveClient *client, ParameterModel *model,
                                     : tr("Polling stopped: disconnected from the drive"));
     });
     auto invalidate = [this] { m_readsValid = false; };
-    connect(m_model, &QAbstractItemModel::modelReset, this, invalidate);
-    connect(m_model, &ParameterModel::passwordLevelChanged, this, invalidate);
+    connect(m_state, &DriveState::reset, this, invalidate);
+    connect(m_state, &DriveState::passwordLevelChanged, this, invalidate);
 }
 
 void PollingController::setGroup(const QString &groupId)
@@ -51,9 +51,9 @@ QList<ValueRead> PollingController::groupReads()
         return m_reads;
     m_reads.clear();
     m_readsValid = true;
-    const DriveDescription drive = m_model->description();
+    const DriveDescription drive = m_state->description();
     if (const GroupDescription *group = drive.findGroup(m_group))
-        m_reads = readableValues(*group, m_model->passwordLevel());
+        m_reads = readableValues(*group, m_state->passwordLevel());
     return m_reads;
 }
 
@@ -63,7 +63,7 @@ void PollingController::roundDone(const Polling::Round &round)
         say(tr("Polling: %1").arg(round.stopReason));
     } else if (!round.failures.isEmpty()) {
         const ValueReading &first = round.failures.constFirst();
-        const QString id = m_model->indexOf(first.read.address).data().toString();
+        const QString id = m_state->editText(first.read.address).id();
         say(tr("Polling: %n value(s) could not be read (first: %1: %2)", nullptr,
                int(round.failures.size()))
                 .arg(id, first.reason));

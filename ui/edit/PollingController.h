@@ -7,7 +7,7 @@
 namespace DriveDesk {
 
 class DriveClient;
-class ParameterModel;
+class DriveState;
 
 // Keeps the live values of one group (the run display "ru" unless told otherwise) fresh in the
 // model: core's Polling reads the group's readable values every interval, the model announces
@@ -20,7 +20,7 @@ public:
     static constexpr int kMinimumIntervalMs = Polling::kMinimumIntervalMs;
     static constexpr int kMaximumIntervalMs = Polling::kMaximumIntervalMs;
 
-    PollingController(DriveClient *client, ParameterModel *model, QObject *parent = nullptr);
+    PollingController(DriveClient *client, DriveState *state, QObject *parent = nullptr);
 
     void setGroup(const QString &groupId); // default "ru"
     QString group() const { return m_group; }
@@ -44,7 +44,7 @@ private:
     void roundDone(const Polling::Round &round);
     void say(const QString &problem);
 
-    ParameterModel *m_model = nullptr;
+    DriveState *m_state = nullptr;
     Polling m_polling;
     QString m_group = QStringLiteral("ru");
     // The group's reads, worked out again after the model was reset or the level changed.

@@ -73,7 +73,7 @@ void PollingFeature::attach(DriveSession *session)
     m_polling = nullptr;
     if (!session)
         return;
-    m_polling = new PollingController(session->client(), frame().model(), this);
+    m_polling = new PollingController(session->client(), frame().state(), this);
     m_polling->setGroup(kLiveGroup);
     m_polling->setIntervalMs(m_intervalMs);
     connect(m_polling, &PollingController::message, this,

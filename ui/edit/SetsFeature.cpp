@@ -43,12 +43,12 @@ void SetsFeature::update()
     const auto valueText = [model](std::optional<quint16> address) {
         if (!address)
             return QString();
-        const std::optional<qint32> value = model->value(*address, 0);
+        const std::optional<qint32> value = model->state()->value(*address, 0);
         return value ? QString::number(*value)
                      : tr("?");
     };
     // The table marks the active set's column, following every reading of Fr.02.
-    model->setActiveSet(m_session ? m_session->activeSet() : -1);
+    model->state()->setActiveSet(m_session ? m_session->activeSet() : -1);
     const QString active = m_session ? valueText(m_session->activeSetAddress()) : QString();
     const QString pointer = m_session ? valueText(m_session->setPointerAddress()) : QString();
     QStringList parts;

@@ -1,15 +1,15 @@
 #include "ValueReadBatch.h"
 
 #include "client/DriveClient.h"
-#include "model/ParameterModel.h"
+#include "state/DriveState.h"
 
 namespace DriveDesk {
 
-ValueReadBatch::ValueReadBatch(DriveClient *client, ParameterModel *model, QList<ValueRead> reads,
+ValueReadBatch::ValueReadBatch(DriveClient *client, DriveState *state, QList<ValueRead> reads,
                                QObject *parent)
     : QObject(parent)
     , m_client(client)
-    , m_model(model)
+    , m_state(state)
     , m_reads(std::move(reads))
 {
     connect(&m_watcher, &QFutureWatcherBase::resultsReadyAt, this, &ValueReadBatch::take);
@@ -47,7 +47,7 @@ void ValueReadBatch::take(int begin, int end)
         const ValueReading reading = future.resultAt(index);
         ++m_done;
         if (reading.value)
-            m_model->setValue(reading.read.address, reading.read.set, *reading.value);
+            m_state->setValue(reading.read.address, reading.read.set, *reading.value);
         m_summary.add(reading);
     }
     emit progress(m_done, total());

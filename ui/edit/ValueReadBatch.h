@@ -10,7 +10,7 @@
 namespace DriveDesk {
 
 class DriveClient;
-class ParameterModel;
+class DriveState;
 
 // Runs a ReadValuesJob in the client's thread and puts what the drive answers into the model as
 // it comes (setValue: only a value that changed is announced). A read the drive refuses is
@@ -19,7 +19,7 @@ class ValueReadBatch : public QObject
 {
     Q_OBJECT
 public:
-    ValueReadBatch(DriveClient *client, ParameterModel *model, QList<ValueRead> reads,
+    ValueReadBatch(DriveClient *client, DriveState *state, QList<ValueRead> reads,
                    QObject *parent = nullptr);
     ~ValueReadBatch() override;
 
@@ -44,7 +44,7 @@ private:
     void jobFinished();
 
     DriveClient *m_client = nullptr;
-    ParameterModel *m_model = nullptr;
+    DriveState *m_state = nullptr;
     QList<ValueRead> m_reads;
     QFutureWatcher<ValueReading> m_watcher;
     int m_done = 0;

@@ -97,7 +97,7 @@ bool ParameterFileFeature::saveParameterFileAs(const QString &path)
     if (frame().parameterFilePath().isEmpty())
         return false;
     QString error;
-    if (!ParameterDocument::save(path, frame().model()->description(), &error)) {
+    if (!ParameterDocument::save(path, frame().state()->description(), &error)) {
         return reportProblem(tr("Save Parameter File"),
                              tr("Could not save %1: %2. The file on disk is as it was.")
                                  .arg(shownPath(path), error));

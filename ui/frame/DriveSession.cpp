@@ -2,7 +2,7 @@
 
 #include "bus/LinkFactory.h"
 #include "client/WhenFinished.h"
-#include "model/ParameterModel.h"
+#include "state/DriveState.h"
 #include "session/ValueReads.h"
 
 namespace DriveDesk {
@@ -15,10 +15,10 @@ constexpr quint8 kSetPointerNumber = 9; // Fr.09
 
 } // namespace
 
-DriveSession::DriveSession(const ConnectionSettings &settings, ParameterModel *model,
+DriveSession::DriveSession(const ConnectionSettings &settings, DriveState *state,
                            QObject *parent)
     : QObject(parent)
-    , m_model(model)
+    , m_state(state)
 {
     // A drive that freezes while the window only shows it is reported, not left "Connected".
     ClientOptions options;
@@ -137,11 +137,11 @@ void DriveSession::onScanFinished()
         m_activeSet = address(kActiveSetNumber);
         m_setPointer = address(kSetPointerNumber);
     }
-    m_model->setDescription(drive);
+    m_state->setDescription(drive);
     // The idle line's check reads a value the drive has, not address 0000h, which a drive
     // without it refuses every few seconds in the telegram monitor.
     for (const GroupDescription &group : drive.groups) {
-        const QList<ValueRead> readable = readableValues(group, m_model->passwordLevel());
+        const QList<ValueRead> readable = readableValues(group, m_state->passwordLevel());
         if (!readable.isEmpty()) {
             m_client->setIdleCheckAddress(readable.constFirst().address);
             break;
@@ -162,14 +162,14 @@ void DriveSession::readSetPointers()
             continue;
         whenFinished(m_client->readValue(*address, 0x01), this, [this](const Reply &reply) {
             if (const auto *value = reply.data<ParameterValue>())
-                m_model->setValue(value->address, 0, value->value);
+                m_state->setValue(value->address, 0, value->value);
         });
     }
 }
 
 int DriveSession::activeSet() const
 {
-    return m_activeSet ? m_model->value(*m_activeSet, 0).value_or(-1) : -1;
+    return m_activeSet ? m_state->value(*m_activeSet, 0).value_or(-1) : -1;
 }
 
 bool DriveSession::isReady() const

@@ -9,20 +9,20 @@
 
 namespace DriveDesk {
 
-class ParameterModel;
+class DriveState;
 
-// One connection to one drive and the way from connecting over the scan to a filled model:
+// One connection to one drive and the way from connecting over the scan to a filled state:
 // the client (working in its own thread), which the features' controllers (edits, polling, the
-// password level) work through; they follow the session's signals. A lost link leaves the model
-// as it is; reconnecting re-reads the values, or the whole drive where the model holds it only in
-// part. A scan that stops early never replaces a complete description: the model keeps the
+// password level) work through; they follow the session's signals. A lost link leaves the state
+// as it is; reconnecting re-reads the values, or the whole drive where the state holds it only in
+// part. A scan that stops early never replaces a complete description: the state keeps the
 // metadata and values read before.
 // Lives in the GUI thread.
 class DriveSession : public QObject
 {
     Q_OBJECT
 public:
-    DriveSession(const ConnectionSettings &settings, ParameterModel *model,
+    DriveSession(const ConnectionSettings &settings, DriveState *state,
                  QObject *parent = nullptr);
     ~DriveSession() override;
 
@@ -32,27 +32,27 @@ public:
     // Connected, but the drive does not answer (DriveClient::isDriveSilent()).
     bool isDriveSilent() const { return m_client->isDriveSilent(); }
 
-    // Connects; the first time the drive is scanned into the model, later its values re-read
-    // (the whole drive again while the model holds it only in part).
+    // Connects; the first time the drive is scanned into the state, later its values re-read
+    // (the whole drive again while the state holds it only in part).
     void start();
     // Closes the link where it is open, waits until it is closed, and connects again.
     void reconnect();
     void disconnectFromDrive();
     void cancelScan();
-    // Reads the drive into the model: metadata from the cache where the drive is of a cached
+    // Reads the drive into the state: metadata from the cache where the drive is of a cached
     // kind, or from the drive (RefreshCache: "Read metadata again").
     void rescan(MetadataSource metadata = MetadataSource::Cache);
     bool isScanning() const { return m_scan.isRunning(); }
-    // A scan filled the model: there is something to edit and to refresh.
+    // A scan filled the state: there is something to edit and to refresh.
     bool hasDescription() const { return m_described; }
-    // Why the description in the model is incomplete (the scan that filled it stopped early or
+    // Why the description in the state is incomplete (the scan that filled it stopped early or
     // missed something); empty when it is complete or there is none.
     QString incompleteReason() const { return m_incompleteReason; }
 
-    // Connected, the model holds the drive, and no scan runs: values may be read and written.
+    // Connected, the state holds the drive, and no scan runs: values may be read and written.
     bool isReady() const;
     // Refresh: the values shown are read again (valuesRequested()); the whole drive where the
-    // model does not hold it yet.
+    // state does not hold it yet.
     void readValuesAgain();
 
     // Fr.02 (active set) and Fr.09 (set pointer) where the drive has them.
@@ -68,14 +68,14 @@ signals:
     void connected();
     void scanStarted();
     void scanProgress(int value, int maximum, const QString &text);
-    // The model holds the drive now. `drive` is the scan's result (metadata and values).
+    // The state holds the drive now. `drive` is the scan's result (metadata and values).
     void described(const DriveDesk::DriveDescription &drive);
     // Empty when the scan read everything; otherwise why it stopped or what it missed.
     void scanFinished(const QString &problem);
-    // A re-read stopped early (`reason`): what it read is dropped, the model keeps the complete
+    // A re-read stopped early (`reason`): what it read is dropped, the state keeps the complete
     // description it held. Comes instead of described() and scanFinished().
     void scanDiscarded(const QString &reason);
-    // Connected and the model holds the drive, after a scan or back after a lost link: what
+    // Connected and the state holds the drive, after a scan or back after a lost link: what
     // goes with a drive read (its password level, polling) starts now.
     void ready();
     // The values shown are to be read from the drive again (Refresh, back after a lost link,
@@ -93,12 +93,12 @@ private:
     void readSetPointers();
 
     DriveClient *m_client = nullptr; // owned; the features drop their controllers before it goes
-    ParameterModel *m_model = nullptr;
+    DriveState *m_state = nullptr;
     QFutureWatcher<DriveDescription> m_scan;
     std::optional<quint16> m_activeSet;
     std::optional<quint16> m_setPointer;
     bool m_described = false;
-    QString m_incompleteReason; // of the description in the model
+    QString m_incompleteReason; // of the description in the state
     bool m_reconnecting = false; // reconnect(): connect once the old link is closed
 };
 

@@ -166,7 +166,7 @@ QAction *ParameterBrowser::rawValuesAction() const
 void ParameterBrowser::rebuildGroups()
 {
     m_groupAddresses.clear();
-    const DriveDescription drive = m_model->description();
+    const DriveDescription drive = m_model->state()->description();
     for (const GroupDescription &group : drive.groups)
         m_groupAddresses.insert(group.id, group.address);
     // The group shown before, or the one asked for before the drive was read.

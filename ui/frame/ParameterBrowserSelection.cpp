@@ -53,8 +53,8 @@ QList<QPair<quint16, quint8>> ParameterBrowser::selectedParameters() const
         auto known = setProgrammable.constFind(address);
         if (known == setProgrammable.constEnd()) {
             known = setProgrammable.insert(address,
-                                           m_model->parameter(address)
-                                               && m_model->parameter(address)->isSetProgrammable());
+                                           m_model->state()->parameter(address)
+                                               && m_model->state()->parameter(address)->isSetProgrammable());
         }
         const int set = ParameterModel::setOfColumn(index.column());
         masks[address] |= set >= 0 ? quint8(1u << set) : *known ? quint8(0xFF) : quint8(0x01);

@@ -18,6 +18,7 @@ namespace DriveDesk {
 class DriveClient;
 struct DriveDescription;
 class DriveSession;
+class DriveState;
 class NoticeBar;
 class ParameterBrowser;
 class ParameterEditing;
@@ -41,6 +42,9 @@ public:
     // progress there, and Cancel (cancelClicked) stops it.
     virtual NoticeBar *noticeBar() const = 0;
 
+    // The drive (or parameter file) the window shows, held once; what features read and
+    // change. model() shows it in the table.
+    virtual DriveState *state() const = 0;
     virtual ParameterModel *model() const = 0;
     virtual ParameterBrowser *browser() const = 0;
     virtual QUndoStack *undoStack() const = 0;

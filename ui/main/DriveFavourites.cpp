@@ -41,7 +41,7 @@ void DriveFavourites::restore(const DriveDescription &drive, const ConnectionSet
         for (const QString &hex : stored) {
             bool ok = false;
             const uint address = hex.toUInt(&ok, 16);
-            if (ok && address <= 0xFFFF && m_model->parameter(quint16(address)))
+            if (ok && address <= 0xFFFF && m_model->state()->parameter(quint16(address)))
                 favourites.insert(quint16(address));
         }
     }

@@ -52,7 +52,8 @@ MainWindow::MainWindow(Language language, QWidget *parent)
     setObjectName(QStringLiteral("mainWindow"));
     setWindowTitle(tr("DriveDesk"));
     setWindowIcon(applicationIcon());
-    m_model = new ParameterModel(this);
+    m_state = new DriveState(this);
+    m_model = new ParameterModel(m_state, this);
     m_favourites = DriveFavourites(m_model);
     m_undoStack = new QUndoStack(this);
     m_browser = new ParameterBrowser(m_model);
@@ -169,7 +170,7 @@ void MainWindow::openNextSession()
     closeSession();
     // The model keeps what was read until the new drive is connected.
 
-    m_session = new DriveSession(settings, m_model, this);
+    m_session = new DriveSession(settings, m_state, this);
     DriveSession *session = m_session;
     DriveClient *client = session->client();
     connect(client, &DriveClient::stateChanged, this, &MainWindow::onStateChanged);
@@ -177,7 +178,7 @@ void MainWindow::openNextSession()
         RecentConnections::remember(session->settings());
         if (!session->hasDescription()) {
             // Another drive, or the same one anew: what the last one showed goes now.
-            m_model->clear();
+            m_model->state()->clear();
             m_favourites.forget();
             setWindowTitle(tr("DriveDesk"));
             m_notice->showProgress(tr("Connected. Reading the drive..."), 0, 0);

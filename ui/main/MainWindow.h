@@ -22,6 +22,7 @@ class ConnectionDialog;
 class DriveSession;
 class NoticeBar;
 class ParameterBrowser;
+class DriveState;
 class ParameterModel;
 
 // DriveDesk's window, a frame: the parameter browser of the connected drive or of a parameter
@@ -71,6 +72,7 @@ public:
     void addDock(QDockWidget *dock) override;
     NoticeBar *noticeBar() const override { return m_notice; }
     ParameterModel *model() const override { return m_model; }
+    DriveState *state() const override { return m_state; }
     ParameterBrowser *browser() const override { return m_browser; }
     QUndoStack *undoStack() const override { return m_undoStack; }
     Language language() const override { return m_language; }
@@ -142,6 +144,7 @@ private:
     void saveSettings();
 
     Language m_language = Language::English;
+    DriveState *m_state = nullptr; // the drive or the file shown
     ParameterModel *m_model = nullptr;
     QUndoStack *m_undoStack = nullptr;
     ParameterBrowser *m_browser = nullptr;

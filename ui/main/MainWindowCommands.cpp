@@ -57,7 +57,7 @@ void MainWindow::showDriveInformation()
 {
     if (!m_session || !m_session->hasDescription())
         return;
-    openDialog(new DriveInfoDialog(m_model->description(), m_session->settings(), this));
+    openDialog(new DriveInfoDialog(m_model->state()->description(), m_session->settings(), this));
 }
 
 void MainWindow::chooseLanguage(Language language)

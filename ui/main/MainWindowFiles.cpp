@@ -50,10 +50,10 @@ void MainWindow::showParameterFile(const DriveDescription &drive, const QString 
     closeParameterFile();
 
     // A file has no password level and no live values: what is writable may be edited.
-    m_model->setStaleSince(0);
-    m_model->setActiveSet(-1);
-    m_model->setPasswordLevel(PasswordLevel::Supervisor);
-    m_model->setDescription(drive);
+    m_model->state()->setStaleSince(0);
+    m_model->state()->setActiveSet(-1);
+    m_model->state()->setPasswordLevel(PasswordLevel::Supervisor);
+    m_model->state()->setDescription(drive);
     m_filePath = QFileInfo(path).absoluteFilePath();
     rememberDirectory(m_filePath);
     // The file's edits are a feature's, as the drive's are.
@@ -85,7 +85,7 @@ void MainWindow::closeParameterFile()
     m_undoStack->clear();
     m_filePath.clear();
     m_favourites.forget();
-    m_model->clear();
+    m_model->state()->clear();
     setWindowModified(false);
     setWindowTitle(tr("DriveDesk"));
     m_stateLabel->setText(tr("Not connected"));

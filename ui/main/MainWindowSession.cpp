@@ -105,7 +105,7 @@ void MainWindow::onDriveSilentChanged(bool silent)
 {
     if (silent) {
         const QDateTime now = QDateTime::currentDateTime();
-        m_model->setStaleSince(now.toMSecsSinceEpoch());
+        m_model->state()->setStaleSince(now.toMSecsSinceEpoch());
         m_silenceNotice
             = tr("The drive is not answering: the connection to %1 is open, but no valid answer "
                  "came from the drive since %2 (nothing at all, or only what cannot be an "
@@ -116,7 +116,7 @@ void MainWindow::onDriveSilentChanged(bool silent)
         m_notice->showProblem(m_silenceNotice);
         showMessage(tr("The drive is not answering"));
     } else {
-        m_model->setStaleSince(0);
+        m_model->state()->setStaleSince(0);
         if (!m_silenceNotice.isEmpty() && m_notice->isVisible()
             && m_notice->text() == m_silenceNotice) {
             m_notice->hide();

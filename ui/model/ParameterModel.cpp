@@ -1,67 +1,63 @@
 #include "ParameterModel.h"
 
-#include "parameters/ParameterAccess.h"
 #include "parameters/ParameterId.h"
 #include "parameters/SetList.h"
-#include "session/ValueChange.h"
-
-#include <QDateTime>
-
-#include <algorithm>
 
 namespace DriveDesk {
 
-ParameterModel::ParameterModel(QObject *parent)
+ParameterModel::ParameterModel(DriveState *state, QObject *parent)
     : GroupTreeModel(parent)
-{ }
-
-void ParameterModel::setDescription(const DriveDescription &drive)
+    , m_state(state ? state : new DriveState(this))
 {
-    beginResetModel();
-    m_groups.clear();
-    m_locations.clear();
-    m_drive = drive;
-    m_drive.groups = {};
-    m_groups.reserve(std::size_t(drive.groups.size()));
-    m_locations.reserve(drive.parameterCount());
-    const qint64 now = QDateTime::currentMSecsSinceEpoch();
-    for (const GroupDescription &source : drive.groups) {
-        Group group;
-        group.description = source;
-        group.description.parameters = {};
-        group.rows.reserve(std::size_t(source.parameters.size()));
-        const int groupRow = int(m_groups.size());
-        for (const ParameterDescription &parameter : source.parameters) {
-            m_locations.insert(parameter.address, { groupRow, int(group.rows.size()) });
-            group.rows.emplace_back(parameter,
-                                    ParameterId::format(parameter.address,
-                                                        GroupAddress{ source.id, source.address }));
-            group.rows.back().searchText(m_raw); // built now, so that a keystroke only compares
-            const auto &values = parameter.values;
-            if (std::any_of(values.begin(), values.end(), [](const auto &v) { return v.has_value(); }))
-                group.rows.back().markRead(now);
+    connect(m_state, &DriveState::aboutToReset, this, [this] {
+        beginResetModel();
+        m_groups.clear(); // the rows point into the state about to change
+    });
+    connect(m_state, &DriveState::reset, this, [this] {
+        rebuild();
+        endResetModel();
+    });
+    connect(m_state, &DriveState::cellsChanged, this, &ParameterModel::onCellsChanged);
+    connect(m_state, &DriveState::parameterChanged, this, [this](quint16 address) {
+        if (ParameterRow *row = rowAt(address)) {
+            for (int cell = 0; cell < row->state().cellCount(); ++cell)
+                row->invalidate(cell);
         }
-        m_groups.push_back(std::move(group));
-    }
-    endResetModel();
+        emitRowChanged(address);
+    });
+    connect(m_state, &DriveState::staleChanged, this, [this] {
+        emitAllChanged({ Qt::ForegroundRole, Qt::FontRole, Qt::ToolTipRole, StaleRole });
+    });
+    connect(m_state, &DriveState::passwordLevelChanged, this, [this] { emitAllChanged(); });
+    connect(m_state, &DriveState::activeSetChanged, this, [this] {
+        emit headerDataChanged(Qt::Horizontal, FirstSetColumn, LastSetColumn);
+    });
+    rebuild();
 }
 
-DriveDescription ParameterModel::description() const
+void ParameterModel::rebuild()
 {
-    DriveDescription drive = m_drive;
-    for (const Group &group : m_groups) {
-        GroupDescription description = group.description;
-        description.parameters.reserve(qsizetype(group.rows.size()));
-        for (const ParameterRow &row : group.rows)
-            description.parameters << row.description();
-        drive.groups << description;
+    m_groups.clear();
+    m_groups.resize(std::size_t(m_state->groupCount()));
+    for (int g = 0; g < m_state->groupCount(); ++g) {
+        Group &group = m_groups[std::size_t(g)];
+        group.rows.reserve(std::size_t(m_state->parameterCount(g)));
+        for (int row = 0; row < m_state->parameterCount(g); ++row) {
+            group.rows.emplace_back(m_state->parameterAt(g, row));
+            group.rows.back().searchText(m_raw); // built now, so that a keystroke only compares
+        }
     }
-    return drive;
 }
 
-void ParameterModel::clear()
+void ParameterModel::onCellsChanged(quint16 address, int firstCell, int lastCell)
 {
-    setDescription({});
+    ParameterRow *row = rowAt(address);
+    if (!row)
+        return;
+    for (int cell = firstCell; cell <= lastCell; ++cell)
+        row->invalidate(cell);
+    emit dataChanged(indexOf(address, columnOfSet(firstCell)),
+                     indexOf(address, columnOfSet(lastCell)));
 }
 
 const ParameterRow *ParameterModel::rowAt(const QModelIndex &index) const
@@ -72,10 +68,10 @@ const ParameterRow *ParameterModel::rowAt(const QModelIndex &index) const
 
 ParameterRow *ParameterModel::rowAt(quint16 address)
 {
-    const auto it = m_locations.constFind(address);
-    if (it == m_locations.constEnd())
+    const DriveState::Location location = m_state->locationOf(address);
+    if (location.group < 0 || std::size_t(location.group) >= m_groups.size())
         return nullptr;
-    return &m_groups[std::size_t(it->group)].rows[std::size_t(it->row)];
+    return &m_groups[std::size_t(location.group)].rows[std::size_t(location.row)];
 }
 
 const ParameterRow *ParameterModel::rowAt(quint16 address) const
@@ -83,165 +79,31 @@ const ParameterRow *ParameterModel::rowAt(quint16 address) const
     return const_cast<ParameterModel *>(this)->rowAt(address);
 }
 
-const ParameterDescription *ParameterModel::parameter(quint16 address) const
-{
-    const ParameterRow *row = rowAt(address);
-    return row ? &row->description() : nullptr;
-}
-
-bool ParameterModel::setValue(quint16 address, int set, qint32 raw)
-{
-    ParameterRow *row = rowAt(address);
-    if (!row || set < 0 || set >= kParameterSets)
-        return false;
-    const int cell = row->cellOf(set);
-    const bool wasStale = m_staleSinceMs != 0 && isStale(*row);
-    row->markRead(QDateTime::currentMSecsSinceEpoch());
-    if (row->setValue(cell, raw) || wasStale) {
-        if (wasStale) {
-            emitRowChanged(address);
-        } else {
-            const QModelIndex changed = indexOf(address, columnOfSet(cell));
-            emit dataChanged(changed, changed);
-        }
-    }
-    return true;
-}
-
-void ParameterModel::setStaleSince(qint64 msecsSinceEpoch)
-{
-    if (msecsSinceEpoch == m_staleSinceMs)
-        return;
-    m_staleSinceMs = msecsSinceEpoch;
-    emitAllChanged({ Qt::ForegroundRole, Qt::FontRole, Qt::ToolTipRole, StaleRole });
-}
-
-bool ParameterModel::isStale(quint16 address) const
-{
-    const ParameterRow *row = rowAt(address);
-    return row && isStale(*row);
-}
-
 bool ParameterModel::isStale(const ParameterRow &row) const
 {
-    return m_staleSinceMs != 0 && row.readAtMs() != 0 && row.readAtMs() < m_staleSinceMs;
-}
-
-bool ParameterModel::setValues(quint16 address, quint8 setMask, qint32 raw)
-{
-    ParameterRow *row = rowAt(address);
-    if (!row || setMask == 0)
-        return false;
-    for (int set = 0; set < kParameterSets; ++set) {
-        if (setMask & (1u << set))
-            setValue(address, set, raw);
-    }
-    return true;
-}
-
-bool ParameterModel::putValue(quint16 address, int set, std::optional<qint32> raw)
-{
-    ParameterRow *row = rowAt(address);
-    if (!row || set < 0 || set >= kParameterSets)
-        return false;
-    const int cell = row->cellOf(set);
-    const bool changed = row->setValue(cell, raw);
-    if (row->clearEditState(cell) || changed) {
-        const QModelIndex index = indexOf(address, columnOfSet(cell));
-        emit dataChanged(index, index);
-    }
-    return true;
-}
-
-std::optional<qint32> ParameterModel::value(quint16 address, int set) const
-{
-    const ParameterRow *row = rowAt(address);
-    if (!row || set < 0 || set >= kParameterSets)
-        return std::nullopt;
-    return row->value(row->cellOf(set));
+    return m_state->isStale(row.state());
 }
 
 bool ParameterModel::isAboveLevel(const ParameterRow &row) const
 {
-    const ParameterProperties &properties = row.properties();
-    return !isReadable(properties, m_level)
-        || (!properties.isReadOnly() && !isWritable(properties, m_level));
+    return m_state->isAboveLevel(row.address());
 }
 
 bool ParameterModel::isEditable(const ParameterRow &row) const
 {
-    return isWritable(row.properties(), m_level);
-}
-
-bool ParameterModel::isAboveLevel(quint16 address) const
-{
-    const ParameterRow *row = rowAt(address);
-    return row && isAboveLevel(*row);
-}
-
-bool ParameterModel::isEditable(quint16 address) const
-{
-    const ParameterRow *row = rowAt(address);
-    return row && isEditable(*row);
-}
-
-QString ParameterModel::editRefusal(const ParameterRow &row) const
-{
-    if (row.properties().isReadOnly())
-        return tr("%1 is read-only").arg(row.id());
-    if (isAboveLevel(row)) {
-        const PasswordLevel needed
-            = std::max(row.properties().readLevel(), row.properties().writeLevel());
-        return tr("%1 needs password level %2 (in force: %3)")
-            .arg(row.id(), passwordLevelName(needed), passwordLevelName(m_level));
-    }
-    return {};
+    return m_state->isEditable(row.state());
 }
 
 bool ParameterModel::requestWrite(quint16 address, quint8 setMask, qint32 raw, QString *error)
 {
-    auto fail = [error](const QString &message) {
+    const QString refusal = m_state->writeRefusal(address, setMask, raw);
+    if (!refusal.isEmpty()) {
         if (error)
-            *error = message;
+            *error = refusal;
         return false;
-    };
-    const ParameterRow *row = rowAt(address);
-    if (!row)
-        return fail(tr("this drive has no parameter %1").arg(ParameterId::hexAddress(address)));
-    if (const QString refusal = editRefusal(*row); !refusal.isEmpty())
-        return fail(refusal);
-    if (setMask == 0)
-        return fail(tr("%1: no set chosen").arg(row->id()));
-    if (!row->format().isWithinLimits(raw))
-        return fail(tr("%1: %2").arg(row->id(), row->format().limitsProblem(raw)));
-    emit valueEdited(address, SetList::setsWritten(row->description(), setMask), raw);
+    }
+    emit valueEdited(address, SetList::setsWritten(*m_state->parameter(address), setMask), raw);
     return true;
-}
-
-EditText ParameterModel::editText(quint16 address) const
-{
-    const ParameterRow *row = rowAt(address);
-    return row ? EditText(row->id(), &row->description())
-               : EditText(ParameterId::hexAddress(address), nullptr);
-}
-
-void ParameterModel::setPasswordLevel(PasswordLevel level)
-{
-    if (level == m_level)
-        return;
-    m_level = level;
-    emitAllChanged();
-    emit passwordLevelChanged(level);
-}
-
-void ParameterModel::setActiveSet(int set)
-{
-    if (set < 0 || set >= kParameterSets)
-        set = -1;
-    if (set == m_activeSet)
-        return;
-    m_activeSet = set;
-    emit headerDataChanged(Qt::Horizontal, FirstSetColumn, LastSetColumn);
 }
 
 void ParameterModel::setShowRawValues(bool raw)
@@ -300,18 +162,19 @@ void ParameterModel::emitAllChanged(const QList<int> &roles)
 
 QModelIndex ParameterModel::indexOf(quint16 address, int column) const
 {
-    const auto it = m_locations.constFind(address);
-    if (it == m_locations.constEnd() || column < 0 || column >= ColumnCount)
+    const DriveState::Location location = m_state->locationOf(address);
+    if (location.group < 0 || std::size_t(location.group) >= m_groups.size() || column < 0
+        || column >= ColumnCount)
         return {};
-    return rowIndex(it->group, it->row, column);
+    return rowIndex(location.group, location.row, column);
 }
 
 QModelIndex ParameterModel::valueIndex(quint16 address, int set) const
 {
-    const ParameterRow *row = rowAt(address);
-    if (!row || set < 0 || set >= kParameterSets)
+    const ParameterState *parameter = m_state->find(address);
+    if (!parameter || set < 0 || set >= kParameterSets)
         return {};
-    return indexOf(address, columnOfSet(row->cellOf(set)));
+    return indexOf(address, columnOfSet(parameter->cellOf(set)));
 }
 
 int ParameterModel::setOfColumn(int column)

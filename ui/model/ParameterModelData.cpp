@@ -13,13 +13,13 @@ QVariant ParameterModel::data(const QModelIndex &index, int role) const
     if (!index.isValid() || index.model() != this)
         return {};
     if (isGroup(index))
-        return groupData(m_groups[std::size_t(index.row())], index.column(), role);
+        return groupData(index.row(), index.column(), role);
     return parameterData(*rowAt(index), index.column(), role);
 }
 
-QVariant ParameterModel::groupData(const Group &group, int column, int role) const
+QVariant ParameterModel::groupData(int group, int column, int role) const
 {
-    const GroupDescription &description = group.description;
+    const GroupDescription &description = m_state->group(group);
     switch (role) {
     case Qt::DisplayRole:
         if (column == IdColumn)
@@ -27,7 +27,7 @@ QVariant ParameterModel::groupData(const Group &group, int column, int role) con
         return {};
     case Qt::ToolTipRole:
         if (column == IdColumn) {
-            return tr("%1, %n parameter(s)", nullptr, int(group.rows.size()))
+            return tr("%1, %n parameter(s)", nullptr, m_state->parameterCount(group))
                 .arg(ParameterId::hexAddress(description.address));
         }
         return {};
@@ -117,13 +117,13 @@ QVariant ParameterModel::parameterData(const ParameterRow &row, int column, int 
     case EditableRole:
         return isEditable(row);
     case EditRefusalRole:
-        return editRefusal(row);
+        return m_state->editRefusal(row.address());
     case FavouriteRole:
         return isFavourite(row.address());
     case IsGroupRole:
         return false;
     case DiffersFromDefaultRole:
-        return row.differsFromDefault();
+        return row.state().differsFromDefault();
     case AboveLevelRole:
         return isAboveLevel(row);
     case SearchTextRole:
@@ -205,7 +205,7 @@ QVariant ParameterModel::toolTip(const ParameterRow &row, int column) const
             text = tr("Last read %1; the drive is not answering").arg(time) + QLatin1Char('\n')
                    + text;
         }
-        if (const QString refusal = editRefusal(row); !refusal.isEmpty())
+        if (const QString refusal = m_state->editRefusal(row.address()); !refusal.isEmpty())
             text += QLatin1Char('\n') + refusal;
         return text;
     }
@@ -284,7 +284,7 @@ QVariant ParameterModel::headerData(int section, Qt::Orientation orientation, in
     if (orientation != Qt::Horizontal || section < 0 || section >= ColumnCount)
         return {};
     const int set = setOfColumn(section);
-    const bool active = set >= 0 && set == m_activeSet;
+    const bool active = set >= 0 && set == m_state->activeSet();
     if (role == Qt::ToolTipRole && set >= 0) {
         QString text = set == 0
             ? tr("Set 0, or the one value of a parameter that is not set-programmable")

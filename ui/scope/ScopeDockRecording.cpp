@@ -82,8 +82,8 @@ void ScopeDock::showAssignmentInTable(const ScopeAssignment &assignment)
         if (!assignment[channel])
             continue;
         // The assignment parameters hold one value (not set-programmable on an F5): set 0.
-        model->setValue(parameters->source[channel], 0, assignment[channel]->source);
-        model->setValue(parameters->setMask[channel], 0, assignment[channel]->setMask);
+        model->state()->setValue(parameters->source[channel], 0, assignment[channel]->source);
+        model->state()->setValue(parameters->setMask[channel], 0, assignment[channel]->setMask);
     }
 }
 

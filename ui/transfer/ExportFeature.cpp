@@ -37,7 +37,7 @@ void ExportFeature::updateActions()
 
 bool ExportFeature::exportCsv(const QString &path)
 {
-    const DriveDescription shown = frame().model()->description();
+    const DriveDescription shown = frame().state()->description();
     QString error;
     // As the user's spreadsheet reads it: a German one wants ';' between decimal commas.
     if (!saveParametersAsCsv(path, shown, &error, CsvStyle::forSpreadsheet())) {

@@ -3,7 +3,7 @@
 #include "parameters/ParameterFormat.h"
 #include "parameters/PasswordLevel.h"
 #include "parameters/SetList.h"
-#include "session/ValueEdits.h"
+#include "state/ValueEdits.h"
 
 #include <QStringList>
 
