@@ -1,5 +1,6 @@
 #include "CliRunner.h"
 
+#include "state/DriveState.h"
 #include "state/EditCheck.h"
 
 #include "client/WhenFinished.h"
@@ -31,6 +32,7 @@ namespace DriveDesk {
 CliRunner::CliRunner(CliRequest request, QObject *parent)
     : QObject(parent)
     , m_request(std::move(request))
+    , m_state(new DriveState(this))
     , m_out(stdout)
     , m_err(stderr)
 {}
@@ -250,6 +252,7 @@ void CliRunner::lookUpParameter(
                 return fail(2, tr("the drive has no parameter %1").arg(m_request.parameter));
             if (!parameter->error.isEmpty())
                 return fail(1, QStringLiteral("%1: %2").arg(m_request.parameter, parameter->error));
+            m_state->setDescription(found);
             next(found.groups.constFirst(), *parameter);
         });
     });
@@ -306,7 +309,7 @@ void CliRunner::runWrite()
 void CliRunner::writeValue(const QString &id, const ParameterDescription &parameter,
                            bool described, qint32 raw)
 {
-    auto *edits = new ValueEdits(m_client.get(), this);
+    auto *edits = new ValueEdits(m_client.get(), m_state, this);
     edits->write(parameter, m_request.setMask, raw,
                  [this, edits, id, parameter, described](const EditOutcome &outcome) {
                      edits->deleteLater();

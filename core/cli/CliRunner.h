@@ -11,6 +11,8 @@
 
 namespace DriveDesk {
 
+class DriveState;
+
 class CliPlant;
 class DownloadRun;
 class ScopeRecorder;
@@ -86,6 +88,9 @@ private:
 
     CliRequest m_request;
     std::unique_ptr<DriveClient> m_client;
+    // What the command knows of the drive: the parameter it reads or writes, and the edit's
+    // outcome, as the window's state holds them.
+    DriveState *m_state = nullptr;
     QTextStream m_out;
     QTextStream m_err;
     bool m_finished = false;

@@ -4,6 +4,7 @@
 #include "client/ReplyCheck.h"
 #include "parameters/ParameterAccess.h"
 #include "parameters/SetList.h"
+#include "state/DriveState.h"
 
 #include <QFutureWatcher>
 
@@ -27,9 +28,10 @@ std::optional<qint32> EditOutcome::asked(int set) const
     return raw;
 }
 
-ValueEdits::ValueEdits(DriveClient *client, QObject *parent)
+ValueEdits::ValueEdits(DriveClient *client, DriveState *state, QObject *parent)
     : QObject(parent)
     , m_client(client)
+    , m_state(state)
 { }
 
 ValueEdits::~ValueEdits() = default;
@@ -69,8 +71,11 @@ void ValueEdits::apply(const ParameterDescription &parameter, QList<WriteStep> s
     edit->outcome.address = parameter.address;
     edit->outcome.reset = reset;
     edit->outcome.steps = std::move(steps);
-    for (const WriteStep &step : std::as_const(edit->outcome.steps))
+    for (const WriteStep &step : std::as_const(edit->outcome.steps)) {
+        if (m_state)
+            m_state->markPending(parameter.address, step.setMask, step.raw);
         emit pending(parameter.address, step.setMask, step.raw);
+    }
     QList<EditPtr> &queue = m_queues[parameter.address];
     queue << edit;
     setRunning(m_running + 1);
@@ -81,9 +86,9 @@ void ValueEdits::apply(const ParameterDescription &parameter, QList<WriteStep> s
 void ValueEdits::begin(const EditPtr &edit)
 {
     // Taken now, not when queued: the edit before it may have changed these values.
-    if (m_held) {
+    if (m_state) {
         for (int set = 0; set < kParameterSets; ++set)
-            edit->outcome.before[std::size_t(set)] = m_held(edit->change.address, set);
+            edit->outcome.before[std::size_t(set)] = m_state->value(edit->change.address, set);
     }
     auto *watcher = new QFutureWatcher<WriteOutcome>(this);
     connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, edit] {
@@ -123,6 +128,8 @@ void ValueEdits::finish(const EditPtr &edit, const WriteOutcome &written)
     if (queue.isEmpty())
         m_queues.remove(outcome.address);
     setRunning(m_running - 1);
+    if (m_state)
+        m_state->showOutcome(outcome, outcome.superseded);
     emit edited(outcome);
     if (edit->done)
         edit->done(outcome);

@@ -14,6 +14,7 @@
 namespace DriveDesk {
 
 class DriveClient;
+class DriveState;
 
 // One edit of one parameter: what was sent and what became of it.
 struct EditOutcome : WriteOutcome
@@ -22,7 +23,7 @@ struct EditOutcome : WriteOutcome
     // As sent: the sets after SetList::setsWritten(), a reset's value the parameter's default.
     QList<WriteStep> steps;
     // The values held when the edit began, per set ([0] alone without sets), for undo; known
-    // only where ValueEdits was told where the values held are kept.
+    // only where ValueEdits keeps a DriveState that holds the parameter.
     std::array<std::optional<qint32>, kParameterSets> before {};
     // Sets read back holding something else than was written (bit 0 also for the active set).
     // Never set for a parameter whose read-back may differ by its nature (readBackMayDiffer).
@@ -43,19 +44,19 @@ struct EditOutcome : WriteOutcome
 // window and the command line alike. Each edit is queued behind the earlier ones of the same
 // parameter, applies the set-0 rule (SetList::setsWritten), is written and read back as a
 // WriteValueJob in the client's thread, and ends in one EditOutcome (EditText says it in
-// words). Lives in the thread that made it; the client outlives it.
+// words). The drive's DriveState, where one is given, shows it all: the cells pending at once,
+// then the outcome. Lives in the thread that made it; the client and the state outlive it.
 class ValueEdits : public QObject
 {
     Q_OBJECT
 public:
     using Done = std::function<void(const EditOutcome &)>;
-    using HeldValue = std::function<std::optional<qint32>(quint16 address, int set)>;
 
-    explicit ValueEdits(DriveClient *client, QObject *parent = nullptr);
+    // `state`: the drive's state, which takes the edits' pending values and outcomes and gives
+    // EditOutcome::before; none where nothing else keeps the drive's values.
+    explicit ValueEdits(DriveClient *client, DriveState *state = nullptr,
+                        QObject *parent = nullptr);
     ~ValueEdits() override;
-
-    // Where the values held now are kept (the window's model), for EditOutcome::before.
-    void setHeldValues(HeldValue held) { m_held = std::move(held); }
 
     // `raw` into the sets of the mask; mask 0 writes the active set (service 1).
     void write(const ParameterDescription &parameter, quint8 setMask, qint32 raw, Done done = {});
@@ -89,7 +90,7 @@ private:
     void setRunning(int count);
 
     DriveClient *m_client = nullptr;
-    HeldValue m_held;
+    DriveState *m_state = nullptr;
     QHash<quint16, QList<EditPtr>> m_queues; // per parameter; the first one is on its way
     int m_running = 0;
 };

@@ -4,6 +4,7 @@
 #include "bus/SimulatedBus.h"
 #include "parameters/DriveDescription.h"
 #include "state/EditText.h"
+#include "state/DriveState.h"
 #include "state/ValueEdits.h"
 
 using namespace DriveDesk;
@@ -22,6 +23,18 @@ ParameterDescription maxSpeedForward()
     parameter.properties1 = 1u << 11; // set-programmable
     parameter.scaling = DisplayScalingData{kMaxSpeedForward, 1, 1, 0, 0};
     return parameter;
+}
+
+// A drive of one group holding the parameter, as a scan finds it.
+DriveDescription driveWith(const ParameterDescription &parameter)
+{
+    GroupDescription group;
+    group.address = quint16(parameter.address & 0xFF00);
+    group.id = QStringLiteral("op");
+    group.parameters << parameter;
+    DriveDescription drive;
+    drive.groups << group;
+    return drive;
 }
 
 } // namespace
@@ -49,8 +62,10 @@ private slots:
         QVERIFY(s.connected());
 
         line.proxy.setSpoil(SpoilingProxy::Spoil::WritesUnanswered);
-        ValueEdits edits(s.client.get());
         const ParameterDescription parameter = maxSpeedForward();
+        DriveState state;
+        state.setDescription(driveWith(parameter));
+        ValueEdits edits(s.client.get(), &state);
         std::optional<EditOutcome> outcome;
         edits.write(parameter, 0x04, 2345, [&outcome](const EditOutcome &o) { outcome = o; });
         QTRY_VERIFY_WITH_TIMEOUT(outcome, kWaitMs);
@@ -60,6 +75,9 @@ private slots:
         QVERIFY2(said.startsWith(QStringLiteral("op.11 = 2345 written (set 2)"))
                      && said.contains(QStringLiteral("reading it back showed it taken")),
                  qPrintable(said));
+        // The drive's state says so too: what the window's cell shows.
+        QCOMPARE(state.editState(kMaxSpeedForward, 2), EditState::Written);
+        QCOMPARE(state.value(kMaxSpeedForward, 2), 2345);
 
         // What the drive holds, asked with every answer passing again.
         line.proxy.setSpoil(SpoilingProxy::Spoil::None);
@@ -75,8 +93,11 @@ private slots:
         QVERIFY2(server.listenTcp(QStringLiteral("127.0.0.1"), 0, &error), qPrintable(error));
         Session s(tcpTo(server, Protocol::Din66019II));
         QVERIFY(s.connected());
-        ValueEdits edits(s.client.get());
         const ParameterDescription parameter = maxSpeedForward();
+        DriveState state;
+        state.setDescription(driveWith(parameter));
+        state.setValue(kMaxSpeedForward, 2, 3000);
+        ValueEdits edits(s.client.get(), &state);
         server.bus().setSilent(true);
         std::optional<EditOutcome> outcome;
         edits.write(parameter, 0x04, 2345, [&outcome](const EditOutcome &o) { outcome = o; });
@@ -86,6 +107,10 @@ private slots:
         QVERIFY2(said.startsWith(QStringLiteral("op.11 = 2345 (set 2) unknown: no answer"))
                      && !said.contains(QStringLiteral("not written")),
                  qPrintable(said));
+        // The cell: unknown with the reason, and the value as last read, not the one asked.
+        QCOMPARE(state.editState(kMaxSpeedForward, 2), EditState::Unknown);
+        QVERIFY(!state.find(kMaxSpeedForward)->failure(2).isEmpty());
+        QCOMPARE(state.value(kMaxSpeedForward, 2), 3000);
     }
 };
 

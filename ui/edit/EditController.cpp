@@ -15,15 +15,9 @@ EditController::EditController(DriveClient *client, ParameterModel *model, QUndo
     , m_client(client)
     , m_model(model)
     , m_undoStack(undoStack)
-    , m_edits(new ValueEdits(client, this))
+    , m_edits(new ValueEdits(client, model->state(), this))
 {
-    m_edits->setHeldValues(
-        [model](quint16 address, int set) { return model->state()->value(address, set); });
     connect(m_model, &ParameterModel::valueEdited, this, &EditController::write);
-    connect(m_edits, &ValueEdits::pending, m_model->state(), &DriveState::markPending);
-    connect(m_edits, &ValueEdits::edited, m_model, [model](const EditOutcome &outcome) {
-        model->state()->showOutcome(outcome, outcome.superseded);
-    });
     connect(m_edits, &ValueEdits::runningCountChanged, this, &EditController::updateBusy);
 }
 
