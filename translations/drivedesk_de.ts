@@ -1680,7 +1680,7 @@
     <name>DriveDesk::DownloadDialog</name>
     <message>
         <source>Download to the Drive</source>
-        <translation>Download zum Umrichter</translation>
+        <translation>In den Umrichter laden</translation>
     </message>
     <message>
         <source>Sets to write:</source>
@@ -1794,7 +1794,7 @@
     </message>
     <message>
         <source>Download File to Drive</source>
-        <translation>Datei zum Umrichter herunterladen</translation>
+        <translation>Datei in den Umrichter laden</translation>
     </message>
     <message>
         <source>Nothing was written: %1</source>
@@ -3144,7 +3144,7 @@
     </message>
     <message>
         <source>Download All...</source>
-        <translation>Alle übertragen...</translation>
+        <translation>Alle in die Umrichter laden...</translation>
     </message>
     <message>
         <source>Write each drive&apos;s file to the drive, after a last look at what each would get</source>
@@ -3236,11 +3236,11 @@
     </message>
     <message>
         <source>Reading every drive to see what a download would write...</source>
-        <translation>Jeder Umrichter wird gelesen, um zu sehen, was eine Übertragung schriebe...</translation>
+        <translation>Jeder Umrichter wird gelesen, um zu sehen, was ein Download schriebe...</translation>
     </message>
     <message>
         <source>Downloading to every drive...</source>
-        <translation>Übertragung zu jedem Umrichter...</translation>
+        <translation>Download in jeden Umrichter...</translation>
     </message>
     <message>
         <source>Reading the two drives to compare...</source>
@@ -3252,11 +3252,11 @@
     </message>
     <message>
         <source>downloaded or already equal</source>
-        <translation>übertragen oder schon gleich</translation>
+        <translation>geladen oder schon gleich</translation>
     </message>
     <message>
         <source>Download All: Report</source>
-        <translation>Alle übertragen: Bericht</translation>
+        <translation>Alle in die Umrichter laden: Bericht</translation>
     </message>
     <message>
         <source>No drive would be written to: each is already equal to its file, or cannot take it (see why).</source>
@@ -3271,7 +3271,7 @@
     </message>
     <message>
         <source>Download All: Last Look</source>
-        <translation>Alle übertragen: letzter Blick</translation>
+        <translation>Alle in die Umrichter laden: letzter Blick</translation>
     </message>
     <message>
         <source>%1: %2</source>

@@ -7,13 +7,16 @@
 
 #include <QAction>
 #include <QCheckBox>
+#include <QDir>
 #include <QFile>
+#include <QFileDialog>
 #include <QHeaderView>
 #include <QLabel>
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QSettings>
 #include <QStatusBar>
 #include <QTreeWidget>
 
@@ -249,6 +252,35 @@ private slots:
         QCOMPARE(box->windowTitle(), QStringLiteral("Export as CSV"));
         QVERIFY(box->text().contains(QStringLiteral("Not exported")));
         box->close();
+    }
+
+    // The file dialog's next folder is where the last file went, never a folder the export
+    // could not write to.
+    void aFailedExportsFolderIsNotOfferedNextTime()
+    {
+        const QString key = QStringLiteral("files/lastDirectory");
+        auto exportTo = [this](const QString &path) {
+            m_window->findChild<QAction *>(QStringLiteral("exportCsvAction"))->trigger();
+            QFileDialog *dialog = nullptr;
+            if (!QTest::qWaitFor([&] {
+                    dialog = m_window->findChild<QFileDialog *>(QStringLiteral("parameterFileDialog"));
+                    return dialog && dialog->isVisible();
+                }, kWaitMs))
+                return false;
+            dialog->selectFile(path);
+            static_cast<QDialog *>(dialog)->accept(); // QFileDialog::accept() is protected
+            return true;
+        };
+        QVERIFY(exportTo(m_dir.filePath(QStringLiteral("good.csv"))));
+        QTRY_VERIFY(QFile::exists(m_dir.filePath(QStringLiteral("good.csv"))));
+        QCOMPARE(QSettings().value(key).toString(), QDir(m_dir.path()).absolutePath());
+
+        // A folder the dialog shows but no file can be made in, even by an administrator.
+        QVERIFY(exportTo(QStringLiteral("/proc/drive.csv")));
+        QTRY_VERIFY(m_window->statusBar()->currentMessage().contains(QStringLiteral("Not exported")));
+        if (auto *box = m_window->findChild<QMessageBox *>(QStringLiteral("fileProblem")))
+            box->close();
+        QCOMPARE(QSettings().value(key).toString(), QDir(m_dir.path()).absolutePath());
     }
 
     // A German window exports as a German spreadsheet reads it: ';' between the fields, the

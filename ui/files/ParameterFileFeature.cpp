@@ -158,7 +158,7 @@ void ParameterFileFeature::chooseFileToSaveAs()
     if (shown.isEmpty())
         return;
     frame().chooseFileToWrite(tr("Save Parameter File As"), QFileInfo(shown).fileName(), {},
-                              [this](const QString &path) { saveParameterFileAs(path); });
+                              [this](const QString &path) { return saveParameterFileAs(path); });
 }
 
 bool ParameterFileFeature::reportProblem(const QString &title, const QString &text)

@@ -81,10 +81,11 @@ public:
     virtual void chooseFileToRead(const QString &title, const QString &filter,
                                   std::function<void(const QString &path)> chosen) = 0;
     // Asks where to write a file (`filter` like "CSV files (*.csv)"), and whether to replace one
-    // that is there; `chosen` runs with the path once the user agreed.
+    // that is there; `chosen` runs with the path once the user agreed and says whether the file
+    // was written (or its writing began): only then is its folder the next dialog's.
     virtual void chooseFileToWrite(const QString &title, const QString &name,
                                    const QString &filter,
-                                   std::function<void(const QString &path)> chosen) = 0;
+                                   std::function<bool(const QString &path)> chosen) = 0;
     // Something an action depends on changed: every feature's actions enable as they apply.
     virtual void updateActions() = 0;
 };

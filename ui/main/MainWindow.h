@@ -86,7 +86,7 @@ public:
     void chooseFileToRead(const QString &title, const QString &filter,
                           std::function<void(const QString &path)> chosen) override;
     void chooseFileToWrite(const QString &title, const QString &name, const QString &filter,
-                           std::function<void(const QString &path)> chosen) override;
+                           std::function<bool(const QString &path)> chosen) override;
     void updateActions() override;
 
 signals:

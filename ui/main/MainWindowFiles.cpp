@@ -179,14 +179,14 @@ void MainWindow::chooseFileToRead(const QString &title, const QString &filter,
 
 void MainWindow::chooseFileToWrite(const QString &title, const QString &name,
                                    const QString &filter,
-                                   std::function<void(const QString &path)> chosen)
+                                   std::function<bool(const QString &path)> chosen)
 {
     QFileDialog *dialog = fileDialog(title, name, filter);
     connect(dialog, &QFileDialog::fileSelected, this,
             [this, chosen = std::move(chosen)](const QString &path) {
                 confirmReplace(path, [path, chosen] {
-                    rememberDirectory(path);
-                    chosen(path);
+                    if (chosen(path))
+                        rememberDirectory(path);
                 });
             });
     openDialog(dialog);

@@ -88,8 +88,10 @@ void PlantFeature::newPlant()
         frame().chooseFileToWrite(tr("Save New Plant"), plant.name + QStringLiteral(".json"),
                                   plantFilter(), [this, plant](const QString &path) {
                                       QString error;
-                                      if (!m_dock->showNewPlant(plant, path, &error))
-                                          frame().showMessage(error);
+                                      if (m_dock->showNewPlant(plant, path, &error))
+                                          return true;
+                                      frame().showMessage(error);
+                                      return false;
                                   });
     });
     openDialog(dialog);

@@ -57,7 +57,10 @@ void ScopeDock::chooseRecordingFile(bool on)
     m_frame.chooseFileToWrite(tr("Record to File"),
                               stampedName(QLatin1String(ScopeFileFormat::kSuffix)),
                               recordingFilter(),
-                              [this](const QString &path) { setRecordFile(path); });
+                              [this](const QString &path) {
+                                  setRecordFile(path);
+                                  return true;
+                              });
 }
 
 void ScopeDock::setRecordFile(const QString &path)
@@ -83,12 +86,15 @@ void ScopeDock::saveRecordingThen(const std::function<void()> &saved)
                               stampedName(QLatin1String(ScopeFileFormat::kSuffix)),
                               recordingFilter(), [this, saved](const QString &path) {
                                   QString error;
-                                  if (!saveRecording(path, &error))
-                                      return showStatus(error, true);
+                                  if (!saveRecording(path, &error)) {
+                                      showStatus(error, true);
+                                      return false;
+                                  }
                                   m_unsaved = false;
                                   showStatus(tr("Saved to %1.").arg(path));
                                   if (saved)
                                       saved();
+                                  return true;
                               });
 }
 
@@ -128,9 +134,12 @@ void ScopeDock::chooseCsv(bool visibleOnly)
                               stampedName(QStringLiteral("csv")), tr("CSV files (*.csv)"),
                               [this, visibleOnly](const QString &path) {
                                   QString error;
-                                  if (!exportCsv(path, visibleOnly, &error))
-                                      return showStatus(error, true);
+                                  if (!exportCsv(path, visibleOnly, &error)) {
+                                      showStatus(error, true);
+                                      return false;
+                                  }
                                   showStatus(tr("Exported to %1.").arg(path));
+                                  return true;
                               });
 }
 
@@ -184,9 +193,11 @@ void ScopeDock::chooseImage(bool pdf)
                                   QString error;
                                   const bool saved = pdf ? m_chart->savePdf(path, &error)
                                                          : m_chart->savePng(path, &error);
-                                  if (!saved)
-                                      return showStatus(error, true);
-                                  showStatus(tr("Exported to %1.").arg(path));
+                                  if (saved)
+                                      showStatus(tr("Exported to %1.").arg(path));
+                                  else
+                                      showStatus(error, true);
+                                  return saved;
                               });
 }
 

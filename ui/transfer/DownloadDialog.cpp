@@ -171,9 +171,12 @@ void DownloadDialog::showPlan(const DownloadPlan &plan)
 void DownloadDialog::fitValueColumns()
 {
     // Each column as wide as its widest text, the values and notes at most a fifth of the
-    // dialog, so that every column stays in view.
+    // dialog, so that every column stays in view; where the names would be cut, the values and
+    // notes give up room for them first, down to 100 pixels each (a German name is long).
     QHeaderView *header = m_list->header();
-    const int cap = std::max(100, width() / 5);
+    const int fixed = header->sectionSize(Id) + header->sectionSize(Sets);
+    const int forValues = m_list->viewport()->width() - fixed - static_cast<const QAbstractItemView *>(m_list)->sizeHintForColumn(Name);
+    const int cap = std::clamp(forValues / 3, 100, std::max(100, width() / 5));
     for (const int column : { Now, Then, Note }) {
         header->setSectionResizeMode(column, QHeaderView::Interactive);
         m_list->resizeColumnToContents(column);

@@ -23,7 +23,7 @@ ExportFeature::ExportFeature(WindowFrame &frame, QObject *parent)
         const QString name
             = QStringLiteral("parameters-%1.csv").arg(QDate::currentDate().toString(Qt::ISODate));
         this->frame().chooseFileToWrite(tr("Export as CSV"), name, tr("CSV files (*.csv)"),
-                                        [this](const QString &path) { exportCsv(path); });
+                                        [this](const QString &path) { return exportCsv(path); });
     });
     QMenu *file = frame.menu(WindowFrame::Menu::File);
     file->addSeparator();

@@ -50,7 +50,7 @@ void SaveDriveFeature::chooseFile()
         = QStringLiteral("drive-%1.json").arg(QDate::currentDate().toString(Qt::ISODate));
     frame().chooseFileToWrite(
         tr("Save Drive to File"), name, {},
-        [this](const QString &path) { saveDriveToFile(path); });
+        [this](const QString &path) { return saveDriveToFile(path); });
 }
 
 bool SaveDriveFeature::saveDriveToFile(const QString &path)
