@@ -10,24 +10,6 @@
 
 namespace DriveDesk {
 
-quint8 EditOutcome::askedMask() const
-{
-    quint8 mask = 0;
-    for (const WriteStep &step : steps)
-        mask |= step.setMask;
-    return mask;
-}
-
-std::optional<qint32> EditOutcome::asked(int set) const
-{
-    std::optional<qint32> raw;
-    for (const WriteStep &step : steps) {
-        if ((step.setMask & (1u << set)) || (step.setMask == 0 && set == 0))
-            raw = step.raw;
-    }
-    return raw;
-}
-
 ValueEdits::ValueEdits(DriveClient *client, DriveState *state, QObject *parent)
     : QObject(parent)
     , m_client(client)
@@ -36,14 +18,10 @@ ValueEdits::ValueEdits(DriveClient *client, DriveState *state, QObject *parent)
 
 ValueEdits::~ValueEdits() = default;
 
-void ValueEdits::write(const ParameterDescription &parameter, quint8 setMask, qint32 raw, Done done)
+void ValueEdits::restore(const ParameterDescription &parameter, quint8 setMask,
+                         const Values &before, Done done)
 {
-    apply(parameter, { WriteStep { setMask, raw, false } }, false, std::move(done));
-}
-
-void ValueEdits::resetToDefault(const ParameterDescription &parameter, quint8 setMask, Done done)
-{
-    apply(parameter, { WriteStep { setMask, 0, true } }, true, std::move(done));
+    apply(parameter, restoringSteps(setMask, before), false, std::move(done));
 }
 
 void ValueEdits::apply(const ParameterDescription &parameter, QList<WriteStep> steps, bool reset,

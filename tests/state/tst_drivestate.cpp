@@ -5,6 +5,7 @@
 #include "session/ValueChange.h"
 #include "state/DriveState.h"
 #include "state/EditCheck.h"
+#include "state/FileEdits.h"
 
 #include <QDateTime>
 #include <QSignalSpy>
@@ -188,6 +189,45 @@ private slots:
         const ParameterState ramp(*state.parameter(kRampTime), QStringLiteral("oP.11"));
         QVERIFY(!EditCheck::valueRefusal(ramp, -1, PasswordLevel::Supervisor).isEmpty());
         QVERIFY(EditCheck::valueRefusal(ramp, 100, PasswordLevel::Supervisor).isEmpty());
+    }
+
+    // A file's edit goes into its state at once and says what it replaced; undo puts back
+    // exactly that, a value never read included.
+    void aFileEditIsMadeAtOnceAndUndoneExactly()
+    {
+        DriveState state;
+        DriveDescription file = drive();
+        file.groups[1].parameters[0].values[3] = std::nullopt; // oP.10, set 3 never read
+        state.setDescription(file);
+        FileEdits edits(&state);
+        const ParameterDescription maxFrequency = *state.parameter(kMaxFrequency);
+        std::optional<EditOutcome> outcome;
+        edits.write(maxFrequency, 0b1010, 7000, [&](const EditOutcome &done) { outcome = done; });
+        QVERIFY(outcome); // no waiting: a file has no drive to answer
+        QCOMPARE(outcome->acknowledgedMask, quint8(0b1010));
+        QVERIFY(outcome->complete());
+        QCOMPARE(outcome->before[1], 6000);
+        QCOMPARE(outcome->before[3], std::nullopt);
+        QCOMPARE(state.value(kMaxFrequency, 1), 7000);
+        QCOMPARE(state.value(kMaxFrequency, 3), 7000);
+        QCOMPARE(state.value(kMaxFrequency, 2), 5000);
+
+        edits.restore(maxFrequency, 0b1010, outcome->before);
+        QCOMPARE(state.value(kMaxFrequency, 1), 6000);
+        QCOMPARE(state.value(kMaxFrequency, 3), std::nullopt);
+
+        // A drive cannot be given "never read": undo writes the known values only.
+        const QList<WriteStep> steps = StateEditor::restoringSteps(0b1010, outcome->before);
+        QCOMPARE(steps.size(), 1);
+        QCOMPARE(steps.constFirst().setMask, quint8(0b10));
+        QCOMPARE(steps.constFirst().raw, 6000);
+
+        // A reset puts the default; a parameter without sets takes it in its one value.
+        const ParameterDescription ramp = *state.parameter(kRampTime);
+        state.putValue(kRampTime, 0, 900);
+        edits.resetToDefault(ramp, 0b100, [&](const EditOutcome &done) { outcome = done; });
+        QCOMPARE(state.value(kRampTime, 0), 500);
+        QCOMPARE(outcome->before[0], 900);
     }
 };
 

@@ -1,7 +1,5 @@
 #include "DocumentEditor.h"
 
-#include "DocumentValueCommand.h"
-
 #include "model/ParameterModel.h"
 #include "parameters/ParameterId.h"
 #include "parameters/SetList.h"
@@ -19,6 +17,7 @@ DocumentEditor::DocumentEditor(ParameterModel *model, QUndoStack *undoStack, QOb
     : QObject(parent)
     , m_model(model)
     , m_undoStack(undoStack)
+    , m_files(model->state())
 {
     connect(m_model, &ParameterModel::valueEdited, this, &DocumentEditor::write);
     // Both come after the command's redo() or undo() has put its values into the model.
@@ -50,7 +49,7 @@ void DocumentEditor::rememberSaved(quint16 address)
 {
     if (m_saved.contains(address))
         return;
-    DocumentValueCommand::Values values {};
+    ValueCommand::Values values {};
     for (int set = 0; set < kParameterSets; ++set)
         values[std::size_t(set)] = m_model->state()->value(address, set);
     m_saved.insert(address, values);
@@ -94,8 +93,8 @@ void DocumentEditor::onCleanChanged(bool clean)
 }
 
 QUndoCommand *DocumentEditor::makeChange(quint16 address, quint8 *setMask, qint32 raw,
-                                         const QString &text, QString *refusal,
-                                         QUndoCommand *parent)
+                                         ValueCommand::Kind kind, const QString &text,
+                                         QString *refusal, QUndoCommand *parent)
 {
     const ParameterDescription *parameter = m_model->state()->parameter(address);
     if (!parameter) {
@@ -108,22 +107,40 @@ QUndoCommand *DocumentEditor::makeChange(quint16 address, quint8 *setMask, qint3
         *refusal = refused;
         return nullptr;
     }
-    DocumentValueCommand::Values before {};
-    DocumentValueCommand::Values after {};
     bool changes = false;
     for (int set = 0; set < kParameterSets; ++set) {
-        if (!(*setMask & (1u << set)))
-            continue;
-        before[std::size_t(set)] = m_model->state()->value(address, set);
-        after[std::size_t(set)] = raw;
-        changes = changes || before[std::size_t(set)] != raw;
+        if (*setMask & (1u << set))
+            changes = changes || m_model->state()->value(address, set) != raw;
     }
     if (!changes) {
         refusal->clear(); // nothing to do, and nothing wrong
         return nullptr;
     }
     rememberSaved(address);
-    return new DocumentValueCommand(m_model, address, *setMask, before, after, text, parent);
+    const bool reset = kind == ValueCommand::Kind::ResetToDefault;
+    ValueCommand::Values before {};
+    m_files.apply(*parameter, { WriteStep { *setMask, raw, reset } }, reset,
+                  [&before](const EditOutcome &outcome) { before = outcome.before; });
+    return new ValueCommand(this, kind, address, *setMask, raw, before, text, parent);
+}
+
+QString DocumentEditor::commandText(quint16 address, quint8 setMask, qint32 raw) const
+{
+    const EditText text = m_model->state()->editText(address);
+    return tr("Change %1 to %2%3").arg(text.id(), text.value(raw), text.inSets(setMask));
+}
+
+void DocumentEditor::perform(ValueCommand *command, ValueCommand::Direction direction)
+{
+    const ParameterDescription *parameter = m_model->state()->parameter(command->address());
+    if (!parameter)
+        return;
+    if (direction == ValueCommand::Direction::Undo) {
+        m_files.restore(*parameter, command->setMask(), command->before());
+        return;
+    }
+    m_files.apply(*parameter, command->redoSteps(),
+                  command->kind() == ValueCommand::Kind::ResetToDefault);
 }
 
 void DocumentEditor::write(quint16 address, quint8 setMask, qint32 raw)
@@ -131,7 +148,7 @@ void DocumentEditor::write(quint16 address, quint8 setMask, qint32 raw)
     const EditText text = m_model->state()->editText(address);
     QString refusal;
     QUndoCommand *command = makeChange(
-        address, &setMask, raw,
+        address, &setMask, raw, ValueCommand::Kind::Write,
         tr("Change %1 to %2%3").arg(text.id(), text.value(raw), text.inSets(setMask)), &refusal);
     if (!command) {
         if (!refusal.isEmpty()) {
@@ -155,7 +172,7 @@ void DocumentEditor::resetToDefault(quint16 address, quint8 setMask)
     const EditText text = m_model->state()->editText(address);
     QString refusal;
     QUndoCommand *command = makeChange(
-        address, &setMask, parameter->defaultValue,
+        address, &setMask, parameter->defaultValue, ValueCommand::Kind::ResetToDefault,
         tr("Reset %1 to its default%2").arg(text.id(), text.inSets(setMask)), &refusal);
     if (!command) {
         emit message(refusal.isEmpty()
@@ -178,7 +195,8 @@ void DocumentEditor::copySet(int fromSet, int toSet)
     for (const CopySetPlan::Item &item : plan.items) {
         quint8 mask = quint8(1u << toSet);
         QString refusal;
-        if (!makeChange(item.address, &mask, item.raw, QString(), &refusal, macro.get())
+        if (!makeChange(item.address, &mask, item.raw, ValueCommand::Kind::Write,
+                        commandText(item.address, mask, item.raw), &refusal, macro.get())
             && !refusal.isEmpty())
             ++refused;
     }

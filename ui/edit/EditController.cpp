@@ -70,11 +70,11 @@ void EditController::changeDone(const EditOutcome &outcome)
     // password parameter it would send a password that fails and block every older step.
     const bool undoable = !parameter || !readBackMayDiffer(*parameter);
     if (undoable) {
-        const auto kind = outcome.reset ? WriteValueCommand::Kind::ResetToDefault
-                                        : WriteValueCommand::Kind::Write;
+        const auto kind = outcome.reset ? ValueCommand::Kind::ResetToDefault
+                                        : ValueCommand::Kind::Write;
         const quint8 done = outcome.acknowledgedMask;
         const qint32 raw = outcome.steps.constFirst().raw;
-        m_undoStack->push(new WriteValueCommand(this, kind, address, done, raw, outcome.before,
+        m_undoStack->push(new ValueCommand(this, kind, address, done, raw, outcome.before,
                                                 commandText(kind, address, done, raw)));
     }
     QString result = text.outcome(outcome);
@@ -83,26 +83,26 @@ void EditController::changeDone(const EditOutcome &outcome)
     emit message(result);
 }
 
-QString EditController::commandText(WriteValueCommand::Kind kind, quint16 address, quint8 setMask,
+QString EditController::commandText(ValueCommand::Kind kind, quint16 address, quint8 setMask,
                                     qint32 raw) const
 {
     const EditText text = m_model->state()->editText(address);
-    return kind == WriteValueCommand::Kind::ResetToDefault
+    return kind == ValueCommand::Kind::ResetToDefault
         ? tr("Reset %1 to its default%2").arg(text.id(), text.inSets(setMask))
         : tr("Write %1 = %2%3").arg(text.id(), text.value(raw), text.inSets(setMask));
 }
 
-void EditController::perform(WriteValueCommand *command, Direction direction)
+void EditController::perform(ValueCommand *command, ValueCommand::Direction direction)
 {
-    const bool undo = direction == Direction::Undo;
+    const bool undo = direction == ValueCommand::Direction::Undo;
     const quint16 address = command->address();
     const EditText text = m_model->state()->editText(address);
     if (undo && command->unknownBeforeMask()) {
         emit message(tr("%1%2: the value before the change is not known, so it stays as it is")
                          .arg(text.id(), text.inSets(command->unknownBeforeMask())));
     }
-    const QList<WriteStep> steps = undo ? command->undoSteps() : command->redoSteps();
-    if (steps.isEmpty())
+    // Nothing known to put back: no request.
+    if (undo && StateEditor::restoringSteps(command->setMask(), command->before()).isEmpty())
         return;
     const ParameterDescription *parameter = m_model->state()->parameter(address);
     if (!parameter) {
@@ -111,18 +111,21 @@ void EditController::perform(WriteValueCommand *command, Direction direction)
         outcome.error = tr("this drive has no parameter %1").arg(ParameterId::hexAddress(address));
         return performed(command, command->lifeToken(), direction, outcome);
     }
-    const bool reset = !undo && command->kind() == WriteValueCommand::Kind::ResetToDefault;
-    m_edits->apply(
-        *parameter, steps, reset,
-        [this, command, alive = command->lifeToken(), direction](const EditOutcome &outcome) {
-            performed(command, alive, direction, outcome);
-        });
+    auto done = [this, command, alive = command->lifeToken(), direction](const EditOutcome &outcome) {
+        performed(command, alive, direction, outcome);
+    };
+    if (undo) {
+        m_edits->restore(*parameter, command->setMask(), command->before(), std::move(done));
+        return;
+    }
+    m_edits->apply(*parameter, command->redoSteps(),
+                   command->kind() == ValueCommand::Kind::ResetToDefault, std::move(done));
 }
 
-void EditController::performed(WriteValueCommand *command, const std::weak_ptr<const int> &alive,
-                               Direction direction, const EditOutcome &outcome)
+void EditController::performed(ValueCommand *command, const std::weak_ptr<const int> &alive,
+                               ValueCommand::Direction direction, const EditOutcome &outcome)
 {
-    const bool undo = direction == Direction::Undo;
+    const bool undo = direction == ValueCommand::Direction::Undo;
     const QString what
         = alive.expired() ? m_model->state()->editText(outcome.address).id() : command->text();
     if (outcome.ok()) {

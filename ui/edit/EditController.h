@@ -2,7 +2,7 @@
 
 #include "frame/ParameterEditing.h"
 #include "ValueReadBatch.h"
-#include "WriteValueCommand.h"
+#include "ValueCommand.h"
 
 #include "session/CopySet.h"
 #include "state/ValueEdits.h"
@@ -27,12 +27,10 @@ class ParameterModel;
 // value. A value that only came
 // from the drive is never written back to it. Lives in the GUI thread; the client, the model and
 // the undo stack outlive it.
-class EditController : public QObject, public ParameterEditing
+class EditController : public QObject, public ParameterEditing, public ValueCommand::Host
 {
     Q_OBJECT
 public:
-    enum class Direction : quint8 { Redo, Undo };
-
     EditController(DriveClient *client, ParameterModel *model, QUndoStack *undoStack,
                    QObject *parent = nullptr);
     ~EditController() override;
@@ -69,13 +67,12 @@ signals:
     void progress(int done, int total); // of a copy or refresh
 
 private:
-    friend class WriteValueCommand;
     // copySet() while its job runs in the client's thread.
     struct CopyJob
     {
         CopySetPlan plan;
         std::shared_ptr<CopySetJob> job;
-        QList<WriteValueCommand::Values> before; // per item: the target set's value, for undo
+        QList<ValueCommand::Values> before; // per item: the target set's value, for undo
         QFutureWatcher<WriteOutcome> watcher;
         std::unique_ptr<QUndoCommand> macro; // the values written, one step on the stack
         int written = 0;
@@ -85,12 +82,12 @@ private:
     };
 
     // Undo or redo of a command on the stack: to the drive and back.
-    void perform(WriteValueCommand *command, Direction direction);
-    void performed(WriteValueCommand *command, const std::weak_ptr<const int> &alive,
-                   Direction direction, const EditOutcome &outcome);
+    void perform(ValueCommand *command, ValueCommand::Direction direction) override;
+    void performed(ValueCommand *command, const std::weak_ptr<const int> &alive,
+                   ValueCommand::Direction direction, const EditOutcome &outcome);
     void changeDone(const EditOutcome &outcome);
     // The undo history's name of a change: "Write op.11 = 2500 1/min (set 2)".
-    QString commandText(WriteValueCommand::Kind kind, quint16 address, quint8 setMask,
+    QString commandText(ValueCommand::Kind kind, quint16 address, quint8 setMask,
                         qint32 raw) const;
 
     void copyTake(int begin, int end);

@@ -41,7 +41,7 @@ void EditController::copySet(int fromSet, int toSet)
     job->macro
         = std::make_unique<QUndoCommand>(tr("Copy set %1 to set %2").arg(fromSet).arg(toSet));
     for (const CopySetPlan::Item &item : std::as_const(job->plan.items)) {
-        WriteValueCommand::Values before{};
+        ValueCommand::Values before{};
         before[std::size_t(toSet)] = m_model->state()->value(item.address, toSet);
         job->before << before;
         m_model->state()->markPending(item.address, quint8(1u << toSet), item.raw);
@@ -66,9 +66,9 @@ void EditController::copyTake(int begin, int end)
         const CopySetPlan::Item &item = copy.plan.items.at(index);
         m_model->state()->showOutcome(outcome);
         if (outcome.acknowledgedMask) {
-            new WriteValueCommand(this, WriteValueCommand::Kind::Write, item.address,
+            new ValueCommand(this, ValueCommand::Kind::Write, item.address,
                                   outcome.acknowledgedMask, item.raw, copy.before.at(index),
-                                  commandText(WriteValueCommand::Kind::Write, item.address,
+                                  commandText(ValueCommand::Kind::Write, item.address,
                                               outcome.acknowledgedMask, item.raw),
                                   copy.macro.get());
             ++copy.written;

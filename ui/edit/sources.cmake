@@ -4,7 +4,6 @@ target_sources(drivedesk_ui PRIVATE
     edit/AccessController.cpp edit/AccessController.h
     edit/AccessFeature.cpp edit/AccessFeature.h
     edit/DocumentEditor.cpp edit/DocumentEditor.h
-    edit/DocumentValueCommand.cpp edit/DocumentValueCommand.h
     edit/EditController.cpp edit/EditJobs.cpp edit/EditController.h
     edit/EditingFeature.cpp edit/EditingFeature.h
     edit/PasswordDialog.cpp edit/PasswordDialog.h
@@ -13,5 +12,5 @@ target_sources(drivedesk_ui PRIVATE
     edit/SetsDialog.cpp edit/SetsDialog.h
     edit/SetsFeature.cpp edit/SetsFeature.h
     edit/ValueReadBatch.cpp edit/ValueReadBatch.h
-    edit/WriteValueCommand.cpp edit/WriteValueCommand.h
+    edit/ValueCommand.cpp edit/ValueCommand.h
 )
