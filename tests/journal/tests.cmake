@@ -1,5 +1,6 @@
 # core/journal: the journal of the values written. Its storage and filters; the files it cannot
-# write or read; several programs writing at once (journal_writer, started twice).
+# write or read; several programs writing at once (journal_writer, started twice); the command
+# that reads it.
 drivedesk_add_test(NAME tst_journal LABELS unit SOURCES journal/tst_journal.cpp
     LIBS drivedesk_journal)
 drivedesk_add_test(NAME tst_journalfilter LABELS unit SOURCES journal/tst_journalfilter.cpp
@@ -16,3 +17,6 @@ foreach(test tst_journalproblems tst_journalprocesses)
     target_compile_definitions(${test} PRIVATE JOURNAL_WRITER="$<TARGET_FILE:journal_writer>")
 endforeach()
 
+drivedesk_add_test(NAME tst_clijournal LABELS integration SOURCES journal/tst_clijournal.cpp
+    LIBS drivedesk_cli)
+add_dependencies(tst_clijournal drivedesk-cli)
