@@ -1,5 +1,6 @@
 #include "Journal.h"
 
+#include "journal/JournalCheckpointer.h"
 #include "journal/JournalProblem.h"
 #include "journal/JournalRows.h"
 #include "journal/JournalSchema.h"
@@ -107,6 +108,12 @@ Journal::~Journal()
 
 void Journal::close()
 {
+    m_checkpointer.reset(); // a checkpoint under way ends first
+    if (isOpen() && m_access == Access::Write) {
+        // What this program wrote, into the file, now that no entry waits.
+        QSqlQuery(QSqlDatabase::database(m_connection, false))
+            .exec(QStringLiteral("PRAGMA wal_checkpoint(PASSIVE)"));
+    }
     m_statements.reset(); // the queries go before their connection
     if (QSqlDatabase::contains(m_connection)) {
         QSqlDatabase::database(m_connection, false).close();
@@ -197,7 +204,10 @@ bool Journal::prepare(Access access)
             return fail(tr("cannot write the journal %1: SQLite cannot keep a write-ahead log "
                            "there (journal mode %2)")
                             .arg(m_path, query.value(0).toString()));
-        if (!query.exec(QStringLiteral("PRAGMA synchronous = NORMAL")))
+        // Checkpoints sync the disk (milliseconds): never in the middle of an entry, but beside
+        // it (JournalCheckpointer) and at close() (docs/journal.md, "Nothing is lost").
+        if (!query.exec(QStringLiteral("PRAGMA synchronous = NORMAL"))
+            || !query.exec(QStringLiteral("PRAGMA wal_autocheckpoint = 0")))
             return failed(query.lastError());
         if (state == JournalSchema::State::Empty)
             state = JournalSchema::create(db, &error);
@@ -232,6 +242,7 @@ bool Journal::prepare(Access access)
         return failed(prepareError);
     }
     m_statements = std::move(statements);
+    m_entriesSinceCheckpoint = 0;
     return true;
 }
 
@@ -309,6 +320,13 @@ bool Journal::complete(qint64 id, const JournalValue &readBack, JournalOutcome o
         return fail(JournalProblem::of(m_path, query.lastError(), m_busyTimeoutMs));
     if (query.numRowsAffected() != 1)
         return fail(tr("the journal %1 has no entry %2").arg(m_path).arg(id));
+    // The log into the file now and then, beside this thread (JournalCheckpointer).
+    if (++m_entriesSinceCheckpoint >= kCheckpointEntries) {
+        m_entriesSinceCheckpoint = 0;
+        if (!m_checkpointer)
+            m_checkpointer = std::make_unique<JournalCheckpointer>(m_path, m_busyTimeoutMs);
+        m_checkpointer->request();
+    }
     return true;
 }
 

@@ -14,6 +14,8 @@ class QSqlQuery;
 
 namespace DriveDesk {
 
+class JournalCheckpointer;
+
 // The journal of every value DriveDesk writes (docs/journal.md): an SQLite file through Qt SQL,
 // in write-ahead-log mode, that the window and any number of command lines write at once. An
 // entry is begun (outcome unknown) before its telegram is sent and completed when the answer
@@ -29,6 +31,8 @@ class Journal
 public:
     enum class Access : quint8 { Write, Read };
     static constexpr int kDefaultBusyTimeoutMs = 5000;
+    // Entries completed after which the log is copied into the file, beside the entries.
+    static constexpr int kCheckpointEntries = 500;
 
     // $XDG_DATA_HOME/DriveDesk/journal.sqlite (~/.local/share/...), the window's and the
     // command line's alike.
@@ -82,7 +86,9 @@ private:
     QString m_connection; // the QSqlDatabase connection's unique name
     int m_busyTimeoutMs = kDefaultBusyTimeoutMs;
     Access m_access = Access::Write;
+    int m_entriesSinceCheckpoint = 0;
     std::unique_ptr<Statements> m_statements; // set while open
+    std::unique_ptr<JournalCheckpointer> m_checkpointer; // from the first checkpoint on
     QString m_error;
 };
 

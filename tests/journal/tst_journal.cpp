@@ -283,6 +283,22 @@ private slots:
         QSqlDatabase::removeDatabase(QStringLiteral("check"));
     }
 
+    // The log is copied into the file beside the entries, every kCheckpointEntries, while the
+    // journal stays open: the file grows, the log does not grow for ever, nothing is lost.
+    void theLogIsCopiedBesideTheEntries()
+    {
+        Journal journal(journalPath());
+        QVERIFY(journal.open());
+        const qint64 newFile = QFileInfo(journalPath()).size();
+        for (int i = 0; i < Journal::kCheckpointEntries; ++i) {
+            const std::optional<qint64> id = journal.begin(fullEntry());
+            QVERIFY(id);
+            QVERIFY(journal.complete(*id, {}, JournalOutcome::Written));
+        }
+        QTRY_VERIFY_WITH_TIMEOUT(QFileInfo(journalPath()).size() > newFile, 30000);
+        QCOMPARE(readAll().size(), Journal::kCheckpointEntries);
+    }
+
     // Two journals in one process each have a connection of their own.
     void twoJournalsInOneProcess()
     {
