@@ -30,10 +30,17 @@ bool JournalFilter::setDrive(const QString &text, QString *error)
                      .arg(text);
         return false;
     }
-    m_drive = match.hasMatch() ? match.captured(1) : drive;
+    m_serialNumber.clear();
+    m_link.clear();
     m_address.reset();
-    if (match.hasMatch())
+    if (match.hasMatch()) {
+        m_link = match.captured(1);
         m_address = match.captured(2).toInt();
+    } else if (drive == QLatin1String("sim") || drive.contains(QLatin1Char(':'))) {
+        m_link = drive;
+    } else {
+        m_serialNumber = drive;
+    }
     return true;
 }
 

@@ -15,9 +15,9 @@ namespace DriveDesk {
 class JournalFilter
 {
 public:
-    // A drive: its serial number, or the link as it was given ("serial:/dev/ttyUSB0", "sim":
-    // every drive on it), or "LINK@ADDRESS" for the drive at that bus address
-    // ("serial:/dev/ttyUSB0@3").
+    // A drive: the link as it was given ("serial:/dev/ttyUSB0", "tcp:10.0.0.5:5020", "sim":
+    // every drive on it; a link has a ':' or is "sim"), "LINK@ADDRESS" for the drive at that
+    // bus address ("serial:/dev/ttyUSB0@3"), or else its serial number.
     bool setDrive(const QString &text, QString *error);
     // "op.28", "op.028", "OP.28" (the group matched case-insensitively, the number by value),
     // or an address "0x0A1C", "0A1Ch".
@@ -33,7 +33,8 @@ public:
     static std::optional<QDateTime> parseTime(const QString &text, bool end, QString *error);
 
     // What the query matches (empty or unset: anything).
-    const QString &driveText() const { return m_drive; } // serial number or link, no address
+    const QString &serialNumber() const { return m_serialNumber; }
+    const QString &link() const { return m_link; } // without the address
     const std::optional<int> &driveAddress() const { return m_address; } // with LINK@ADDRESS
     const std::optional<quint16> &parameterAddress() const { return m_parameterAddress; }
     const QStringList &parameterIds() const { return m_parameterIds; } // "op.28", "op.028"
@@ -42,7 +43,8 @@ public:
     const QString &user() const { return m_user; }
 
 private:
-    QString m_drive;
+    QString m_serialNumber;
+    QString m_link;
     std::optional<int> m_address;
     std::optional<quint16> m_parameterAddress;
     QStringList m_parameterIds;

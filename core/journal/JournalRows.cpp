@@ -75,12 +75,17 @@ JournalSelect journalSelect(const JournalFilter &filter)
 {
     QStringList conditions;
     JournalSelect select;
-    if (!filter.driveText().isEmpty() && filter.driveAddress()) {
-        conditions << QStringLiteral("e.link = ? AND e.address = ?");
-        select.values << filter.driveText() << *filter.driveAddress();
-    } else if (!filter.driveText().isEmpty()) {
-        conditions << QStringLiteral("(e.serial_number = ? OR e.link = ?)");
-        select.values << filter.driveText() << filter.driveText();
+    if (!filter.serialNumber().isEmpty()) {
+        conditions << QStringLiteral("e.serial_number = ?");
+        select.values << filter.serialNumber();
+    }
+    if (!filter.link().isEmpty()) {
+        conditions << QStringLiteral("e.link = ?");
+        select.values << filter.link();
+    }
+    if (filter.driveAddress()) {
+        conditions << QStringLiteral("e.address = ?");
+        select.values << *filter.driveAddress();
     }
     if (filter.parameterAddress()) {
         conditions << QStringLiteral("e.parameter_address = ?");

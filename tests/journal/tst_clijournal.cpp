@@ -304,7 +304,7 @@ private slots:
         QVERIFY2(request, qPrintable(error));
         QCOMPARE(request->command, CliRequest::Command::Journal);
         QCOMPARE(request->format, CliRequest::Format::Csv);
-        QCOMPARE(request->journalFilter.driveText(), QStringLiteral("sim"));
+        QCOMPARE(request->journalFilter.link(), QStringLiteral("sim"));
         QCOMPARE(request->journalFilter.driveAddress(), std::optional<int>(1));
     }
 

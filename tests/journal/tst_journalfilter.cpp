@@ -75,13 +75,19 @@ private slots:
         JournalFilter filter;
         QString error;
         QVERIFY(filter.setDrive(QStringLiteral("1234567"), &error));
-        QCOMPARE(filter.driveText(), QStringLiteral("1234567"));
+        QCOMPARE(filter.serialNumber(), QStringLiteral("1234567"));
+        QCOMPARE(filter.link(), QString());
         QCOMPARE(filter.driveAddress(), std::nullopt);
         QVERIFY(filter.setDrive(QStringLiteral("tcp:10.0.0.5:5020@17"), &error));
-        QCOMPARE(filter.driveText(), QStringLiteral("tcp:10.0.0.5:5020"));
+        QCOMPARE(filter.serialNumber(), QString());
+        QCOMPARE(filter.link(), QStringLiteral("tcp:10.0.0.5:5020"));
         QCOMPARE(filter.driveAddress(), std::optional<int>(17));
+        QVERIFY(filter.setDrive(QStringLiteral("serial:/dev/ttyUSB0"), &error));
+        QCOMPARE(filter.link(), QStringLiteral("serial:/dev/ttyUSB0"));
+        QCOMPARE(filter.driveAddress(), std::nullopt);
         QVERIFY(filter.setDrive(QStringLiteral("sim"), &error));
-        QCOMPARE(filter.driveText(), QStringLiteral("sim"));
+        QCOMPARE(filter.link(), QStringLiteral("sim"));
+        QCOMPARE(filter.serialNumber(), QString());
         QCOMPARE(filter.driveAddress(), std::nullopt);
         for (const QString &bad :
              { QString(), QStringLiteral("sim@"), QStringLiteral("sim@300") }) {
