@@ -2,6 +2,7 @@
 
 #include "parameters/ParameterCsv.h"
 
+#include <QHash>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -33,13 +34,35 @@ QJsonValue jsonTime(const QDateTime &time)
     return time.isValid() ? QJsonValue(time.toUTC().toString(Qt::ISODateWithMs)) : QJsonValue::Null;
 }
 
-QString csvTime(const QDateTime &time)
+// Local times of UTC times, the zone's offset looked up once per quarter of an hour (every
+// zone changes its offset on a quarter hour): each lookup reads the system's zone from the disk.
+class LocalTimes
 {
-    return time.isValid() ? time.toLocalTime()
-                                .toOffsetFromUtc(time.toLocalTime().offsetFromUtc())
-                                .toString(Qt::ISODateWithMs)
-                          : QString();
-}
+public:
+    QDateTime of(const QDateTime &time)
+    {
+        if (!time.isValid())
+            return {};
+        constexpr qint64 kQuarterMs = 15 * 60 * 1000;
+        const qint64 ms = time.toMSecsSinceEpoch();
+        const qint64 quarter = ms >= 0 ? ms / kQuarterMs : (ms - kQuarterMs + 1) / kQuarterMs;
+        auto offset = m_offsets.constFind(quarter);
+        if (offset == m_offsets.constEnd()) {
+            const QDateTime start = QDateTime::fromMSecsSinceEpoch(quarter * kQuarterMs, Qt::UTC);
+            offset = m_offsets.insert(quarter, start.toLocalTime().offsetFromUtc());
+        }
+        return QDateTime::fromMSecsSinceEpoch(ms, Qt::OffsetFromUTC, *offset);
+    }
+
+    // "2026-11-24T10:42:05.123+01:00", empty for no time.
+    QString iso(const QDateTime &time)
+    {
+        return time.isValid() ? of(time).toString(Qt::ISODateWithMs) : QString();
+    }
+
+private:
+    QHash<qint64, int> m_offsets;
+};
 
 QString csvRaw(const JournalValue &value)
 {
@@ -61,24 +84,26 @@ QString JournalFormat::table(const QList<JournalEntry> &entries)
 {
     if (entries.isEmpty())
         return tr("no entries") + QLatin1Char('\n');
+    LocalTimes localTimes;
     QList<QStringList> rows;
     rows.reserve(entries.size() + 1);
     rows << QStringList { tr("#"),         tr("Time"),    tr("User"),   tr("Drive"),
                           tr("Parameter"), tr("Set"),     tr("Before"), tr("Written"),
                           tr("Read back"), tr("Outcome"), tr("Job") };
     for (const JournalEntry &entry : entries) {
-        rows << QStringList { QString::number(entry.id),
-                              entry.time.toLocalTime().toString(
-                                  QStringLiteral("yyyy-MM-dd HH:mm:ss")),
-                              QStringLiteral("%1@%2").arg(entry.user, entry.host),
-                              entry.drive.name(),
-                              entry.parameterId,
-                              setText(entry),
-                              valueText(entry.before, entry.password),
-                              valueText(entry.written, entry.password),
-                              valueText(entry.readBack, entry.password),
-                              entry.outcomeText(),
-                              entry.jobDescription };
+        rows << QStringList {
+            QString::number(entry.id),
+            localTimes.of(entry.time).toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")),
+            QStringLiteral("%1@%2").arg(entry.user, entry.host),
+            entry.drive.name(),
+            entry.parameterId,
+            setText(entry),
+            valueText(entry.before, entry.password),
+            valueText(entry.written, entry.password),
+            valueText(entry.readBack, entry.password),
+            entry.outcomeText(),
+            entry.jobDescription
+        };
     }
     QList<qsizetype> widths(rows.first().size(), 0);
     for (const QStringList &row : std::as_const(rows)) {
@@ -149,6 +174,7 @@ QByteArray JournalFormat::json(const QList<JournalEntry> &entries)
 QByteArray JournalFormat::csv(const QList<JournalEntry> &entries)
 {
     const auto line = [](const QStringList &fields) { return csvRecord(fields).toUtf8() + "\r\n"; };
+    LocalTimes localTimes;
     QByteArray text = line({ QStringLiteral("id"),
                              QStringLiteral("time"),
                              QStringLiteral("completed"),
@@ -178,8 +204,8 @@ QByteArray JournalFormat::csv(const QList<JournalEntry> &entries)
                              QStringLiteral("reason") });
     for (const JournalEntry &entry : entries) {
         text += line({ QString::number(entry.id),
-                       csvTime(entry.time),
-                       csvTime(entry.completedTime),
+                       localTimes.iso(entry.time),
+                       localTimes.iso(entry.completedTime),
                        entry.user,
                        entry.host,
                        entry.program,
