@@ -86,7 +86,7 @@ QString cliUsage()
         "                               to a drive whose settings equal its file\n"
         "\n"
         "The values DriveDesk wrote (no --connect: read from the journal):\n"
-        "  journal [--drive SERIAL|LINK@ADDRESS] [--parameter ID] [--since TIME]\n"
+        "  journal [--drive SERIAL|LINK[@ADDRESS]] [--parameter ID] [--since TIME]\n"
         "          [--until TIME] [--user NAME] [--format table|json|csv]\n"
         "                               each value written, oldest first: time, user,\n"
         "                               drive, parameter, set, the value before, written\n"
