@@ -42,7 +42,7 @@ foreach(program drivedesk drivedesk-cli drivedesk-sim)
 endforeach()
 install(FILES ${drivedesk_packaging_dir}/changelog.gz ${CMAKE_CURRENT_LIST_DIR}/copyright
               ${PROJECT_SOURCE_DIR}/docs/parameter-file.md ${PROJECT_SOURCE_DIR}/docs/plant.md
-              ${PROJECT_SOURCE_DIR}/docs/simulated-drive.md
+              ${PROJECT_SOURCE_DIR}/docs/simulated-drive.md ${PROJECT_SOURCE_DIR}/docs/journal.md
         DESTINATION ${drivedesk_doc_dir})
 
 # The Debian package: drivedesk_<version>_amd64.deb.
@@ -72,9 +72,10 @@ scope channels.
 The package holds the window (drivedesk), the command line (drivedesk-cli)
 and a simulated drive to try it all without hardware (drivedesk-sim).")
 # The libraries the programs link come from dpkg-shlibdeps. What it cannot see: Qt loads its
-# platform plugins (xcb) at run time, and its own translations for the German texts.
+# platform plugins (xcb) and its SQLite driver (the journal) at run time, and its own
+# translations for the German texts.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "qt6-qpa-plugins")
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "qt6-qpa-plugins, libqt6sql6-sqlite")
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "qt6-translations-l10n")
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "bash-completion")
 # The package is made from the build the tests ran in: `cpack` must not build everything first

@@ -6,6 +6,7 @@
 #include "client/WhenFinished.h"
 
 #include "bus/LinkFactory.h"
+#include "cli/CliJournal.h"
 #include "cli/CliPlant.h"
 #include "cli/ParameterTable.h"
 #include "parameters/DriveIdentity.h"
@@ -48,6 +49,11 @@ void CliRunner::start()
         m_plant = new CliPlant(m_request, this);
         connect(m_plant, &CliPlant::finished, this, &CliRunner::finished);
         return m_plant->start();
+    }
+    if (m_request.command == CliRequest::Command::Journal) {
+        QString error;
+        const int exitCode = printJournal(m_request, m_out, m_err, &error);
+        return exitCode == 0 ? done() : fail(exitCode, error);
     }
     if (!loadFiles())
         return;
@@ -105,6 +111,7 @@ void CliRunner::runCommand()
     case CliRequest::Command::Upload: runUpload(); break;
     case CliRequest::Command::Download: runDownload(); break;
     case CliRequest::Command::Scope: runScope(); break;
+    case CliRequest::Command::Journal: break; // no drive: start() printed it
     }
 }
 

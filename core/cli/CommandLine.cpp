@@ -1,5 +1,6 @@
 #include "CommandLine.h"
 
+#include "cli/CliJournal.h"
 #include "cli/CliPlant.h"
 #include "cli/CommandLineUsage.h"
 #include "link/ConnectionOptions.h"
@@ -141,6 +142,7 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     const QCommandLineOption update(QStringLiteral("update")); // plant find
     parser.addOptions({help, timeout, quiet, format, values, set, sets, raw, noCache, password,
                        dryRun, force, channels, duration, rate, csv, offline, version, update});
+    addJournalOptions(parser);
     *helpText = cliUsage();
 
     // A negative value ("write uF.07 -5") is not an option: shield such words from the parser.
@@ -173,8 +175,16 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     }
     helpText->clear();
     // A plant's links come from its file, not from --connect (core/cli/CliPlant.cpp).
-    if (parser.positionalArguments().value(0).compare(QLatin1String("plant"), Qt::CaseInsensitive) == 0)
-        return parsePlantCommand(parser, connection, parser.positionalArguments(), error);
+    const QString first = parser.positionalArguments().value(0).toLower();
+    if (first == QLatin1String("plant")) {
+        auto plant = parsePlantCommand(parser, connection, parser.positionalArguments(), error);
+        if (plant && !parseJournalOptions(parser, *plant, error))
+            return std::nullopt;
+        return plant;
+    }
+    // The journal is read from its file, not from a drive (core/cli/CliJournal.cpp).
+    if (first == QLatin1String("journal"))
+        return parseJournalCommand(parser, connection, parser.positionalArguments(), error);
     if (parser.isSet(update)) {
         *error = QStringLiteral("--update belongs to plant find");
         return std::nullopt;
@@ -260,7 +270,8 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
         request.command = CliRequest::Command::Scope;
     } else {
         const QString commands
-            = QStringLiteral("info, scan, read, write, upload, download, diff or scope");
+            = QStringLiteral("info, scan, read, write, upload, download, diff, scope, plant or "
+                             "journal");
         *error = command.isEmpty()
             ? QStringLiteral("no command: use %1").arg(commands)
             : QStringLiteral("unknown command '%1': use %2").arg(positional.value(0), commands);
@@ -329,6 +340,8 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
         *error = QStringLiteral("--set belongs to read (write takes --sets)");
         return std::nullopt;
     }
+    if (!parseJournalOptions(parser, request, error))
+        return std::nullopt;
     return request;
 }
 

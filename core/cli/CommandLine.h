@@ -1,5 +1,6 @@
 #pragma once
 
+#include "journal/JournalFilter.h"
 #include "link/ConnectionSettings.h"
 
 #include <QList>
@@ -23,7 +24,7 @@ struct PlantRequest {
 
 // What `drivedesk-cli` was asked to do, parsed and checked before anything is sent.
 struct CliRequest {
-    enum class Command : quint8 { Info, Scan, Read, Write, Diff, Upload, Download, Scope };
+    enum class Command : quint8 { Info, Scan, Read, Write, Diff, Upload, Download, Scope, Journal };
     enum class Format : quint8 { Table, Json, Csv };
 
     ConnectionSettings connection;
@@ -52,6 +53,12 @@ struct CliRequest {
     bool offline = false; // the drive's offline records (service 21) instead of a recording
     QString csvFile;
     std::optional<PlantRequest> plant; // set for `plant`: the other command fields are unused
+    // The journal of the values written (docs/journal.md), for every command: --journal PATH
+    // (empty: Journal::defaultPath()); --no-journal (journalWrites false): the values this
+    // command writes are not journaled.
+    QString journalPath;
+    bool journalWrites = true;
+    JournalFilter journalFilter; // journal: which entries to print
 };
 
 // The usage text and the parse. Returns nothing and sets *error (naming the bad argument)

@@ -1,0 +1,175 @@
+// drivedesk-cli journal: the values written, read from the journal's file.
+#include "CliJournal.h"
+
+#include "journal/Journal.h"
+#include "journal/JournalFormat.h"
+#include "link/ConnectionOptions.h"
+
+#include <QCommandLineParser>
+#include <QFileInfo>
+
+namespace DriveDesk {
+
+namespace {
+
+// The journal command's own options, each naming what it filters.
+const char *const kFilterOptions[] = { "drive", "parameter", "since", "until", "user" };
+
+class CliJournalText
+{
+    Q_DECLARE_TR_FUNCTIONS(CliJournalText)
+};
+
+} // namespace
+
+void addJournalOptions(QCommandLineParser &parser)
+{
+    parser.addOption(QCommandLineOption(QStringLiteral("journal"), {}, QStringLiteral("path")));
+    parser.addOption(QCommandLineOption(QStringLiteral("no-journal")));
+    for (const char *name : kFilterOptions)
+        parser.addOption(QCommandLineOption(QLatin1String(name), {}, QLatin1String(name)));
+}
+
+bool parseJournalOptions(const QCommandLineParser &parser, CliRequest &request, QString *error)
+{
+    const bool reading = request.command == CliRequest::Command::Journal;
+    if (!reading) {
+        for (const char *name : kFilterOptions) {
+            if (parser.isSet(QLatin1String(name))) {
+                *error = QStringLiteral("--%1 belongs to journal").arg(QLatin1String(name));
+                return false;
+            }
+        }
+    }
+    const bool path = parser.isSet(QStringLiteral("journal"));
+    request.journalWrites = !parser.isSet(QStringLiteral("no-journal"));
+    if (!request.journalWrites && reading) {
+        *error = QStringLiteral("--no-journal does not apply to journal, which reads the journal");
+        return false;
+    }
+    if (!request.journalWrites && path) {
+        *error = QStringLiteral("--journal and --no-journal exclude each other");
+        return false;
+    }
+    if (path) {
+        request.journalPath = parser.value(QStringLiteral("journal"));
+        if (request.journalPath.trimmed().isEmpty()) {
+            *error = QStringLiteral("--journal takes the path of a journal file");
+            return false;
+        }
+    }
+    return true;
+}
+
+std::optional<CliRequest> parseJournalCommand(const QCommandLineParser &parser,
+                                              const ConnectionOptions &connection,
+                                              const QStringList &positional, QString *error)
+{
+    if (connection.hasTarget(parser) || connection.hasTargetDetails(parser)) {
+        *error = QStringLiteral("journal reads the journal's file: --connect, --protocol, "
+                                "--address, --baud and --hsp5-extensions do not apply");
+        return std::nullopt;
+    }
+    for (const char *name :
+         { "values", "set", "sets", "raw", "password", "channels", "duration", "rate", "csv",
+           "offline", "dry-run", "force", "update", "no-cache", "timeout" }) {
+        if (parser.isSet(QLatin1String(name))) {
+            *error = QStringLiteral("--%1 does not belong to journal").arg(QLatin1String(name));
+            return std::nullopt;
+        }
+    }
+    if (positional.size() != 1) {
+        *error = QStringLiteral("journal takes no arguments: filter with --drive, --parameter, "
+                                "--since, --until or --user");
+        return std::nullopt;
+    }
+    CliRequest request;
+    request.command = CliRequest::Command::Journal;
+    if (parser.isSet(QStringLiteral("format"))) {
+        const QString format = parser.value(QStringLiteral("format")).toLower();
+        if (format != QLatin1String("table") && format != QLatin1String("json")
+            && format != QLatin1String("csv")) {
+            *error = QStringLiteral("unknown format '%1': use table, json or csv").arg(format);
+            return std::nullopt;
+        }
+        request.format = format == QLatin1String("json") ? CliRequest::Format::Json
+            : format == QLatin1String("csv")             ? CliRequest::Format::Csv
+                                                         : CliRequest::Format::Table;
+    }
+    JournalFilter &filter = request.journalFilter;
+    const auto option = [&parser](const char *name) { return parser.value(QLatin1String(name)); };
+    const auto given = [&parser](const char *name) { return parser.isSet(QLatin1String(name)); };
+    // Each filter option's value, checked by JournalFilter; the message names the option.
+    using Setter = bool (JournalFilter::*)(const QString &, QString *);
+    const auto apply = [&](const char *name, Setter set) {
+        QString problem;
+        if (!given(name) || (filter.*set)(option(name), &problem))
+            return true;
+        *error = QStringLiteral("--%1: %2").arg(QLatin1String(name), problem);
+        return false;
+    };
+    if (!apply("drive", &JournalFilter::setDrive)
+        || !apply("parameter", &JournalFilter::setParameter)
+        || !apply("since", &JournalFilter::setSince) || !apply("until", &JournalFilter::setUntil))
+        return std::nullopt;
+    if (given("user")) {
+        if (option("user").trimmed().isEmpty()) {
+            *error = QStringLiteral("--user takes a login name");
+            return std::nullopt;
+        }
+        filter.setUser(option("user").trimmed());
+    }
+    if (filter.since().isValid() && filter.until().isValid() && filter.until() <= filter.since()) {
+        *error = QStringLiteral("--until %1 is not after --since %2")
+                     .arg(option("until"), option("since"));
+        return std::nullopt;
+    }
+    std::optional<Language> language;
+    if (!connection.language(parser, &language, error))
+        return std::nullopt;
+    if (language)
+        request.connection.language = *language;
+    request.quiet = parser.isSet(QStringLiteral("quiet"));
+    if (!parseJournalOptions(parser, request, error))
+        return std::nullopt;
+    return request;
+}
+
+int printJournal(const CliRequest &request, QTextStream &out, QTextStream &err, QString *error)
+{
+    Journal journal(request.journalPath);
+    QList<JournalEntry> entries;
+    if (request.journalPath.isEmpty() && !QFileInfo::exists(journal.path())) {
+        // Nothing has been written on this account yet: an empty journal, not a mistake.
+        if (!request.quiet)
+            err << CliJournalText::tr("no journal yet at %1: nothing was written")
+                       .arg(journal.path())
+                << Qt::endl;
+    } else {
+        if (!journal.open(Journal::Access::Read)) {
+            *error = journal.errorString();
+            return 2;
+        }
+        const std::optional<QList<JournalEntry>> found = journal.entries(request.journalFilter);
+        if (!found) {
+            *error = journal.errorString();
+            return 2;
+        }
+        entries = *found;
+    }
+    switch (request.format) {
+    case CliRequest::Format::Json:
+        out << QString::fromUtf8(JournalFormat::json(entries));
+        break;
+    case CliRequest::Format::Csv:
+        out << QString::fromUtf8(JournalFormat::csv(entries));
+        break;
+    case CliRequest::Format::Table:
+        out << JournalFormat::table(entries);
+        break;
+    }
+    out.flush();
+    return 0;
+}
+
+} // namespace DriveDesk

@@ -1,0 +1,22 @@
+# core/journal: the journal of the values written. Its storage and filters; the files it cannot
+# write or read; several programs writing at once (journal_writer, started twice); the command
+# that reads it.
+drivedesk_add_test(NAME tst_journal LABELS unit SOURCES journal/tst_journal.cpp
+    LIBS drivedesk_journal)
+drivedesk_add_test(NAME tst_journalfilter LABELS unit SOURCES journal/tst_journalfilter.cpp
+    LIBS drivedesk_journal)
+
+add_executable(journal_writer journal/journal_writer.cpp)
+target_link_libraries(journal_writer PRIVATE drivedesk_journal)
+drivedesk_add_test(NAME tst_journalproblems LABELS integration
+    SOURCES journal/tst_journalproblems.cpp LIBS drivedesk_journal)
+drivedesk_add_test(NAME tst_journalprocesses LABELS integration
+    SOURCES journal/tst_journalprocesses.cpp LIBS drivedesk_journal)
+foreach(test tst_journalproblems tst_journalprocesses)
+    add_dependencies(${test} journal_writer)
+    target_compile_definitions(${test} PRIVATE JOURNAL_WRITER="$<TARGET_FILE:journal_writer>")
+endforeach()
+
+drivedesk_add_test(NAME tst_clijournal LABELS integration SOURCES journal/tst_clijournal.cpp
+    LIBS drivedesk_cli)
+add_dependencies(tst_clijournal drivedesk-cli)
