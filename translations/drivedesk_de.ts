@@ -80,6 +80,13 @@
     </message>
 </context>
 <context>
+    <name>CliJournalText</name>
+    <message>
+        <source>no journal yet at %1: nothing was written</source>
+        <translation>noch kein Journal unter %1: nichts wurde geschrieben</translation>
+    </message>
+</context>
+<context>
     <name>ComparisonTable</name>
     <message>
         <source>equal</source>
@@ -871,6 +878,14 @@
     <message>
         <source>%1; nothing was written</source>
         <translation>%1; nichts wurde geschrieben</translation>
+    </message>
+    <message>
+        <source>%1 not written: %2 (--no-journal writes without it)</source>
+        <translation>%1 nicht geschrieben: %2 (--no-journal schreibt ohne Journal)</translation>
+    </message>
+    <message>
+        <source>write %1</source>
+        <translation>%1 schreiben</translation>
     </message>
 </context>
 <context>
@@ -4604,6 +4619,10 @@ Verbindungsdialog.
         <source>the connection to the drive was closed</source>
         <translation>die Verbindung zum Umrichter wurde geschlossen</translation>
     </message>
+    <message>
+        <source>the journal cannot record it: %1</source>
+        <translation>das Journal kann es nicht festhalten: %1</translation>
+    </message>
 </context>
 <context>
     <name>DriveIdentity</name>
@@ -4653,6 +4672,13 @@ Verbindungsdialog.
     <message>
         <source>%1: no set chosen</source>
         <translation>%1: kein Satz gewählt</translation>
+    </message>
+</context>
+<context>
+    <name>EditJournal</name>
+    <message>
+        <source>not sent: %1</source>
+        <translation>nicht gesendet: %1</translation>
     </message>
 </context>
 <context>
@@ -4754,6 +4780,189 @@ Verbindungsdialog.
     <message>
         <source>free bit %1 set</source>
         <translation>freies Bit %1 gesetzt</translation>
+    </message>
+</context>
+<context>
+    <name>Journal</name>
+    <message>
+        <source>cannot open the journal %1: Qt&apos;s SQLite driver (QSQLITE) is missing</source>
+        <translation>das Journal %1 kann nicht geöffnet werden: der SQLite-Treiber von Qt (QSQLITE) fehlt</translation>
+    </message>
+    <message>
+        <source>cannot write the journal %1: SQLite cannot keep a write-ahead log there (journal mode %2)</source>
+        <translation>das Journal %1 kann nicht geschrieben werden: SQLite kann dort kein Write-Ahead-Log führen (Journalmodus %2)</translation>
+    </message>
+    <message>
+        <source>the journal %1 is not open for writing</source>
+        <translation>das Journal %1 ist nicht zum Schreiben geöffnet</translation>
+    </message>
+    <message>
+        <source>the journal %1 has no entry %2</source>
+        <translation>das Journal %1 hat keinen Eintrag %2</translation>
+    </message>
+    <message>
+        <source>the journal %1 is not open</source>
+        <translation>das Journal %1 ist nicht geöffnet</translation>
+    </message>
+</context>
+<context>
+    <name>JournalEntryText</name>
+    <message>
+        <source>written</source>
+        <translation>geschrieben</translation>
+    </message>
+    <message>
+        <source>refused</source>
+        <translation>abgelehnt</translation>
+    </message>
+    <message>
+        <source>refused: %1</source>
+        <translation>abgelehnt: %1</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unbekannt</translation>
+    </message>
+    <message>
+        <source>unknown: %1</source>
+        <translation>unbekannt: %1</translation>
+    </message>
+</context>
+<context>
+    <name>JournalFilterText</name>
+    <message>
+        <source>&apos;%1&apos; names no drive: give its serial number, its link (serial:/dev/ttyUSB0) or LINK@ADDRESS (serial:/dev/ttyUSB0@3)</source>
+        <translation>&apos;%1&apos; nennt keinen Umrichter: Seriennummer, Verbindung (serial:/dev/ttyUSB0) oder VERBINDUNG@ADRESSE (serial:/dev/ttyUSB0@3) angeben</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is no parameter: give its id like op.28 or its address like 0x0A1C</source>
+        <translation>&apos;%1&apos; ist kein Parameter: Kennung wie op.28 oder Adresse wie 0x0A1C angeben</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is no time: use a date like 2026-11-24 or a date and time like 2026-11-24T10:42 (local time)</source>
+        <translation>&apos;%1&apos; ist keine Zeit: ein Datum wie 2026-11-24 oder Datum und Uhrzeit wie 2026-11-24T10:42 (Ortszeit) angeben</translation>
+    </message>
+</context>
+<context>
+    <name>JournalFormat</name>
+    <message>
+        <source>active</source>
+        <translation>aktiv</translation>
+    </message>
+    <message>
+        <source>(password)</source>
+        <translation>(Passwort)</translation>
+    </message>
+    <message>
+        <source>no entries</source>
+        <translation>keine Einträge</translation>
+    </message>
+    <message>
+        <source>#</source>
+        <translation>Nr.</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>User</source>
+        <translation>Benutzer</translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation>Umrichter</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Set</source>
+        <translation>Satz</translation>
+    </message>
+    <message>
+        <source>Before</source>
+        <translation>Vorher</translation>
+    </message>
+    <message>
+        <source>Written</source>
+        <translation>Geschrieben</translation>
+    </message>
+    <message>
+        <source>Read back</source>
+        <translation>Zurückgelesen</translation>
+    </message>
+    <message>
+        <source>Outcome</source>
+        <translation>Ergebnis</translation>
+    </message>
+    <message>
+        <source>Job</source>
+        <translation>Auftrag</translation>
+    </message>
+</context>
+<context>
+    <name>JournalProblem</name>
+    <message>
+        <source>cannot write the journal %1: the folder %2 cannot be made</source>
+        <translation>das Journal %1 kann nicht geschrieben werden: der Ordner %2 kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>cannot write the journal %1: it is no file</source>
+        <translation>das Journal %1 kann nicht geschrieben werden: es ist keine Datei</translation>
+    </message>
+    <message>
+        <source>cannot write the journal %1: the file is read-only</source>
+        <translation>das Journal %1 kann nicht geschrieben werden: die Datei ist schreibgeschützt</translation>
+    </message>
+    <message>
+        <source>cannot write the journal %1: the folder %2 is read-only (the journal keeps %3-wal and %3-shm beside it)</source>
+        <translation>das Journal %1 kann nicht geschrieben werden: der Ordner %2 ist schreibgeschützt (das Journal legt %3-wal und %3-shm daneben an)</translation>
+    </message>
+    <message>
+        <source>cannot write the journal %1: the disk is full</source>
+        <translation>das Journal %1 kann nicht geschrieben werden: der Datenträger ist voll</translation>
+    </message>
+    <message>
+        <source>there is no journal %1</source>
+        <translation>es gibt kein Journal %1</translation>
+    </message>
+    <message>
+        <source>cannot read the journal %1: it is no file</source>
+        <translation>das Journal %1 kann nicht gelesen werden: es ist keine Datei</translation>
+    </message>
+    <message>
+        <source>cannot read the journal %1: permission denied</source>
+        <translation>das Journal %1 kann nicht gelesen werden: Zugriff verweigert</translation>
+    </message>
+    <message>
+        <source>the journal %1 is locked by another program: waited %2 ms for it</source>
+        <translation>das Journal %1 ist von einem anderen Programm gesperrt: %2 ms darauf gewartet</translation>
+    </message>
+    <message>
+        <source>cannot write the journal %1: it is read-only (%2)</source>
+        <translation>das Journal %1 kann nicht geschrieben werden: es ist schreibgeschützt (%2)</translation>
+    </message>
+    <message>
+        <source>cannot write the journal %1: the disk failed or is full (%2)</source>
+        <translation>das Journal %1 kann nicht geschrieben werden: der Datenträger ist defekt oder voll (%2)</translation>
+    </message>
+    <message>
+        <source>cannot open the journal %1 (%2)</source>
+        <translation>das Journal %1 kann nicht geöffnet werden (%2)</translation>
+    </message>
+    <message>
+        <source>the journal %1: %2</source>
+        <translation>das Journal %1: %2</translation>
+    </message>
+    <message>
+        <source>%1 is no DriveDesk journal: it is damaged or not a journal at all</source>
+        <translation>%1 ist kein DriveDesk-Journal: es ist beschädigt oder gar kein Journal</translation>
+    </message>
+    <message>
+        <source>the journal %1 was made by a newer DriveDesk (journal version %2; this one knows up to %3): it is not written</source>
+        <translation>das Journal %1 stammt von einem neueren DriveDesk (Journalversion %2; dieses kennt bis %3): es wird nicht geschrieben</translation>
     </message>
 </context>
 <context>

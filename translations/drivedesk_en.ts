@@ -80,6 +80,13 @@
     </message>
 </context>
 <context>
+    <name>CliJournalText</name>
+    <message>
+        <source>no journal yet at %1: nothing was written</source>
+        <translation>no journal yet at %1: nothing was written</translation>
+    </message>
+</context>
+<context>
     <name>ComparisonTable</name>
     <message>
         <source>equal</source>
@@ -871,6 +878,14 @@
     <message>
         <source>%1; nothing was written</source>
         <translation>%1; nothing was written</translation>
+    </message>
+    <message>
+        <source>%1 not written: %2 (--no-journal writes without it)</source>
+        <translation>%1 not written: %2 (--no-journal writes without it)</translation>
+    </message>
+    <message>
+        <source>write %1</source>
+        <translation>write %1</translation>
     </message>
 </context>
 <context>
@@ -4604,6 +4619,10 @@ dialog.
         <source>the connection to the drive was closed</source>
         <translation>the connection to the drive was closed</translation>
     </message>
+    <message>
+        <source>the journal cannot record it: %1</source>
+        <translation>the journal cannot record it: %1</translation>
+    </message>
 </context>
 <context>
     <name>DriveIdentity</name>
@@ -4653,6 +4672,13 @@ dialog.
     <message>
         <source>%1: no set chosen</source>
         <translation>%1: no set chosen</translation>
+    </message>
+</context>
+<context>
+    <name>EditJournal</name>
+    <message>
+        <source>not sent: %1</source>
+        <translation>not sent: %1</translation>
     </message>
 </context>
 <context>
@@ -4754,6 +4780,189 @@ dialog.
     <message>
         <source>free bit %1 set</source>
         <translation>free bit %1 set</translation>
+    </message>
+</context>
+<context>
+    <name>Journal</name>
+    <message>
+        <source>cannot open the journal %1: Qt&apos;s SQLite driver (QSQLITE) is missing</source>
+        <translation>cannot open the journal %1: Qt&apos;s SQLite driver (QSQLITE) is missing</translation>
+    </message>
+    <message>
+        <source>cannot write the journal %1: SQLite cannot keep a write-ahead log there (journal mode %2)</source>
+        <translation>cannot write the journal %1: SQLite cannot keep a write-ahead log there (journal mode %2)</translation>
+    </message>
+    <message>
+        <source>the journal %1 is not open for writing</source>
+        <translation>the journal %1 is not open for writing</translation>
+    </message>
+    <message>
+        <source>the journal %1 has no entry %2</source>
+        <translation>the journal %1 has no entry %2</translation>
+    </message>
+    <message>
+        <source>the journal %1 is not open</source>
+        <translation>the journal %1 is not open</translation>
+    </message>
+</context>
+<context>
+    <name>JournalEntryText</name>
+    <message>
+        <source>written</source>
+        <translation>written</translation>
+    </message>
+    <message>
+        <source>refused</source>
+        <translation>refused</translation>
+    </message>
+    <message>
+        <source>refused: %1</source>
+        <translation>refused: %1</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unknown</translation>
+    </message>
+    <message>
+        <source>unknown: %1</source>
+        <translation>unknown: %1</translation>
+    </message>
+</context>
+<context>
+    <name>JournalFilterText</name>
+    <message>
+        <source>&apos;%1&apos; names no drive: give its serial number, its link (serial:/dev/ttyUSB0) or LINK@ADDRESS (serial:/dev/ttyUSB0@3)</source>
+        <translation>&apos;%1&apos; names no drive: give its serial number, its link (serial:/dev/ttyUSB0) or LINK@ADDRESS (serial:/dev/ttyUSB0@3)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is no parameter: give its id like op.28 or its address like 0x0A1C</source>
+        <translation>&apos;%1&apos; is no parameter: give its id like op.28 or its address like 0x0A1C</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is no time: use a date like 2026-11-24 or a date and time like 2026-11-24T10:42 (local time)</source>
+        <translation>&apos;%1&apos; is no time: use a date like 2026-11-24 or a date and time like 2026-11-24T10:42 (local time)</translation>
+    </message>
+</context>
+<context>
+    <name>JournalFormat</name>
+    <message>
+        <source>active</source>
+        <translation>active</translation>
+    </message>
+    <message>
+        <source>(password)</source>
+        <translation>(password)</translation>
+    </message>
+    <message>
+        <source>no entries</source>
+        <translation>no entries</translation>
+    </message>
+    <message>
+        <source>#</source>
+        <translation>#</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Time</translation>
+    </message>
+    <message>
+        <source>User</source>
+        <translation>User</translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation>Drive</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Set</source>
+        <translation>Set</translation>
+    </message>
+    <message>
+        <source>Before</source>
+        <translation>Before</translation>
+    </message>
+    <message>
+        <source>Written</source>
+        <translation>Written</translation>
+    </message>
+    <message>
+        <source>Read back</source>
+        <translation>Read back</translation>
+    </message>
+    <message>
+        <source>Outcome</source>
+        <translation>Outcome</translation>
+    </message>
+    <message>
+        <source>Job</source>
+        <translation>Job</translation>
+    </message>
+</context>
+<context>
+    <name>JournalProblem</name>
+    <message>
+        <source>cannot write the journal %1: the folder %2 cannot be made</source>
+        <translation>cannot write the journal %1: the folder %2 cannot be made</translation>
+    </message>
+    <message>
+        <source>cannot write the journal %1: it is no file</source>
+        <translation>cannot write the journal %1: it is no file</translation>
+    </message>
+    <message>
+        <source>cannot write the journal %1: the file is read-only</source>
+        <translation>cannot write the journal %1: the file is read-only</translation>
+    </message>
+    <message>
+        <source>cannot write the journal %1: the folder %2 is read-only (the journal keeps %3-wal and %3-shm beside it)</source>
+        <translation>cannot write the journal %1: the folder %2 is read-only (the journal keeps %3-wal and %3-shm beside it)</translation>
+    </message>
+    <message>
+        <source>cannot write the journal %1: the disk is full</source>
+        <translation>cannot write the journal %1: the disk is full</translation>
+    </message>
+    <message>
+        <source>there is no journal %1</source>
+        <translation>there is no journal %1</translation>
+    </message>
+    <message>
+        <source>cannot read the journal %1: it is no file</source>
+        <translation>cannot read the journal %1: it is no file</translation>
+    </message>
+    <message>
+        <source>cannot read the journal %1: permission denied</source>
+        <translation>cannot read the journal %1: permission denied</translation>
+    </message>
+    <message>
+        <source>the journal %1 is locked by another program: waited %2 ms for it</source>
+        <translation>the journal %1 is locked by another program: waited %2 ms for it</translation>
+    </message>
+    <message>
+        <source>cannot write the journal %1: it is read-only (%2)</source>
+        <translation>cannot write the journal %1: it is read-only (%2)</translation>
+    </message>
+    <message>
+        <source>cannot write the journal %1: the disk failed or is full (%2)</source>
+        <translation>cannot write the journal %1: the disk failed or is full (%2)</translation>
+    </message>
+    <message>
+        <source>cannot open the journal %1 (%2)</source>
+        <translation>cannot open the journal %1 (%2)</translation>
+    </message>
+    <message>
+        <source>the journal %1: %2</source>
+        <translation>the journal %1: %2</translation>
+    </message>
+    <message>
+        <source>%1 is no DriveDesk journal: it is damaged or not a journal at all</source>
+        <translation>%1 is no DriveDesk journal: it is damaged or not a journal at all</translation>
+    </message>
+    <message>
+        <source>the journal %1 was made by a newer DriveDesk (journal version %2; this one knows up to %3): it is not written</source>
+        <translation>the journal %1 was made by a newer DriveDesk (journal version %2; this one knows up to %3): it is not written</translation>
     </message>
 </context>
 <context>

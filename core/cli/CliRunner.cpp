@@ -1,14 +1,11 @@
 #include "CliRunner.h"
 
-#include "state/DriveState.h"
-#include "state/EditCheck.h"
-
-#include "client/WhenFinished.h"
-
 #include "bus/LinkFactory.h"
 #include "cli/CliJournal.h"
 #include "cli/CliPlant.h"
 #include "cli/ParameterTable.h"
+#include "client/WhenFinished.h"
+#include "journal/Journal.h"
 #include "parameters/DriveIdentity.h"
 #include "parameters/MetadataCache.h"
 #include "parameters/ParameterCsv.h"
@@ -16,11 +13,11 @@
 #include "parameters/ParameterFormat.h"
 #include "parameters/ParameterId.h"
 #include "parameters/ParameterProperties.h"
-#include "session/ScopeRecorder.h"
 #include "scope/ScopeRecording.h"
 #include "session/PasswordLevelJob.h"
-#include "state/EditText.h"
-#include "state/EditCheck.h"
+#include "session/ScopeRecorder.h"
+#include "state/DriveState.h"
+#include "state/EditJournal.h"
 #include "state/ValueEdits.h"
 
 #include <QFutureWatcher>
@@ -251,7 +248,7 @@ void CliRunner::lookUpParameter(
         one.groupPages = {quint8(*address >> 8)};
         one.onlyParameters = {*address};
         one.values = false;
-        scan(one, [this, address = *address, next](const DriveDescription &found) {
+        scan(one, [this, drive, address = *address, next](const DriveDescription &found) {
             const ParameterDescription *parameter = found.find(address);
             if (!found.incompleteReason.isEmpty())
                 return fail(1, found.incompleteReason);
@@ -259,76 +256,19 @@ void CliRunner::lookUpParameter(
                 return fail(2, tr("the drive has no parameter %1").arg(m_request.parameter));
             if (!parameter->error.isEmpty())
                 return fail(1, QStringLiteral("%1: %2").arg(m_request.parameter, parameter->error));
-            m_state->setDescription(found);
+            // The other groups as the first scan found them (no parameters), for what is read
+            // of the drive later (readIdentity).
+            DriveDescription known = found;
+            for (const GroupDescription &group : drive.groups) {
+                if (!known.findGroup(group.id)) {
+                    known.groups << group;
+                    known.groups.last().parameters.clear();
+                }
+            }
+            m_state->setDescription(known);
             next(found.groups.constFirst(), *parameter);
         });
     });
-}
-
-void CliRunner::runRead()
-{
-    lookUpParameter([this](const GroupDescription &group, const ParameterDescription &parameter) {
-        const QString id = parameterId(group, parameter);
-        QFuture<Reply> reply = m_request.set
-                                   ? m_client->readValue(parameter.address, quint8(1u << *m_request.set))
-                                   : m_client->readValueStandard(parameter.address, 0);
-        const QString where = m_request.set ? tr("set %1").arg(*m_request.set) : tr("active set");
-        whenFinished(reply, this, [this, id, where, parameter](const Reply &r) {
-            if (!r.ok())
-                return fail(1, QStringLiteral("%1: %2").arg(id, r.message()));
-            const qint32 raw = r.data<ParameterValue>()->value;
-            m_out << tr("%1  %2 = %3  (raw %4, %5)")
-                         .arg(id, parameter.name, valueText(parameter, raw))
-                         .arg(raw)
-                         .arg(where)
-                  << '\n';
-            done();
-        }, [this] { connectionClosed(); });
-    });
-}
-
-void CliRunner::runWrite()
-{
-    lookUpParameter([this](const GroupDescription &group, const ParameterDescription &parameter) {
-        const QString id
-            = ParameterId::format(parameter.address, GroupAddress{group.id, group.address});
-        // The window's rule (EditCheck) at the level the drive enforces itself: a plaintext or
-        // a number in display units (or a raw integer with --raw), refused when it cannot be
-        // held exactly or lies outside the limits.
-        const ParameterState state(parameter, id);
-        if (const QString refusal = EditCheck::refusal(state, PasswordLevel::Supervisor);
-            !refusal.isEmpty())
-            return fail(2, tr("%1; nothing was written").arg(refusal));
-        const ParameterFormat format = m_request.raw ? state.format().rawFormat() : state.format();
-        QString error;
-        const std::optional<qint32> raw = format.parse(m_request.value, &error);
-        if (!raw)
-            return fail(2, tr("%1: %2; nothing was written").arg(id, error));
-        if (const QString refusal = EditCheck::valueRefusal(state, *raw, PasswordLevel::Supervisor);
-            !refusal.isEmpty())
-            return fail(2, tr("%1; nothing was written").arg(refusal));
-        writeValue(id, parameter, true, *raw);
-    });
-}
-
-// The window's edit path: a write counts only once the drive shows the value, and the outcome
-// is said in the window's words.
-void CliRunner::writeValue(const QString &id, const ParameterDescription &parameter,
-                           bool described, qint32 raw)
-{
-    auto *edits = new ValueEdits(m_client.get(), m_state, this);
-    edits->write(parameter, m_request.setMask, raw,
-                 [this, edits, id, parameter, described](const EditOutcome &outcome) {
-                     edits->deleteLater();
-                     const QString text
-                         = EditText(id, described ? &parameter : nullptr).outcome(outcome);
-                     // Unknown is no refusal: the drive did not answer (exit 3, as a
-                     // drive that stopped answering).
-                     if (!outcome.complete())
-                         return fail(outcome.anyUnknown() ? 3 : 1, text);
-                     m_out << text << '\n';
-                     done();
-                 });
 }
 
 QString CliRunner::valueText(const ParameterDescription &parameter, qint32 raw) const

@@ -12,6 +12,8 @@
 namespace DriveDesk {
 
 class DriveState;
+class EditJournal;
+class Journal;
 
 class CliPlant;
 class DownloadRun;
@@ -71,6 +73,12 @@ private:
     void lookUpParameter(std::function<void(const GroupDescription &, const ParameterDescription &)> next);
     // Writes through core's ValueEdits and reads back; `described`: the parameter's metadata
     // is known (not DIN66019), so values are shown scaled.
+    // The journal (--journal, or the default) opened to write; false and why when it cannot
+    // take an entry.
+    bool openJournal(QString *error);
+    // Reads the drive's identification (In.00, In.06, In.10) into m_state for the journal,
+    // and the parameter's values before the write.
+    void readIdentity(quint16 address, std::function<void()> next);
     void writeValue(const QString &id, const ParameterDescription &parameter, bool described,
                     qint32 raw);
     // Scans with progress on stderr and hands the result to done.
@@ -91,6 +99,8 @@ private:
     // What the command knows of the drive: the parameter it reads or writes, and the edit's
     // outcome, as the window's state holds them.
     DriveState *m_state = nullptr;
+    std::unique_ptr<Journal> m_journal;          // a write's, unless --no-journal
+    std::unique_ptr<EditJournal> m_editJournal;
     QTextStream m_out;
     QTextStream m_err;
     bool m_finished = false;

@@ -76,7 +76,7 @@ QList<DriveIdentity::Line> DriveIdentity::lines(const DriveDescription &drive)
         const QString label = tr("%1 (%2)").arg(parameter->name,
                                                 parameterId(group->id, id.number));
         const std::optional<qint32> value = parameter->values[0];
-        lines.append({label, value ? shown(*parameter, *value)
+        lines.append({label, value ? DriveDesk::shown(*parameter, *value)
                                    : tr("not read: %1")
                                          .arg(parameter->error.isEmpty() ? tr("no value")
                                                                          : parameter->error)});
@@ -84,15 +84,20 @@ QList<DriveIdentity::Line> DriveIdentity::lines(const DriveDescription &drive)
     return lines;
 }
 
+QString DriveIdentity::shown(const DriveDescription &drive, const char *group, quint8 number)
+{
+    const ParameterDescription *parameter = findParameter(drive, { group, number, false });
+    if (!parameter || !parameter->values[0])
+        return {};
+    return DriveDesk::shown(*parameter, *parameter->values[0]);
+}
+
 QString DriveIdentity::summary(const DriveDescription &drive)
 {
     if (!drive.identification.isEmpty())
         return drive.identification;
-    const auto value = [&drive](const char *group, quint8 number) -> QString {
-        const ParameterDescription *parameter = findParameter(drive, {group, number, false});
-        if (!parameter || !parameter->values[0])
-            return {};
-        return shown(*parameter, *parameter->values[0]);
+    const auto value = [&drive](const char *group, quint8 number) {
+        return DriveIdentity::shown(drive, group, number);
     };
     const QString type = value("In", 0);
     const QString version = value("In", 6);

@@ -61,6 +61,9 @@ public:
     // type, software version and serial number from the identification parameters; empty when
     // the drive has neither.
     static QString summary(const DriveDescription &drive);
+    // An identification parameter's value as the drive shows it ("1.82"); empty where the
+    // drive lacks it or it was not read.
+    static QString shown(const DriveDescription &drive, const char *group, quint8 number);
 };
 
 } // namespace DriveDesk

@@ -3,6 +3,7 @@
 #include "client/DriveClient.h"
 #include "client/ReplyCheck.h"
 #include "parameters/ParameterAccess.h"
+#include "parameters/ParameterId.h"
 #include "parameters/SetList.h"
 #include "state/DriveState.h"
 
@@ -33,6 +34,7 @@ void ValueEdits::apply(const ParameterDescription &parameter, QList<WriteStep> s
         if (step.reset)
             step.raw = parameter.defaultValue;
     }
+    edit->parameter = parameter;
     edit->change.address = parameter.address;
     edit->change.setProgrammable = parameter.isSetProgrammable();
     edit->change.steps = steps;
@@ -68,6 +70,8 @@ void ValueEdits::begin(const EditPtr &edit)
         for (int set = 0; set < kParameterSets; ++set)
             edit->outcome.before[std::size_t(set)] = m_state->value(edit->change.address, set);
     }
+    if (m_journal && !journal(edit))
+        return;
     auto *watcher = new QFutureWatcher<WriteOutcome>(this);
     connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, edit] {
         const QFuture<WriteOutcome> future = watcher->future();
@@ -106,6 +110,8 @@ void ValueEdits::finish(const EditPtr &edit, const WriteOutcome &written)
     if (queue.isEmpty())
         m_queues.remove(outcome.address);
     setRunning(m_running - 1);
+    if (m_journal && !edit->journaled.isEmpty())
+        m_journal->complete(edit->parameter, edit->journaled, outcome);
     if (m_state)
         m_state->showOutcome(outcome, outcome.superseded);
     emit edited(outcome);
@@ -113,6 +119,29 @@ void ValueEdits::finish(const EditPtr &edit, const WriteOutcome &written)
         edit->done(outcome);
     if (next)
         begin(next);
+}
+
+bool ValueEdits::journal(const EditPtr &edit)
+{
+    const quint16 address = edit->change.address;
+    const QString id
+        = m_state ? m_state->editText(address).id() : ParameterId::hexAddress(address);
+    QString error;
+    const std::optional<QList<EditJournal::Entry>> entries
+        = m_journal->begin(id, edit->parameter, edit->change.steps, edit->outcome.before, &error);
+    if (entries) {
+        edit->journaled = *entries;
+        return true;
+    }
+    // Nothing is written that the journal could not record.
+    WriteOutcome outcome;
+    outcome.address = address;
+    outcome.error = tr("the journal cannot record it: %1").arg(error);
+    for (const WriteStep &step : std::as_const(edit->change.steps))
+        outcome.refusedMask |= step.setMask ? step.setMask : quint8(1);
+    outcome.notSentMask = outcome.refusedMask;
+    finish(edit, outcome);
+    return false;
 }
 
 void ValueEdits::setRunning(int count)

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "state/EditJournal.h"
 #include "state/EditOutcome.h"
 #include "state/StateEditor.h"
 
@@ -43,6 +44,11 @@ public:
     void restore(const ParameterDescription &parameter, quint8 setMask, const Values &before,
                  Done done = {}) override;
 
+    // Every edit from now on is journaled there (docs/journal.md); none: not journaled. An
+    // edit whose entries the journal cannot take is not sent, and its outcome says why. The
+    // journal outlives this object.
+    void setJournal(EditJournal *journal) { m_journal = journal; }
+
     // Edits given and not yet done.
     int runningCount() const { return m_running; }
 
@@ -57,6 +63,8 @@ private:
     struct Edit
     {
         ValueChange change;
+        ParameterDescription parameter;
+        QList<EditJournal::Entry> journaled;
         bool judgeReadBack = true; // not for a parameter whose read-back may differ
         Done done;
         EditOutcome outcome;
@@ -65,10 +73,14 @@ private:
 
     void begin(const EditPtr &edit);
     void finish(const EditPtr &edit, const WriteOutcome &outcome);
+    // Begins the edit's journal entries; false when the journal could not take them: the edit
+    // is then finished unsent.
+    bool journal(const EditPtr &edit);
     void setRunning(int count);
 
     DriveClient *m_client = nullptr;
     DriveState *m_state = nullptr;
+    EditJournal *m_journal = nullptr;
     QHash<quint16, QList<EditPtr>> m_queues; // per parameter; the first one is on its way
     int m_running = 0;
 };

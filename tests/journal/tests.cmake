@@ -20,3 +20,9 @@ endforeach()
 drivedesk_add_test(NAME tst_clijournal LABELS integration SOURCES journal/tst_clijournal.cpp
     LIBS drivedesk_cli)
 add_dependencies(tst_clijournal drivedesk-cli)
+
+# drivedesk-cli write journals what it writes, against drivedesk-sim read again; a journal that
+# cannot take the entry stops the write unsent.
+drivedesk_add_test(NAME tst_journalwrites LABELS integration SOURCES journal/tst_journalwrites.cpp
+    LIBS drivedesk_journal drivedesk_cli)
+add_dependencies(tst_journalwrites drivedesk-cli drivedesk-sim)

@@ -1,0 +1,114 @@
+#include "EditJournal.h"
+
+#include "journal/Journal.h"
+#include "link/ConnectionSettings.h"
+#include "parameters/DriveIdentity.h"
+#include "parameters/ParameterFormat.h"
+#include "parameters/PasswordLevel.h"
+
+namespace DriveDesk {
+
+namespace {
+
+JournalValue journalValue(const ParameterFormat &format, std::optional<qint32> raw)
+{
+    return raw ? JournalValue { raw, format.text(*raw) } : JournalValue {};
+}
+
+} // namespace
+
+EditJournal::EditJournal(Journal *journal, JournalDrive drive, QString job)
+    : m_journal(journal)
+    , m_drive(std::move(drive))
+    , m_job(std::move(job))
+{ }
+
+JournalDrive EditJournal::driveOf(const ConnectionSettings &settings,
+                                  const DriveDescription &drive)
+{
+    JournalDrive named;
+    named.link = settings.target();
+    named.protocol = protocolName(settings.protocol);
+    if (settings.protocol != Protocol::Hsp5)
+        named.address = settings.driveAddress;
+    named.kind = DriveIdentity::shown(drive, "In", 0);
+    named.softwareVersion = DriveIdentity::shown(drive, "In", 6);
+    named.serialNumber = DriveIdentity::shown(drive, "In", 10);
+    return named;
+}
+
+std::optional<QList<EditJournal::Entry>>
+EditJournal::begin(const QString &id, const ParameterDescription &parameter,
+                   const QList<WriteStep> &steps, const StateEditor::Values &before,
+                   QString *error)
+{
+    if (m_jobId == 0) {
+        const std::optional<qint64> job = m_journal->beginJob(m_job);
+        if (!job) {
+            *error = m_journal->errorString();
+            return std::nullopt;
+        }
+        m_jobId = *job;
+    }
+    const ParameterFormat format(parameter);
+    QList<Entry> entries;
+    for (const WriteStep &step : steps) {
+        QList<std::optional<int>> sets;
+        if (step.setMask == 0) {
+            sets << std::nullopt;
+        } else {
+            for (int set = 0; set < kParameterSets; ++set) {
+                if (step.setMask & (1u << set))
+                    sets << (parameter.isSetProgrammable() ? std::optional<int>(set) : std::nullopt);
+            }
+        }
+        for (const std::optional<int> &set : sets) {
+            JournalEntry entry;
+            entry.jobId = m_jobId;
+            entry.jobDescription = m_job;
+            entry.drive = m_drive;
+            entry.parameterId = id;
+            entry.parameterAddress = parameter.address;
+            entry.parameterName = parameter.name;
+            entry.set = set;
+            entry.password = parameter.address == kPasswordParameterAddress;
+            entry.before = journalValue(format, before[std::size_t(set.value_or(0))]);
+            entry.written = journalValue(format, step.raw);
+            const std::optional<qint64> stored = m_journal->begin(entry);
+            if (!stored) {
+                *error = m_journal->errorString();
+                return std::nullopt;
+            }
+            entries << Entry { *stored, set, step.raw };
+        }
+    }
+    return entries;
+}
+
+void EditJournal::complete(const ParameterDescription &parameter, const QList<Entry> &entries,
+                           const EditOutcome &outcome)
+{
+    const ParameterFormat format(parameter);
+    for (const Entry &entry : entries) {
+        const int set = entry.set.value_or(0);
+        const auto bit = quint8(1u << set);
+        const bool active = !entry.set && outcome.askedMask() == 0;
+        const JournalValue readBack = journalValue(format, outcome.readBack[std::size_t(set)]);
+        const bool acknowledged = active ? outcome.activeSetAcknowledged
+                                         : (outcome.acknowledgedMask & bit) != 0;
+        const bool unknown = active ? outcome.activeSetUnanswered
+                                    : (outcome.unknownMask() & bit) != 0;
+        if (acknowledged) {
+            m_journal->complete(entry.id, readBack, JournalOutcome::Written);
+        } else if (unknown) {
+            m_journal->complete(entry.id, readBack, JournalOutcome::Unknown, outcome.error);
+        } else if (!active && (outcome.notSentMask & bit)) {
+            m_journal->complete(entry.id, readBack, JournalOutcome::Refused,
+                                tr("not sent: %1").arg(outcome.error));
+        } else {
+            m_journal->complete(entry.id, readBack, JournalOutcome::Refused, outcome.error);
+        }
+    }
+}
+
+} // namespace DriveDesk
