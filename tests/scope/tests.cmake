@@ -12,7 +12,10 @@ drivedesk_add_test(NAME tst_scopefile LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopefile.cpp LIBS drivedesk_scope)
 drivedesk_add_test(NAME tst_scopetrigger LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopetrigger.cpp LIBS drivedesk_scope)
-# Reading a recording: measurements between the cursors.
+# Reading a recording: measurements between the cursors, math channels.
 drivedesk_add_test(NAME tst_scopemeasurements LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopemeasurements.cpp
+            ${CMAKE_CURRENT_LIST_DIR}/ScopeTestRecording.h LIBS drivedesk_scope)
+drivedesk_add_test(NAME tst_scopemath LABELS unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopemath.cpp
             ${CMAKE_CURRENT_LIST_DIR}/ScopeTestRecording.h LIBS drivedesk_scope)
