@@ -1,7 +1,6 @@
 #include "ScopeMeasurements.h"
 
-#include "ScopeRecording.h"
-#include "ScopeSeries.h"
+#include "ScopeSampleWindow.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,50 +10,6 @@
 namespace DriveDesk {
 
 namespace {
-
-// A window of samples, read through time(i) and value(i) for begin <= i < end: the recording's
-// store in place, or a series.
-struct RecordingWindow
-{
-    RecordingWindow(const ScopeRecording &recording, int channel, double fromMs, double toMs)
-        : recording(recording)
-        , samples(recording.buffer.samples())
-        , channel(channel)
-    {
-        // Whole ms: the first sample at or after `from`, the last at or before `to`.
-        const auto clamp = [](double ms) {
-            constexpr double limit = 9.0e18;
-            return qint64(std::clamp(ms, -limit, limit));
-        };
-        const SampleStore::IndexRange range
-            = samples.indexRange(clamp(std::ceil(fromMs)), clamp(std::floor(toMs)));
-        begin = range.begin;
-        end = range.end;
-    }
-    double time(qsizetype i) const { return double(samples.time(i)); }
-    double value(qsizetype i) const { return recording.displayValue(i, channel); }
-
-    const ScopeRecording &recording;
-    const SampleStore &samples;
-    int channel = 0;
-    qsizetype begin = 0;
-    qsizetype end = 0;
-};
-
-struct SeriesWindow
-{
-    SeriesWindow(const ScopeSeries &series, double fromMs, double toMs)
-        : series(series)
-        , begin(series.lowerBound(fromMs))
-        , end(std::max(begin, series.upperBound(toMs)))
-    { }
-    double time(qsizetype i) const { return series.timeMs[std::size_t(i)]; }
-    double value(qsizetype i) const { return series.values[std::size_t(i)]; }
-
-    const ScopeSeries &series;
-    qsizetype begin = 0;
-    qsizetype end = 0;
-};
 
 // Where the line from sample a to sample b crosses `level` (which lies between their values).
 template<typename Window>
@@ -161,7 +116,7 @@ ScopeMeasurements measureScope(const ScopeRecording &recording, int channel, dou
     Q_ASSERT(channel >= 0 && channel < recording.channels.size());
     if (toMs < fromMs)
         std::swap(fromMs, toMs);
-    return measure(RecordingWindow(recording, channel, fromMs, toMs), options);
+    return measure(ScopeSampleWindow::OfRecording(recording, channel, fromMs, toMs), options);
 }
 
 ScopeMeasurements measureScope(const ScopeSeries &series, double fromMs, double toMs,
@@ -169,7 +124,7 @@ ScopeMeasurements measureScope(const ScopeSeries &series, double fromMs, double 
 {
     if (toMs < fromMs)
         std::swap(fromMs, toMs);
-    return measure(SeriesWindow(series, fromMs, toMs), options);
+    return measure(ScopeSampleWindow::OfSeries(series, fromMs, toMs), options);
 }
 
 } // namespace DriveDesk

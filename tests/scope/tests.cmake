@@ -12,10 +12,13 @@ drivedesk_add_test(NAME tst_scopefile LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopefile.cpp LIBS drivedesk_scope)
 drivedesk_add_test(NAME tst_scopetrigger LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopetrigger.cpp LIBS drivedesk_scope)
-# Reading a recording: measurements between the cursors, math channels.
+# Reading a recording: measurements between the cursors, math channels, the spectrum.
 drivedesk_add_test(NAME tst_scopemeasurements LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopemeasurements.cpp
             ${CMAKE_CURRENT_LIST_DIR}/ScopeTestRecording.h LIBS drivedesk_scope)
 drivedesk_add_test(NAME tst_scopemath LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopemath.cpp
+            ${CMAKE_CURRENT_LIST_DIR}/ScopeTestRecording.h LIBS drivedesk_scope)
+drivedesk_add_test(NAME tst_scopespectrum LABELS unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopespectrum.cpp
             ${CMAKE_CURRENT_LIST_DIR}/ScopeTestRecording.h LIBS drivedesk_scope)
