@@ -4,6 +4,7 @@
 
 #include "bus/LinkFactory.h"
 #include "cli/CliPlant.h"
+#include "cli/CliSpectrum.h"
 #include "cli/ParameterTable.h"
 #include "parameters/DriveIdentity.h"
 #include "parameters/MetadataCache.h"
@@ -43,6 +44,10 @@ void CliRunner::start()
         m_plant = new CliPlant(m_request, this);
         connect(m_plant, &CliPlant::finished, this, &CliRunner::finished);
         return m_plant->start();
+    }
+    if (m_request.command == CliRequest::Command::Spectrum) { // a file, no drive
+        m_finished = true;
+        return emit finished(runSpectrumCommand(m_request, m_out, m_err));
     }
     if (!loadFiles())
         return;
@@ -100,6 +105,7 @@ void CliRunner::runCommand()
     case CliRequest::Command::Upload: runUpload(); break;
     case CliRequest::Command::Download: runDownload(); break;
     case CliRequest::Command::Scope: runScope(); break;
+    case CliRequest::Command::Spectrum: break; // start() runs it: no drive
     }
 }
 

@@ -1,6 +1,7 @@
 #include "CommandLine.h"
 
 #include "cli/CliPlant.h"
+#include "cli/CliSpectrum.h"
 #include "cli/CommandLineUsage.h"
 #include "link/ConnectionOptions.h"
 
@@ -139,8 +140,14 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     const QCommandLineOption offline(QStringLiteral("offline"));
     const QCommandLineOption version(QStringLiteral("version"));
     const QCommandLineOption update(QStringLiteral("update")); // plant find
+    // spectrum
+    const QCommandLineOption channel(QStringLiteral("channel"), {}, QStringLiteral("name"));
+    const QCommandLineOption from(QStringLiteral("from"), {}, QStringLiteral("ms"));
+    const QCommandLineOption to(QStringLiteral("to"), {}, QStringLiteral("ms"));
+    const QCommandLineOption peaks(QStringLiteral("peaks"), {}, QStringLiteral("n"));
     parser.addOptions({help, timeout, quiet, format, values, set, sets, raw, noCache, password,
-                       dryRun, force, channels, duration, rate, csv, offline, version, update});
+                       dryRun, force, channels, duration, rate, csv, offline, version, update,
+                       channel, from, to, peaks});
     *helpText = cliUsage();
 
     // A negative value ("write uF.07 -5") is not an option: shield such words from the parser.
@@ -175,6 +182,15 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     // A plant's links come from its file, not from --connect (core/cli/CliPlant.cpp).
     if (parser.positionalArguments().value(0).compare(QLatin1String("plant"), Qt::CaseInsensitive) == 0)
         return parsePlantCommand(parser, connection, parser.positionalArguments(), error);
+    // A spectrum reads a file, no drive (core/cli/CliSpectrum.cpp).
+    if (parser.positionalArguments().value(0).compare(QLatin1String("spectrum"), Qt::CaseInsensitive) == 0)
+        return parseSpectrumCommand(parser, connection, parser.positionalArguments(), error);
+    for (const QCommandLineOption &option : {channel, from, to, peaks}) {
+        if (parser.isSet(option)) {
+            *error = QStringLiteral("--%1 belongs to spectrum").arg(option.names().constFirst());
+            return std::nullopt;
+        }
+    }
     if (parser.isSet(update)) {
         *error = QStringLiteral("--update belongs to plant find");
         return std::nullopt;
@@ -260,7 +276,8 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
         request.command = CliRequest::Command::Scope;
     } else {
         const QString commands
-            = QStringLiteral("info, scan, read, write, upload, download, diff or scope");
+            = QStringLiteral("info, scan, read, write, upload, download, diff, scope, spectrum or "
+                             "plant");
         *error = command.isEmpty()
             ? QStringLiteral("no command: use %1").arg(commands)
             : QStringLiteral("unknown command '%1': use %2").arg(positional.value(0), commands);
