@@ -134,11 +134,12 @@ double removeMeanAndWindow(double *values, qsizetype n)
 }
 
 // |X_k| scaled to the amplitude of a sine at bin k: 2 |X_k| / sum(w), the bins at 0 and
-// n / 2 once.
-std::vector<double> amplitudes(double *values, fftw_complex *transformed, qsizetype n,
-                               double windowSum)
+// n / 2 once. In place: `values` holds n reals padded to n / 2 + 1 complex numbers, which the
+// transform overwrites (fresh memory costs page faults: one buffer, not two).
+std::vector<double> amplitudes(double *values, qsizetype n, double windowSum)
 {
     const qsizetype bins = n / 2 + 1;
+    auto *transformed = reinterpret_cast<fftw_complex *>(values);
     fftw_plan plan = nullptr;
     {
         const std::lock_guard lock(plannerMutex());
@@ -149,12 +150,13 @@ std::vector<double> amplitudes(double *values, fftw_complex *transformed, qsizet
         const std::lock_guard lock(plannerMutex());
         fftw_destroy_plan(plan);
     }
-    std::vector<double> amplitude(static_cast<std::size_t>(bins));
+    std::vector<double> amplitude;
+    amplitude.reserve(std::size_t(bins));
     for (qsizetype k = 0; k < bins; ++k) {
         const double re = transformed[k][0];
         const double im = transformed[k][1];
         const bool once = k == 0 || 2 * k == n;
-        amplitude[std::size_t(k)] = std::sqrt(re * re + im * im) * (once ? 1 : 2) / windowSum;
+        amplitude.push_back(std::sqrt(re * re + im * im) * (once ? 1 : 2) / windowSum);
     }
     return amplitude;
 }
@@ -183,16 +185,16 @@ std::optional<ScopeSpectrum> compute(const Window &window, const ScopeSpectrumOp
     }
 
     spectrum.points = smoothCount(spectrum.samples);
-    FftwArray<double> values(fftw_alloc_real(std::size_t(spectrum.points)));
-    FftwArray<fftw_complex> transformed(fftw_alloc_complex(std::size_t(spectrum.points / 2 + 1)));
-    if (!values || !transformed)
+    // The points, then (in place) their transform: n / 2 + 1 complex numbers.
+    FftwArray<double> values(fftw_alloc_real(2 * std::size_t(spectrum.points / 2 + 1)));
+    if (!values)
         return fail(
             QCoreApplication::translate("ScopeSpectrum", "not enough memory for a spectrum"));
     if (!takeEven(window, spectrum.points, values.get(), spectrum))
         resample(window, spectrum.points, values.get(), spectrum);
     spectrum.binHz = spectrum.sampleRateHz / double(spectrum.points);
     const double windowSum = removeMeanAndWindow(values.get(), spectrum.points);
-    spectrum.amplitude = amplitudes(values.get(), transformed.get(), spectrum.points, windowSum);
+    spectrum.amplitude = amplitudes(values.get(), spectrum.points, windowSum);
     spectrum.peaks = scopeSpectrumPeaks(spectrum.amplitude, spectrum.binHz, options.peaks);
     return spectrum;
 }
