@@ -71,7 +71,8 @@ scope channels.
 
 The package holds the window (drivedesk), the command line (drivedesk-cli)
 and a simulated drive to try it all without hardware (drivedesk-sim).")
-# The libraries the programs link come from dpkg-shlibdeps. What it cannot see: Qt loads its
+# The libraries the programs link come from dpkg-shlibdeps (Qt's, and libfftw3-double3 for the
+# scope's spectrum; tools/package.sh checks they are there). What it cannot see: Qt loads its
 # platform plugins (xcb) and its SQLite driver (the journal) at run time, and its own
 # translations for the German texts.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)

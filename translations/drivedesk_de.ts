@@ -87,6 +87,53 @@
     </message>
 </context>
 <context>
+    <name>CliSpectrum</name>
+    <message>
+        <source>%1 in &apos;%2&apos;, %3 to %4 ms</source>
+        <translation>%1 in &apos;%2&apos;, %3 bis %4 ms</translation>
+    </message>
+    <message>
+        <source>%1 samples at %2 Hz, %3 Hz a bin</source>
+        <translation>%1 Abtastwerte mit %2 Hz, %3 Hz je Bin</translation>
+    </message>
+    <message>
+        <source>; they came unevenly and were resampled to even spacing</source>
+        <translation>; sie kamen ungleichmäßig und wurden auf gleiche Abstände umgerechnet</translation>
+    </message>
+    <message>
+        <source>no peaks: the channel is flat in the window</source>
+        <translation>keine Spitzen: der Kanal ist im Fenster flach</translation>
+    </message>
+    <message>
+        <source>frequency [Hz]</source>
+        <translation>Frequenz [Hz]</translation>
+    </message>
+    <message>
+        <source>amplitude</source>
+        <translation>Amplitude</translation>
+    </message>
+    <message>
+        <source>amplitude [%1]</source>
+        <translation>Amplitude [%1]</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; holds no samples</source>
+        <translation>&apos;%1&apos; enthält keine Abtastwerte</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; fits several channels of &apos;%2&apos;: give its title or number (%3)</source>
+        <translation>&apos;%1&apos; passt zu mehreren Kanälen von &apos;%2&apos;: Titel oder Nummer angeben (%3)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has no channel &apos;%2&apos;; it holds %3</source>
+        <translation>&apos;%1&apos; hat keinen Kanal &apos;%2&apos;; es enthält %3</translation>
+    </message>
+    <message>
+        <source>%1 %2 ms is outside the recording in &apos;%3&apos; (%4 to %5 ms)</source>
+        <translation>%1 %2 ms liegt außerhalb der Aufzeichnung in &apos;%3&apos; (%4 bis %5 ms)</translation>
+    </message>
+</context>
+<context>
     <name>ComparisonTable</name>
     <message>
         <source>equal</source>
@@ -5963,6 +6010,29 @@ Verbindungsdialog.
     </message>
 </context>
 <context>
+    <name>ScopeCsvReader</name>
+    <message>
+        <source>cannot read &apos;%1&apos;: %2</source>
+        <translation>&apos;%1&apos; kann nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a scope CSV export: its first column is not &quot;Time [ms]&quot;</source>
+        <translation>&apos;%1&apos; ist kein CSV-Export des Oszilloskops: die erste Spalte ist nicht &quot;Time [ms]&quot;</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;, line %2 has %3 fields, the header %4</source>
+        <translation>&apos;%1&apos;, Zeile %2 hat %3 Felder, die Kopfzeile %4</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;, line %2: &quot;%3&quot; in column &quot;%4&quot; is not a number</source>
+        <translation>&apos;%1&apos;, Zeile %2: &quot;%3&quot; in Spalte &quot;%4&quot; ist keine Zahl</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;, line %2: the time %3 ms is earlier than the line&apos;s before</source>
+        <translation>&apos;%1&apos;, Zeile %2: die Zeit %3 ms liegt vor der der Zeile davor</translation>
+    </message>
+</context>
+<context>
     <name>ScopeFile</name>
     <message>
         <source>cannot read &apos;%1&apos;: %2</source>
@@ -6039,6 +6109,80 @@ Verbindungsdialog.
     </message>
 </context>
 <context>
+    <name>ScopeMathDefinition</name>
+    <message>
+        <source>a derivative needs samples at two different times</source>
+        <translation>eine Ableitung braucht Abtastwerte zu zwei verschiedenen Zeiten</translation>
+    </message>
+    <message>
+        <source>a difference or a sum reads two channels</source>
+        <translation>eine Differenz oder Summe liest zwei Kanäle</translation>
+    </message>
+    <message>
+        <source>a derivative, an integral or a moving average reads one channel</source>
+        <translation>eine Ableitung, ein Integral oder ein gleitender Mittelwert liest einen Kanal</translation>
+    </message>
+    <message>
+        <source>there is no channel %1 (1..%2)</source>
+        <translation>es gibt keinen Kanal %1 (1..%2)</translation>
+    </message>
+    <message>
+        <source>the window is a whole number of samples, at least 1</source>
+        <translation>das Fenster ist eine ganze Zahl von Abtastwerten, mindestens 1</translation>
+    </message>
+    <message>
+        <source>the window is a time in ms, more than 0</source>
+        <translation>das Fenster ist eine Zeit in ms, größer als 0</translation>
+    </message>
+    <message>
+        <source>unknown kind &quot;%1&quot;</source>
+        <translation>unbekannte Art &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>expected a number</source>
+        <translation>eine Zahl erwartet</translation>
+    </message>
+    <message>
+        <source>expected samples or ms</source>
+        <translation>samples oder ms erwartet</translation>
+    </message>
+    <message>
+        <source>the units differ: %1, %2</source>
+        <translation>die Einheiten unterscheiden sich: %1, %2</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>d/dt %1</source>
+        <translation>d/dt %1</translation>
+    </message>
+    <message>
+        <source>∫ %1 dt</source>
+        <translation>∫ %1 dt</translation>
+    </message>
+    <message>
+        <source>%1 − %2</source>
+        <translation>%1 − %2</translation>
+    </message>
+    <message>
+        <source>%1 + %2</source>
+        <translation>%1 + %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1, mean of %n sample(s)</source>
+        <translation>
+            <numerusform>%1, Mittel über %n Abtastwert</numerusform>
+            <numerusform>%1, Mittel über %n Abtastwerte</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1, mean over %2 ms</source>
+        <translation>%1, Mittel über %2 ms</translation>
+    </message>
+</context>
+<context>
     <name>ScopePollJob</name>
     <message>
         <source>This connection cannot carry scope data (service 18).</source>
@@ -6047,6 +6191,21 @@ Verbindungsdialog.
     <message>
         <source>The drive stopped answering: %1</source>
         <translation>Der Umrichter antwortet nicht mehr: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ScopeSpectrum</name>
+    <message>
+        <source>too few samples for a spectrum: %1 in the window, at least %2 needed</source>
+        <translation>zu wenige Abtastwerte für ein Spektrum: %1 im Fenster, mindestens %2 nötig</translation>
+    </message>
+    <message>
+        <source>the samples span no time: all %1 are in one ms</source>
+        <translation>die Abtastwerte umfassen keine Zeit: alle %1 liegen in einer ms</translation>
+    </message>
+    <message>
+        <source>not enough memory for a spectrum</source>
+        <translation>nicht genug Speicher für ein Spektrum</translation>
     </message>
 </context>
 <context>

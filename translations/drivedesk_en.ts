@@ -87,6 +87,53 @@
     </message>
 </context>
 <context>
+    <name>CliSpectrum</name>
+    <message>
+        <source>%1 in &apos;%2&apos;, %3 to %4 ms</source>
+        <translation>%1 in &apos;%2&apos;, %3 to %4 ms</translation>
+    </message>
+    <message>
+        <source>%1 samples at %2 Hz, %3 Hz a bin</source>
+        <translation>%1 samples at %2 Hz, %3 Hz a bin</translation>
+    </message>
+    <message>
+        <source>; they came unevenly and were resampled to even spacing</source>
+        <translation>; they came unevenly and were resampled to even spacing</translation>
+    </message>
+    <message>
+        <source>no peaks: the channel is flat in the window</source>
+        <translation>no peaks: the channel is flat in the window</translation>
+    </message>
+    <message>
+        <source>frequency [Hz]</source>
+        <translation>frequency [Hz]</translation>
+    </message>
+    <message>
+        <source>amplitude</source>
+        <translation>amplitude</translation>
+    </message>
+    <message>
+        <source>amplitude [%1]</source>
+        <translation>amplitude [%1]</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; holds no samples</source>
+        <translation>&apos;%1&apos; holds no samples</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; fits several channels of &apos;%2&apos;: give its title or number (%3)</source>
+        <translation>&apos;%1&apos; fits several channels of &apos;%2&apos;: give its title or number (%3)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has no channel &apos;%2&apos;; it holds %3</source>
+        <translation>&apos;%1&apos; has no channel &apos;%2&apos;; it holds %3</translation>
+    </message>
+    <message>
+        <source>%1 %2 ms is outside the recording in &apos;%3&apos; (%4 to %5 ms)</source>
+        <translation>%1 %2 ms is outside the recording in &apos;%3&apos; (%4 to %5 ms)</translation>
+    </message>
+</context>
+<context>
     <name>ComparisonTable</name>
     <message>
         <source>equal</source>
@@ -5963,6 +6010,29 @@ dialog.
     </message>
 </context>
 <context>
+    <name>ScopeCsvReader</name>
+    <message>
+        <source>cannot read &apos;%1&apos;: %2</source>
+        <translation>cannot read &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a scope CSV export: its first column is not &quot;Time [ms]&quot;</source>
+        <translation>&apos;%1&apos; is not a scope CSV export: its first column is not &quot;Time [ms]&quot;</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;, line %2 has %3 fields, the header %4</source>
+        <translation>&apos;%1&apos;, line %2 has %3 fields, the header %4</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;, line %2: &quot;%3&quot; in column &quot;%4&quot; is not a number</source>
+        <translation>&apos;%1&apos;, line %2: &quot;%3&quot; in column &quot;%4&quot; is not a number</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;, line %2: the time %3 ms is earlier than the line&apos;s before</source>
+        <translation>&apos;%1&apos;, line %2: the time %3 ms is earlier than the line&apos;s before</translation>
+    </message>
+</context>
+<context>
     <name>ScopeFile</name>
     <message>
         <source>cannot read &apos;%1&apos;: %2</source>
@@ -6039,6 +6109,80 @@ dialog.
     </message>
 </context>
 <context>
+    <name>ScopeMathDefinition</name>
+    <message>
+        <source>a derivative needs samples at two different times</source>
+        <translation>a derivative needs samples at two different times</translation>
+    </message>
+    <message>
+        <source>a difference or a sum reads two channels</source>
+        <translation>a difference or a sum reads two channels</translation>
+    </message>
+    <message>
+        <source>a derivative, an integral or a moving average reads one channel</source>
+        <translation>a derivative, an integral or a moving average reads one channel</translation>
+    </message>
+    <message>
+        <source>there is no channel %1 (1..%2)</source>
+        <translation>there is no channel %1 (1..%2)</translation>
+    </message>
+    <message>
+        <source>the window is a whole number of samples, at least 1</source>
+        <translation>the window is a whole number of samples, at least 1</translation>
+    </message>
+    <message>
+        <source>the window is a time in ms, more than 0</source>
+        <translation>the window is a time in ms, more than 0</translation>
+    </message>
+    <message>
+        <source>unknown kind &quot;%1&quot;</source>
+        <translation>unknown kind &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>expected a number</source>
+        <translation>expected a number</translation>
+    </message>
+    <message>
+        <source>expected samples or ms</source>
+        <translation>expected samples or ms</translation>
+    </message>
+    <message>
+        <source>the units differ: %1, %2</source>
+        <translation>the units differ: %1, %2</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message>
+        <source>d/dt %1</source>
+        <translation>d/dt %1</translation>
+    </message>
+    <message>
+        <source>∫ %1 dt</source>
+        <translation>∫ %1 dt</translation>
+    </message>
+    <message>
+        <source>%1 − %2</source>
+        <translation>%1 − %2</translation>
+    </message>
+    <message>
+        <source>%1 + %2</source>
+        <translation>%1 + %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1, mean of %n sample(s)</source>
+        <translation>
+            <numerusform>%1, mean of %n sample</numerusform>
+            <numerusform>%1, mean of %n samples</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1, mean over %2 ms</source>
+        <translation>%1, mean over %2 ms</translation>
+    </message>
+</context>
+<context>
     <name>ScopePollJob</name>
     <message>
         <source>This connection cannot carry scope data (service 18).</source>
@@ -6047,6 +6191,21 @@ dialog.
     <message>
         <source>The drive stopped answering: %1</source>
         <translation>The drive stopped answering: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ScopeSpectrum</name>
+    <message>
+        <source>too few samples for a spectrum: %1 in the window, at least %2 needed</source>
+        <translation>too few samples for a spectrum: %1 in the window, at least %2 needed</translation>
+    </message>
+    <message>
+        <source>the samples span no time: all %1 are in one ms</source>
+        <translation>the samples span no time: all %1 are in one ms</translation>
+    </message>
+    <message>
+        <source>not enough memory for a spectrum</source>
+        <translation>not enough memory for a spectrum</translation>
     </message>
 </context>
 <context>

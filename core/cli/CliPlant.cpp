@@ -22,7 +22,7 @@ std::optional<CliRequest> parsePlantCommand(const QCommandLineParser &parser,
         return std::nullopt;
     }
     for (const char *name : {"values", "set", "sets", "raw", "password", "channels", "duration",
-                             "rate", "csv", "offline"}) {
+                             "rate", "csv", "offline", "channel", "from", "to", "peaks"}) {
         if (parser.isSet(QLatin1String(name))) {
             *error = QStringLiteral("--%1 does not belong to plant").arg(QLatin1String(name));
             return std::nullopt;

@@ -3,6 +3,7 @@
 #include "bus/LinkFactory.h"
 #include "cli/CliJournal.h"
 #include "cli/CliPlant.h"
+#include "cli/CliSpectrum.h"
 #include "cli/ParameterTable.h"
 #include "client/WhenFinished.h"
 #include "journal/Journal.h"
@@ -51,6 +52,10 @@ void CliRunner::start()
         QString error;
         const int exitCode = printJournal(m_request, m_out, m_err, &error);
         return exitCode == 0 ? done() : fail(exitCode, error);
+    }
+    if (m_request.command == CliRequest::Command::Spectrum) { // a file, no drive
+        m_finished = true;
+        return emit finished(runSpectrumCommand(m_request, m_out, m_err));
     }
     if (!loadFiles())
         return;
@@ -109,6 +114,7 @@ void CliRunner::runCommand()
     case CliRequest::Command::Download: runDownload(); break;
     case CliRequest::Command::Scope: runScope(); break;
     case CliRequest::Command::Journal: break; // no drive: start() printed it
+    case CliRequest::Command::Spectrum: break; // start() runs it: no drive
     }
 }
 

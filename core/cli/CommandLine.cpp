@@ -2,6 +2,7 @@
 
 #include "cli/CliJournal.h"
 #include "cli/CliPlant.h"
+#include "cli/CliSpectrum.h"
 #include "cli/CommandLineUsage.h"
 #include "link/ConnectionOptions.h"
 
@@ -140,8 +141,14 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     const QCommandLineOption offline(QStringLiteral("offline"));
     const QCommandLineOption version(QStringLiteral("version"));
     const QCommandLineOption update(QStringLiteral("update")); // plant find
+    // spectrum
+    const QCommandLineOption channel(QStringLiteral("channel"), {}, QStringLiteral("name"));
+    const QCommandLineOption from(QStringLiteral("from"), {}, QStringLiteral("ms"));
+    const QCommandLineOption to(QStringLiteral("to"), {}, QStringLiteral("ms"));
+    const QCommandLineOption peaks(QStringLiteral("peaks"), {}, QStringLiteral("n"));
     parser.addOptions({help, timeout, quiet, format, values, set, sets, raw, noCache, password,
-                       dryRun, force, channels, duration, rate, csv, offline, version, update});
+                       dryRun, force, channels, duration, rate, csv, offline, version, update,
+                       channel, from, to, peaks});
     addJournalOptions(parser);
     *helpText = cliUsage();
 
@@ -185,6 +192,15 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     // The journal is read from its file, not from a drive (core/cli/CliJournal.cpp).
     if (first == QLatin1String("journal"))
         return parseJournalCommand(parser, connection, parser.positionalArguments(), error);
+    // A spectrum reads a file, no drive (core/cli/CliSpectrum.cpp).
+    if (first == QLatin1String("spectrum"))
+        return parseSpectrumCommand(parser, connection, parser.positionalArguments(), error);
+    for (const QCommandLineOption &option : {channel, from, to, peaks}) {
+        if (parser.isSet(option)) {
+            *error = QStringLiteral("--%1 belongs to spectrum").arg(option.names().constFirst());
+            return std::nullopt;
+        }
+    }
     if (parser.isSet(update)) {
         *error = QStringLiteral("--update belongs to plant find");
         return std::nullopt;
@@ -270,8 +286,8 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
         request.command = CliRequest::Command::Scope;
     } else {
         const QString commands
-            = QStringLiteral("info, scan, read, write, upload, download, diff, scope, plant or "
-                             "journal");
+            = QStringLiteral("info, scan, read, write, upload, download, diff, scope, spectrum, "
+                             "plant or journal");
         *error = command.isEmpty()
             ? QStringLiteral("no command: use %1").arg(commands)
             : QStringLiteral("unknown command '%1': use %2").arg(positional.value(0), commands);

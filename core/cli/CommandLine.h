@@ -22,9 +22,20 @@ struct PlantRequest {
     bool force = false;  // download: write although the checks found problems
 };
 
+// `drivedesk-cli spectrum`: a channel's spectrum from a scope CSV export or recording file.
+struct SpectrumRequest {
+    QString file;
+    QString channel; // its number (1..), id or title; empty: the first
+    // The window in ms from the recording's first sample; nothing: its start, its end.
+    std::optional<double> fromMs;
+    std::optional<double> toMs;
+    int peaks = 5;
+};
+
 // What `drivedesk-cli` was asked to do, parsed and checked before anything is sent.
 struct CliRequest {
-    enum class Command : quint8 { Info, Scan, Read, Write, Diff, Upload, Download, Scope, Journal };
+    enum class Command : quint8 { Info, Scan, Read, Write, Diff, Upload, Download, Scope, Journal,
+                                  Spectrum };
     enum class Format : quint8 { Table, Json, Csv };
 
     ConnectionSettings connection;
@@ -59,6 +70,7 @@ struct CliRequest {
     QString journalPath;
     bool journalWrites = true;
     JournalFilter journalFilter; // journal: which entries to print
+    SpectrumRequest spectrum;          // `spectrum`: the other command fields are unused
 };
 
 // The usage text and the parse. Returns nothing and sets *error (naming the bad argument)

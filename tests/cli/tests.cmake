@@ -14,3 +14,6 @@ drivedesk_add_test(NAME tst_clibaud LABELS integration TIMEOUT 120 SOURCES cli/t
 add_dependencies(tst_clibaud drivedesk-cli drivedesk-sim)
 drivedesk_add_test(NAME tst_cliplant LABELS integration TIMEOUT 120 SOURCES cli/tst_cliplant.cpp LIBS Qt6::Core)
 add_dependencies(tst_cliplant drivedesk-cli drivedesk-sim)
+drivedesk_add_test(NAME tst_clispectrum LABELS unit integration SOURCES cli/tst_clispectrum.cpp
+    LIBS drivedesk_scope)
+add_dependencies(tst_clispectrum drivedesk-cli)
