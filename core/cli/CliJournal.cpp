@@ -65,19 +65,9 @@ std::optional<CliRequest> parseJournalCommand(const QCommandLineParser &parser,
                                               const ConnectionOptions &connection,
                                               const QStringList &positional, QString *error)
 {
-    if (connection.hasTarget(parser) || connection.hasTargetDetails(parser)) {
-        *error = QStringLiteral("journal reads the journal's file: --connect, --protocol, "
-                                "--address, --baud and --hsp5-extensions do not apply");
+    if (!refuseDriveOptions(parser, connection, QStringLiteral("journal"),
+                            QStringLiteral("reads the journal's file"), error))
         return std::nullopt;
-    }
-    for (const char *name :
-         { "values", "set", "sets", "raw", "password", "channels", "duration", "rate", "csv",
-           "offline", "dry-run", "force", "update", "no-cache", "timeout" }) {
-        if (parser.isSet(QLatin1String(name))) {
-            *error = QStringLiteral("--%1 does not belong to journal").arg(QLatin1String(name));
-            return std::nullopt;
-        }
-    }
     if (positional.size() != 1) {
         *error = QStringLiteral("journal takes no arguments: filter with --drive, --parameter, "
                                 "--since, --until or --user");

@@ -181,19 +181,9 @@ std::optional<CliRequest> parseSpectrumCommand(const QCommandLineParser &parser,
                                                const ConnectionOptions &connection,
                                                const QStringList &positional, QString *error)
 {
-    if (connection.hasTarget(parser) || connection.hasTargetDetails(parser)) {
-        *error = QStringLiteral("spectrum reads a file: --connect, --protocol, --address, --baud "
-                                "and --hsp5-extensions do not apply");
+    if (!refuseDriveOptions(parser, connection, QStringLiteral("spectrum"),
+                            QStringLiteral("reads a file"), error))
         return std::nullopt;
-    }
-    for (const char *name :
-         { "values", "set", "sets", "raw", "password", "channels", "duration", "rate", "csv",
-           "offline", "dry-run", "force", "update", "timeout", "no-cache" }) {
-        if (parser.isSet(QLatin1String(name))) {
-            *error = QStringLiteral("--%1 does not belong to spectrum").arg(QLatin1String(name));
-            return std::nullopt;
-        }
-    }
     if (positional.size() != 2) {
         *error = QStringLiteral("spectrum takes a scope CSV export or recording file, e.g. "
                                 "spectrum trace.csv");

@@ -361,4 +361,24 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     return request;
 }
 
+bool refuseDriveOptions(const QCommandLineParser &parser, const ConnectionOptions &connection,
+                        const QString &command, const QString &what, QString *error)
+{
+    if (connection.hasTarget(parser) || connection.hasTargetDetails(parser)) {
+        *error = QStringLiteral("%1 %2: --connect, --protocol, --address, --baud and "
+                                "--hsp5-extensions do not apply")
+                     .arg(command, what);
+        return false;
+    }
+    for (const char *name :
+         { "values", "set", "sets", "raw", "password", "channels", "duration", "rate", "csv",
+           "offline", "dry-run", "force", "update", "no-cache", "timeout" }) {
+        if (parser.isSet(QLatin1String(name))) {
+            *error = QStringLiteral("--%1 does not belong to %2").arg(QLatin1String(name), command);
+            return false;
+        }
+    }
+    return true;
+}
+
 } // namespace DriveDesk

@@ -9,7 +9,11 @@
 
 #include <optional>
 
+class QCommandLineParser;
+
 namespace DriveDesk {
+
+class ConnectionOptions;
 
 // `drivedesk-cli plant`: every drive of a plant file (docs/plant.md), its links from the file.
 struct PlantRequest {
@@ -84,5 +88,10 @@ std::optional<qint64> parseDuration(const QString &text, QString *error);
 
 // "0,2-4,7" or "all" -> bit mask of sets 0..7; nothing and *error on anything else.
 std::optional<quint8> parseSetList(const QString &text, QString *error);
+
+// A command that reads a file and no drive (journal, spectrum): refuses, naming it, any option
+// that reaches a drive or belongs to the drive's commands. `what`: "reads a file".
+bool refuseDriveOptions(const QCommandLineParser &parser, const ConnectionOptions &connection,
+                        const QString &command, const QString &what, QString *error);
 
 } // namespace DriveDesk
