@@ -4672,6 +4672,33 @@ Verbindungsdialog.
     </message>
 </context>
 <context>
+    <name>DriveDesk::WriteJournal</name>
+    <message>
+        <source>&amp;Journal Every Write</source>
+        <translation>Schreibvorgänge im &amp;Journal festhalten</translation>
+    </message>
+    <message>
+        <source>Record every value written to the drive, with the value before and after, in the journal %1</source>
+        <translation>Jeden in den Umrichter geschriebenen Wert mit dem Wert davor und danach im Journal %1 festhalten</translation>
+    </message>
+    <message>
+        <source>Every value written is journaled.</source>
+        <translation>Jeder geschriebene Wert wird im Journal festgehalten.</translation>
+    </message>
+    <message>
+        <source>Values written are not journaled.</source>
+        <translation>Geschriebene Werte werden nicht im Journal festgehalten.</translation>
+    </message>
+    <message>
+        <source>edit</source>
+        <translation>Bearbeitung</translation>
+    </message>
+    <message>
+        <source>%1 (Drive &gt; Journal Every Write off writes without it)</source>
+        <translation>%1 (Umrichter &gt; Schreibvorgänge im Journal festhalten aus: schreibt ohne Journal)</translation>
+    </message>
+</context>
+<context>
     <name>DriveIdentity</name>
     <message>
         <source>Identification</source>

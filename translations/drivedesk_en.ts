@@ -4672,6 +4672,33 @@ dialog.
     </message>
 </context>
 <context>
+    <name>DriveDesk::WriteJournal</name>
+    <message>
+        <source>&amp;Journal Every Write</source>
+        <translation>&amp;Journal Every Write</translation>
+    </message>
+    <message>
+        <source>Record every value written to the drive, with the value before and after, in the journal %1</source>
+        <translation>Record every value written to the drive, with the value before and after, in the journal %1</translation>
+    </message>
+    <message>
+        <source>Every value written is journaled.</source>
+        <translation>Every value written is journaled.</translation>
+    </message>
+    <message>
+        <source>Values written are not journaled.</source>
+        <translation>Values written are not journaled.</translation>
+    </message>
+    <message>
+        <source>edit</source>
+        <translation>edit</translation>
+    </message>
+    <message>
+        <source>%1 (Drive &gt; Journal Every Write off writes without it)</source>
+        <translation>%1 (Drive &gt; Journal Every Write off writes without it)</translation>
+    </message>
+</context>
+<context>
     <name>DriveIdentity</name>
     <message>
         <source>Identification</source>

@@ -42,6 +42,10 @@ EditJournal::begin(const QString &id, const ParameterDescription &parameter,
                    const QList<WriteStep> &steps, const StateEditor::Values &before,
                    QString *error)
 {
+    if (!m_unavailable.isEmpty()) {
+        *error = m_unavailable;
+        return std::nullopt;
+    }
     if (m_jobId == 0) {
         const std::optional<qint64> job = m_journal->beginJob(m_job);
         if (!job) {

@@ -38,6 +38,9 @@ public:
     static JournalDrive driveOf(const ConnectionSettings &settings,
                                 const DriveDescription &drive);
 
+    // The journal could not be opened: every begin() fails with `reason`, so nothing is sent.
+    void setUnavailable(const QString &reason) { m_unavailable = reason; }
+
     const JournalDrive &drive() const { return m_drive; }
     void setDrive(const JournalDrive &drive) { m_drive = drive; }
 
@@ -56,6 +59,7 @@ private:
     JournalDrive m_drive;
     QString m_job;
     qint64 m_jobId = 0;
+    QString m_unavailable;
 };
 
 } // namespace DriveDesk

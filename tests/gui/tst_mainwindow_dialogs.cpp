@@ -259,7 +259,7 @@ private slots:
         QCOMPARE(menu("&Drive"),
                  QStringLiteral("connectAction disconnectAction findDrivesAction | refreshAction "
                                 "readMetadataAction | downloadAction pollingAction Polling "
-                                "Interval | driveInfoAction"));
+                                "Interval | journalWritesAction | driveInfoAction"));
         QCOMPARE(menu("&Edit"),
                  QStringLiteral("findAction | undoAction redoAction | resetAction "
                                 "writeSetsAction copySetAction | passwordAction"));

@@ -5,6 +5,8 @@
 #include "edit/PasswordDialog.h"
 #include "edit/SetsDialog.h"
 #include "frame/DriveSession.h"
+#include "frame/ParameterEditing.h"
+#include "journal/Journal.h"
 
 #include <QAction>
 #include <QApplication>
@@ -208,6 +210,56 @@ private slots:
         action("redoAction")->trigger();
         QTRY_COMPARE_WITH_TIMEOUT(m_window->model()->state()->value(kDemoPeriod, 0), 300, kWaitMs);
         QCOMPARE(driveValue(client(), kDemoPeriod), 300);
+    }
+
+    // The edit, its undo and its redo each leave an entry in the journal, as the drive took them.
+    void everyWriteIsJournaled()
+    {
+        Journal journal; // the default one: the test's own data folder
+        auto entriesFor = [&journal](quint16 address) {
+            QList<JournalEntry> found;
+            if (journal.open(Journal::Access::Read)) {
+                for (const JournalEntry &entry : journal.entries().value_or(QList<JournalEntry>()))
+                    if (entry.parameterAddress == address)
+                        found << entry;
+            }
+            journal.close();
+            return found;
+        };
+        const qsizetype before = entriesFor(kFixedSpeed1).size();
+        m_window->browser()->showGroup(QStringLiteral("op"));
+        const QModelIndex index = viewIndex(*m_window, kFixedSpeed1, 2);
+        QVERIFY(m_window->browser()->view()->model()->setData(index, QStringLiteral("345")));
+        QTRY_COMPARE_WITH_TIMEOUT(state(kFixedSpeed1, 2), EditState::Written, kWaitMs);
+        QTRY_VERIFY(action("undoAction")->isEnabled());
+        action("undoAction")->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->model()->state()->value(kFixedSpeed1, 2), 100, kWaitMs);
+        QTRY_VERIFY(action("redoAction")->isEnabled());
+        action("redoAction")->trigger();
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->model()->state()->value(kFixedSpeed1, 2), 345, kWaitMs);
+        QTRY_VERIFY(!m_window->editing()->isBusy());
+
+        const QList<JournalEntry> entries = entriesFor(kFixedSpeed1).mid(before);
+        QCOMPARE(entries.size(), 3);
+        const QList<qint32> written { 345, 100, 345 };
+        for (int i = 0; i < 3; ++i) {
+            const JournalEntry &entry = entries.at(i);
+            QCOMPARE(entry.set, 2);
+            QCOMPARE(entry.written.raw, written.at(i));
+            QCOMPARE(entry.readBack.raw, written.at(i));
+            QCOMPARE(entry.outcome, JournalOutcome::Written);
+            QCOMPARE(entry.parameterId, QStringLiteral("op.20"));
+            QVERIFY(!entry.drive.serialNumber.isEmpty());
+        }
+        QCOMPARE(entries.at(0).before.raw, 100);
+        QCOMPARE(entries.at(1).before.raw, 345);
+
+        // Off: the next write is not journaled.
+        action("journalWritesAction")->setChecked(false);
+        QVERIFY(m_window->browser()->view()->model()->setData(index, QStringLiteral("346")));
+        QTRY_COMPARE_WITH_TIMEOUT(state(kFixedSpeed1, 2), EditState::Written, kWaitMs);
+        QCOMPARE(entriesFor(kFixedSpeed1).mid(before).size(), 3);
+        action("journalWritesAction")->setChecked(true);
     }
 
     void resetToDefaultOfTheSelectedCell()

@@ -56,6 +56,9 @@ public:
     // afresh on every connection): the written marks and the undo history go.
     void forgetWrites();
 
+    // Every edit from now on is journaled there (ValueEdits::setJournal); none: not journaled.
+    void setJournal(EditJournal *journal) { m_edits->setJournal(journal); }
+
     bool isBusy() const override { return m_busy; }
     // Why the last refresh could not read this value, or empty.
     QString readFailure(quint16 address, int set) const;

@@ -2,6 +2,7 @@
 
 #include "DocumentEditor.h"
 #include "EditController.h"
+#include "WriteJournal.h"
 #include "SetsDialog.h"
 
 #include "frame/DriveSession.h"
@@ -88,18 +89,21 @@ EditingFeature::EditingFeature(WindowFrame &frame, QObject *parent)
     m_busy->setMaximumWidth(160);
     m_busy->hide();
     frame.addStatusWidget(m_busy);
+    m_journal = new WriteJournal(frame, this);
 }
 
 void EditingFeature::attach(DriveSession *session)
 {
     m_busy->hide();
     // It holds the old session's client, which goes after this.
+    m_journal->attach(nullptr, nullptr);
     delete m_edit;
     m_edit = nullptr;
     if (!session)
         return;
     auto *edit = new EditController(session->client(), frame().model(), frame().undoStack(), this);
     m_edit = edit;
+    m_journal->attach(session, edit);
     connect(edit, &EditController::message, this,
             [this](const QString &text) { frame().showMessage(text); });
     connect(session, &DriveSession::valuesRequested, edit, &EditController::refresh);

@@ -9,6 +9,7 @@ namespace DriveDesk {
 
 class DocumentEditor;
 class EditController;
+class WriteJournal;
 
 // Editing in the window, of the drive or of the parameter file open instead: undo and redo,
 // reset to default, write to several sets, copy a set, and the progress of the edit
@@ -41,6 +42,7 @@ private:
     QAction *m_copySetAction = nullptr;
     QProgressBar *m_busy = nullptr;
     EditController *m_edit = nullptr; // child, of the session of the moment
+    WriteJournal *m_journal = nullptr; // child: the session's edits journaled
     DocumentEditor *m_document = nullptr; // child while a parameter file is shown
 };
 

@@ -6,6 +6,7 @@ target_sources(drivedesk_ui PRIVATE
     edit/DocumentEditor.cpp edit/DocumentEditor.h
     edit/EditController.cpp edit/EditJobs.cpp edit/EditController.h
     edit/EditingFeature.cpp edit/EditingFeature.h
+    edit/WriteJournal.cpp edit/WriteJournal.h
     edit/PasswordDialog.cpp edit/PasswordDialog.h
     edit/PollingController.cpp edit/PollingController.h
     edit/PollingFeature.cpp edit/PollingFeature.h
