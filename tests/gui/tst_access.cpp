@@ -16,7 +16,7 @@ private slots:
     {
         m_drive = std::make_unique<SimulatedDrive>();
         QVERIFY(m_drive->start());
-        m_access = std::make_unique<AccessController>(&m_drive->client, &m_drive->model);
+        m_access = std::make_unique<AccessController>(&m_drive->client, m_drive->model.state());
         m_levels = std::make_unique<QSignalSpy>(m_access.get(), &AccessController::levelChanged);
         m_messages = std::make_unique<QSignalSpy>(m_access.get(), &AccessController::message);
     }

@@ -174,7 +174,7 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(stack.count(), 1, kWaitMs);
 
         // CP read only: the drive refuses every write of op.11 now.
-        AccessController access(&m_drive->client, &m_drive->model);
+        AccessController access(&m_drive->client, m_drive->model.state());
         access.enterPassword(100);
         QTRY_COMPARE_WITH_TIMEOUT(access.level(), PasswordLevel::CpReadOnly, kWaitMs);
 

@@ -1,22 +1,23 @@
 #include "AccessController.h"
 
 #include "client/DriveClient.h"
-#include "model/ParameterModel.h"
+#include "state/DriveState.h"
 #include "session/PasswordLevelJob.h"
 
 #include <QFutureWatcher>
 
 namespace DriveDesk {
 
-AccessController::AccessController(DriveClient *client, ParameterModel *model, QObject *parent)
+AccessController::AccessController(DriveClient *client, DriveState *state, QObject *parent)
     : QObject(parent)
     , m_client(client)
-    , m_model(model)
+    , m_state(state)
 {
     // A refresh or a scan reading ud.01 tells the level as well.
-    connect(m_model, &QAbstractItemModel::dataChanged, this, &AccessController::modelDataChanged);
-    connect(m_model, &QAbstractItemModel::modelReset, this, [this] {
-        const std::optional<qint32> value = m_model->state()->value(kPasswordParameterAddress, 0);
+    connect(m_state, &DriveState::cellsChanged, this, &AccessController::passwordValueChanged);
+    connect(m_state, &DriveState::parameterChanged, this, &AccessController::passwordValueChanged);
+    connect(m_state, &DriveState::reset, this, [this] {
+        const std::optional<qint32> value = m_state->value(kPasswordParameterAddress, 0);
         if (value && passwordLevelFromReadValue(*value))
             takeReadValue(*value);
     });
@@ -24,7 +25,7 @@ AccessController::AccessController(DriveClient *client, ParameterModel *model, Q
 
 PasswordLevel AccessController::level() const
 {
-    return m_model->state()->passwordLevel();
+    return m_state->passwordLevel();
 }
 
 void AccessController::readLevel()
@@ -62,7 +63,7 @@ void AccessController::run(std::optional<qint32> password)
             emit message(tr("The password level could not be read: %1").arg(outcome.error));
             return;
         }
-        m_model->state()->setValue(kPasswordParameterAddress, 0, *outcome.readValue);
+        m_state->setValue(kPasswordParameterAddress, 0, *outcome.readValue);
         takeReadValue(*outcome.readValue);
     });
     watcher->setFuture(m_client->run(
@@ -83,7 +84,7 @@ void AccessController::takeReadValue(qint32 value)
     const PasswordLevel before = this->level();
     const bool changed = !m_known || *level != before;
     m_known = true;
-    m_model->state()->setPasswordLevel(*level);
+    m_state->setPasswordLevel(*level);
     if (changed) {
         emit levelChanged(*level);
         emit message(tr("Password level: %1").arg(levelName(*level)));
@@ -93,16 +94,12 @@ void AccessController::takeReadValue(qint32 value)
         emit levelRaised(before, *level);
 }
 
-void AccessController::modelDataChanged(const QModelIndex &topLeft, const QModelIndex &bottomRight)
+void AccessController::passwordValueChanged(quint16 address)
 {
-    const QModelIndex cell = m_model->valueIndex(kPasswordParameterAddress, 0);
-    if (!cell.isValid() || cell.parent() != topLeft.parent() || cell.row() < topLeft.row()
-        || cell.row() > bottomRight.row() || cell.column() < topLeft.column()
-        || cell.column() > bottomRight.column()) {
+    if (address != kPasswordParameterAddress)
         return;
-    }
     // A value that names no level is a password on its way, not a reading.
-    const std::optional<qint32> value = m_model->state()->value(kPasswordParameterAddress, 0);
+    const std::optional<qint32> value = m_state->value(kPasswordParameterAddress, 0);
     const std::optional<PasswordLevel> level
         = value ? passwordLevelFromReadValue(*value) : std::nullopt;
     if (level && (!m_known || *level != this->level()))

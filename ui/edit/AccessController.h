@@ -9,7 +9,7 @@
 namespace DriveDesk {
 
 class DriveClient;
-class ParameterModel;
+class DriveState;
 
 // The drive's password level: read from the password parameter ud.01, which reads -1 - level,
 // and changed by writing a password to it. The level in force is kept once, by the model, which
@@ -19,7 +19,7 @@ class AccessController : public QObject
 {
     Q_OBJECT
 public:
-    AccessController(DriveClient *client, ParameterModel *model, QObject *parent = nullptr);
+    AccessController(DriveClient *client, DriveState *state, QObject *parent = nullptr);
 
     void readLevel(); // reads ud.01 (service 1, set 0), sets the model's level
     void enterPassword(int password); // writes ud.01, re-reads the level
@@ -40,11 +40,12 @@ private:
     void run(std::optional<qint32> password);
     // A value of ud.01 from the drive, read here or by a refresh.
     void takeReadValue(qint32 value);
-    void modelDataChanged(const QModelIndex &topLeft, const QModelIndex &bottomRight);
+    // The password parameter's value changed in the state (a refresh, a scan, polling).
+    void passwordValueChanged(quint16 address);
     QString levelName(PasswordLevel level) const;
 
     DriveClient *m_client = nullptr;
-    ParameterModel *m_model = nullptr;
+    DriveState *m_state = nullptr;
     bool m_known = false; // the level was read from this drive
 };
 

@@ -51,7 +51,7 @@ void AccessFeature::attach(DriveSession *session)
     m_access = nullptr;
     if (!session)
         return;
-    m_access = new AccessController(session->client(), frame().model(), this);
+    m_access = new AccessController(session->client(), frame().state(), this);
     connect(m_access, &AccessController::message, this,
             [this](const QString &text) { frame().showMessage(text); });
     connect(m_access, &AccessController::levelRaised, this, &AccessFeature::levelRaised);
