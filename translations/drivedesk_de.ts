@@ -2262,6 +2262,18 @@
         <source>this drive has no parameter %1</source>
         <translation>dieser Umrichter hat keinen Parameter %1</translation>
     </message>
+    <message>
+        <source>the journal cannot record it: %1</source>
+        <translation>das Journal kann es nicht festhalten: %1</translation>
+    </message>
+    <message>
+        <source>Set %1 not copied to set %2: %3</source>
+        <translation>Satz %1 nicht in Satz %2 kopiert: %3</translation>
+    </message>
+    <message>
+        <source>the copy was cancelled</source>
+        <translation>das Kopieren wurde abgebrochen</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::EditingFeature</name>

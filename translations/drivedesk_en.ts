@@ -2262,6 +2262,18 @@
         <source>this drive has no parameter %1</source>
         <translation>this drive has no parameter %1</translation>
     </message>
+    <message>
+        <source>the journal cannot record it: %1</source>
+        <translation>the journal cannot record it: %1</translation>
+    </message>
+    <message>
+        <source>Set %1 not copied to set %2: %3</source>
+        <translation>Set %1 not copied to set %2: %3</translation>
+    </message>
+    <message>
+        <source>the copy was cancelled</source>
+        <translation>the copy was cancelled</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::EditingFeature</name>

@@ -48,6 +48,7 @@ public:
     // edit whose entries the journal cannot take is not sent, and its outcome says why. The
     // journal outlives this object.
     void setJournal(EditJournal *journal) { m_journal = journal; }
+    EditJournal *journal() const { return m_journal; }
 
     // Edits given and not yet done.
     int runningCount() const { return m_running; }

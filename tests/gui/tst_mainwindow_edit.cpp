@@ -260,6 +260,17 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(state(kFixedSpeed1, 2), EditState::Written, kWaitMs);
         QCOMPARE(entriesFor(kFixedSpeed1).mid(before).size(), 3);
         action("journalWritesAction")->setChecked(true);
+
+        // Copy set: each value it writes is an entry of its own.
+        m_window->editing()->copySet(2, 6);
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->model()->state()->value(kFixedSpeed1, 6), 346, kWaitMs);
+        QTRY_VERIFY(!m_window->editing()->isBusy());
+        const QList<JournalEntry> copied = entriesFor(kFixedSpeed1).mid(before + 3);
+        QCOMPARE(copied.size(), 1);
+        QCOMPARE(copied.constFirst().set, 6);
+        QCOMPARE(copied.constFirst().before.raw, 100);
+        QCOMPARE(copied.constFirst().readBack.raw, 346);
+        QCOMPARE(copied.constFirst().outcome, JournalOutcome::Written);
     }
 
     void resetToDefaultOfTheSelectedCell()

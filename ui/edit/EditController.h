@@ -76,6 +76,7 @@ private:
         CopySetPlan plan;
         std::shared_ptr<CopySetJob> job;
         QList<ValueCommand::Values> before; // per item: the target set's value, for undo
+        QList<QList<EditJournal::Entry>> journaled; // per item, where the edits are journaled
         QFutureWatcher<WriteOutcome> watcher;
         std::unique_ptr<QUndoCommand> macro; // the values written, one step on the stack
         int written = 0;
@@ -93,6 +94,10 @@ private:
     QString commandText(ValueCommand::Kind kind, quint16 address, quint8 setMask,
                         qint32 raw) const;
 
+    // Begins the journal's entries of every item of the copy; false (and said why) when the
+    // journal cannot take them: then nothing is sent.
+    bool journalCopy(CopyJob &job);
+    void completeJournal(const CopyJob &job, qsizetype index, const WriteOutcome &written);
     void copyTake(int begin, int end);
     void copyFinished();
     void refreshFinished();

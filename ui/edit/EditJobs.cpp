@@ -44,8 +44,11 @@ void EditController::copySet(int fromSet, int toSet)
         ValueCommand::Values before{};
         before[std::size_t(toSet)] = m_model->state()->value(item.address, toSet);
         job->before << before;
-        m_model->state()->markPending(item.address, quint8(1u << toSet), item.raw);
     }
+    if (!journalCopy(*job))
+        return;
+    for (const CopySetPlan::Item &item : std::as_const(job->plan.items))
+        m_model->state()->markPending(item.address, quint8(1u << toSet), item.raw);
     connect(&job->watcher, &QFutureWatcherBase::resultsReadyAt, this, &EditController::copyTake);
     connect(&job->watcher, &QFutureWatcherBase::progressValueChanged, this,
             [this](int done) { emit progress(done, int(m_copy->plan.items.size())); });
@@ -57,6 +60,53 @@ void EditController::copySet(int fromSet, int toSet)
     m_copy->watcher.setFuture(m_client->run(m_copy->job));
 }
 
+bool EditController::journalCopy(CopyJob &job)
+{
+    EditJournal *journal = m_edits->journal();
+    if (!journal)
+        return true;
+    const quint8 mask = quint8(1u << job.plan.to);
+    for (qsizetype index = 0; index < job.plan.items.size(); ++index) {
+        const CopySetPlan::Item &item = job.plan.items.at(index);
+        const ParameterDescription *parameter = m_model->state()->parameter(item.address);
+        QString error;
+        const std::optional<QList<EditJournal::Entry>> entries
+            = parameter ? journal->begin(m_model->state()->editText(item.address).id(), *parameter,
+                                         { WriteStep { mask, item.raw, false } },
+                                         job.before.at(index), &error)
+                        : std::nullopt;
+        if (!entries) {
+            // What was begun stays in the journal as not sent: nothing went out.
+            WriteOutcome unsent;
+            unsent.refusedMask = unsent.notSentMask = mask;
+            unsent.error = tr("the journal cannot record it: %1").arg(error);
+            for (qsizetype begun = 0; begun < index; ++begun)
+                completeJournal(job, begun, unsent);
+            emit message(tr("Set %1 not copied to set %2: %3")
+                             .arg(job.plan.from)
+                             .arg(job.plan.to)
+                             .arg(unsent.error));
+            return false;
+        }
+        job.journaled << *entries;
+    }
+    return true;
+}
+
+void EditController::completeJournal(const CopyJob &job, qsizetype index,
+                                     const WriteOutcome &written)
+{
+    EditJournal *journal = m_edits->journal();
+    const ParameterDescription *parameter
+        = m_model->state()->parameter(job.plan.items.at(index).address);
+    if (!journal || !parameter || index >= job.journaled.size())
+        return;
+    EditOutcome outcome;
+    static_cast<WriteOutcome &>(outcome) = written;
+    outcome.steps = { WriteStep { quint8(1u << job.plan.to), job.plan.items.at(index).raw, false } };
+    journal->complete(*parameter, job.journaled.at(index), outcome);
+}
+
 void EditController::copyTake(int begin, int end)
 {
     CopyJob &copy = *m_copy;
@@ -64,6 +114,7 @@ void EditController::copyTake(int begin, int end)
     for (int index = begin; index < end; ++index) {
         const WriteOutcome outcome = future.resultAt(index);
         const CopySetPlan::Item &item = copy.plan.items.at(index);
+        completeJournal(copy, index, outcome);
         m_model->state()->showOutcome(outcome);
         if (outcome.acknowledgedMask) {
             new ValueCommand(this, ValueCommand::Kind::Write, item.address,
@@ -87,8 +138,14 @@ void EditController::copyFinished()
         m_undoStack->push(job->macro.release());
     // An item without an outcome was never sent: its cell shows again what it held.
     for (qsizetype index = 0; index < job->plan.items.size(); ++index) {
-        if (!job->watcher.future().isResultReadyAt(int(index)))
-            m_model->state()->clearEditState(job->plan.items.at(index).address, quint8(1u << job->plan.to));
+        if (job->watcher.future().isResultReadyAt(int(index)))
+            continue;
+        m_model->state()->clearEditState(job->plan.items.at(index).address, quint8(1u << job->plan.to));
+        WriteOutcome unsent;
+        unsent.address = job->plan.items.at(index).address;
+        unsent.refusedMask = unsent.notSentMask = quint8(1u << job->plan.to);
+        unsent.error = job->stopReason.isEmpty() ? tr("the copy was cancelled") : job->stopReason;
+        completeJournal(*job, index, unsent);
     }
 
     const int from = job->plan.from;
