@@ -93,7 +93,7 @@ int main(int argc, char *argv[])
     {
         ParameterModel model;
         timer.start();
-        model.setDescription(drive);
+        model.state()->setDescription(drive);
         print(QStringLiteral("fill, model alone:            %1 ms (goal < 100 ms)")
                   .arg(timer.nsecsElapsed() / 1e6, 0, 'f', 1));
     }
@@ -106,7 +106,7 @@ int main(int argc, char *argv[])
     view.resize(1200, 800);
 
     timer.start();
-    model.setDescription(drive);
+    model.state()->setDescription(drive);
     const int all = visibleParameters(filter);
     print(QStringLiteral("fill, with filter and view:   %1 ms (%2 rows mapped)")
               .arg(timer.nsecsElapsed() / 1e6, 0, 'f', 1)
@@ -163,7 +163,7 @@ int main(int argc, char *argv[])
     timer.start();
     for (int round = 0; round < 10; ++round) {
         for (const ParameterDescription &p : polled.parameters) {
-            model.setValue(p.address, 0, round * 13 + p.number());
+            model.state()->setValue(p.address, 0, round * 13 + p.number());
             ++updates;
         }
     }
