@@ -2,6 +2,7 @@
 
 #include "EditCheck.h"
 
+#include "parameters/ParameterAccess.h"
 #include "parameters/ParameterId.h"
 
 #include <QDateTime>
@@ -185,7 +186,8 @@ bool DriveState::isEditable(quint16 address) const
 
 bool DriveState::isEditable(const ParameterState &parameter) const
 {
-    return EditCheck::refusal(parameter, m_level).isEmpty();
+    // Asked for every cell a view paints: the rule's yes or no, not its sentence.
+    return isWritable(parameter.properties(), m_level);
 }
 
 QString DriveState::editRefusal(quint16 address) const

@@ -15,6 +15,8 @@ bool EditCheck::isAboveLevel(const ParameterProperties &properties, PasswordLeve
 QString EditCheck::refusal(const ParameterState &parameter, PasswordLevel level)
 {
     const ParameterProperties &properties = parameter.properties();
+    if (isWritable(properties, level))
+        return {};
     if (properties.isReadOnly())
         return tr("%1 is read-only").arg(parameter.id());
     if (isAboveLevel(properties, level)) {

@@ -1,6 +1,7 @@
 #include "ParameterModel.h"
 
 #include "parameters/ParameterId.h"
+#include "state/EditCheck.h"
 #include "parameters/SetList.h"
 
 namespace DriveDesk {
@@ -86,7 +87,7 @@ bool ParameterModel::isStale(const ParameterRow &row) const
 
 bool ParameterModel::isAboveLevel(const ParameterRow &row) const
 {
-    return m_state->isAboveLevel(row.address());
+    return EditCheck::isAboveLevel(row.properties(), m_state->passwordLevel());
 }
 
 bool ParameterModel::isEditable(const ParameterRow &row) const
