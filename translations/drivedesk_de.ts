@@ -2263,10 +2263,6 @@
         <translation>dieser Umrichter hat keinen Parameter %1</translation>
     </message>
     <message>
-        <source>the journal cannot record it: %1</source>
-        <translation>das Journal kann es nicht festhalten: %1</translation>
-    </message>
-    <message>
         <source>Set %1 not copied to set %2: %3</source>
         <translation>Satz %1 nicht in Satz %2 kopiert: %3</translation>
     </message>
@@ -4678,10 +4674,6 @@ Verbindungsdialog.
         <source>the connection to the drive was closed</source>
         <translation>die Verbindung zum Umrichter wurde geschlossen</translation>
     </message>
-    <message>
-        <source>the journal cannot record it: %1</source>
-        <translation>das Journal kann es nicht festhalten: %1</translation>
-    </message>
 </context>
 <context>
     <name>DriveDesk::WriteJournal</name>
@@ -4765,6 +4757,10 @@ Verbindungsdialog.
     <message>
         <source>not sent: %1</source>
         <translation>nicht gesendet: %1</translation>
+    </message>
+    <message>
+        <source>the journal cannot record it: %1</source>
+        <translation>das Journal kann es nicht festhalten: %1</translation>
     </message>
 </context>
 <context>

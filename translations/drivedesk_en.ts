@@ -2263,10 +2263,6 @@
         <translation>this drive has no parameter %1</translation>
     </message>
     <message>
-        <source>the journal cannot record it: %1</source>
-        <translation>the journal cannot record it: %1</translation>
-    </message>
-    <message>
         <source>Set %1 not copied to set %2: %3</source>
         <translation>Set %1 not copied to set %2: %3</translation>
     </message>
@@ -4678,10 +4674,6 @@ dialog.
         <source>the connection to the drive was closed</source>
         <translation>the connection to the drive was closed</translation>
     </message>
-    <message>
-        <source>the journal cannot record it: %1</source>
-        <translation>the journal cannot record it: %1</translation>
-    </message>
 </context>
 <context>
     <name>DriveDesk::WriteJournal</name>
@@ -4765,6 +4757,10 @@ dialog.
     <message>
         <source>not sent: %1</source>
         <translation>not sent: %1</translation>
+    </message>
+    <message>
+        <source>the journal cannot record it: %1</source>
+        <translation>the journal cannot record it: %1</translation>
     </message>
 </context>
 <context>

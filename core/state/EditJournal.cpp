@@ -23,6 +23,20 @@ EditJournal::EditJournal(Journal *journal, JournalDrive drive, QString job)
     , m_job(std::move(job))
 { }
 
+WriteOutcome EditJournal::notSent(quint16 address, quint8 setMask, const QString &reason)
+{
+    WriteOutcome outcome;
+    outcome.address = address;
+    outcome.refusedMask = outcome.notSentMask = setMask;
+    outcome.error = reason;
+    return outcome;
+}
+
+WriteOutcome EditJournal::notJournaled(quint16 address, quint8 setMask, const QString &error)
+{
+    return notSent(address, setMask, tr("the journal cannot record it: %1").arg(error));
+}
+
 JournalDrive EditJournal::driveOf(const ConnectionSettings &settings,
                                   const DriveDescription &drive)
 {

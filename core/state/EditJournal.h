@@ -38,6 +38,11 @@ public:
     static JournalDrive driveOf(const ConnectionSettings &settings,
                                 const DriveDescription &drive);
 
+    // The outcome of writes to the sets of the mask that never went out: `reason` why.
+    static WriteOutcome notSent(quint16 address, quint8 setMask, const QString &reason);
+    // ... because the journal could not take their entries (`error`, from begin()).
+    static WriteOutcome notJournaled(quint16 address, quint8 setMask, const QString &error);
+
     // The journal could not be opened: every begin() fails with `reason`, so nothing is sent.
     void setUnavailable(const QString &reason) { m_unavailable = reason; }
 

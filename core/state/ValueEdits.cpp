@@ -134,13 +134,10 @@ bool ValueEdits::journal(const EditPtr &edit)
         return true;
     }
     // Nothing is written that the journal could not record.
-    WriteOutcome outcome;
-    outcome.address = address;
-    outcome.error = tr("the journal cannot record it: %1").arg(error);
+    quint8 mask = 0;
     for (const WriteStep &step : std::as_const(edit->change.steps))
-        outcome.refusedMask |= step.setMask ? step.setMask : quint8(1);
-    outcome.notSentMask = outcome.refusedMask;
-    finish(edit, outcome);
+        mask |= step.setMask ? step.setMask : quint8(1);
+    finish(edit, EditJournal::notJournaled(address, mask, error));
     return false;
 }
 

@@ -77,9 +77,7 @@ bool EditController::journalCopy(CopyJob &job)
                         : std::nullopt;
         if (!entries) {
             // What was begun stays in the journal as not sent: nothing went out.
-            WriteOutcome unsent;
-            unsent.refusedMask = unsent.notSentMask = mask;
-            unsent.error = tr("the journal cannot record it: %1").arg(error);
+            const WriteOutcome unsent = EditJournal::notJournaled(item.address, mask, error);
             for (qsizetype begun = 0; begun < index; ++begun)
                 completeJournal(job, begun, unsent);
             emit message(tr("Set %1 not copied to set %2: %3")
@@ -141,11 +139,11 @@ void EditController::copyFinished()
         if (job->watcher.future().isResultReadyAt(int(index)))
             continue;
         m_model->state()->clearEditState(job->plan.items.at(index).address, quint8(1u << job->plan.to));
-        WriteOutcome unsent;
-        unsent.address = job->plan.items.at(index).address;
-        unsent.refusedMask = unsent.notSentMask = quint8(1u << job->plan.to);
-        unsent.error = job->stopReason.isEmpty() ? tr("the copy was cancelled") : job->stopReason;
-        completeJournal(*job, index, unsent);
+        completeJournal(*job, index,
+                        EditJournal::notSent(job->plan.items.at(index).address,
+                                             quint8(1u << job->plan.to),
+                                             job->stopReason.isEmpty() ? tr("the copy was cancelled")
+                                                                       : job->stopReason));
     }
 
     const int from = job->plan.from;
