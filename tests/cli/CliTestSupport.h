@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QFile>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QStringList>
@@ -81,6 +82,28 @@ public:
     }
 
     bool started() const { return !m_target.isEmpty(); }
+
+    // Whether a client holds a connection to the server, from the kernel's table: a test that
+    // cuts or freezes the drive "on the way" must not do it before a slow start has connected.
+    bool waitForClient(int timeoutMs) const
+    {
+        const quint16 port = m_target.section(QLatin1Char(':'), -1).toUShort();
+        const QString local = QStringLiteral(":%1 ").arg(port, 4, 16, QLatin1Char('0')).toUpper();
+        return QTest::qWaitFor([&] {
+            QFile table(QStringLiteral("/proc/net/tcp"));
+            if (!table.open(QIODevice::ReadOnly))
+                return false;
+            const QStringList lines = QString::fromLatin1(table.readAll()).split(QLatin1Char('\n'));
+            for (const QString &line : lines) {
+                const QStringList fields = line.simplified().split(QLatin1Char(' '));
+                // fields: sl local remote state ...; 01 is ESTABLISHED.
+                if (fields.size() > 3 && (fields.at(1) + QLatin1Char(' ')).endsWith(local)
+                    && fields.at(3) == QLatin1String("01"))
+                    return true;
+            }
+            return false;
+        }, timeoutMs);
+    }
     QString error() const { return m_process.errorString() + QString::fromUtf8(m_process.readAllStandardError()); }
     QString target() const { return m_target; }
     qint64 processId() const { return m_process.processId(); }

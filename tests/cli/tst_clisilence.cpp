@@ -55,6 +55,7 @@ private slots:
             arguments << QStringLiteral("--values");
         QProcess cliProcess;
         start(cliProcess, server, protocol, arguments);
+        QVERIFY2(server.waitForClient(60000), "drivedesk-cli did not connect");
         QTest::qWait(1500);
         QCOMPARE(cliProcess.state(), QProcess::Running);
         QElapsedTimer sinceFreeze;
@@ -95,6 +96,7 @@ private slots:
         QProcess cliProcess;
         start(cliProcess, server, protocol,
               { QStringLiteral("--no-cache"), QStringLiteral("scan"), QStringLiteral("--values") });
+        QVERIFY2(server.waitForClient(60000), "drivedesk-cli did not connect");
         QTest::qWait(1500);
         QCOMPARE(cliProcess.state(), QProcess::Running);
         QCOMPARE(::kill(pid_t(server.processId()), SIGKILL), 0);
