@@ -32,9 +32,9 @@ void ClientWorker::finishJobsEarly()
     }
 }
 
-void ClientWorker::runJob(std::shared_ptr<RequestJobBase> job)
+void ClientWorker::runJob(std::shared_ptr<RequestJobBase> job, int driveAddress)
 {
-    auto sink = std::make_shared<OwnedSink>(*this);
+    auto sink = std::make_shared<OwnedSink>(*this, isDin() ? driveAddress : -1);
     auto *watcher = new QFutureWatcher<void>(this);
     const std::weak_ptr<RequestJobBase> weak = job;
     connect(watcher, &QFutureWatcherBase::canceled, this, [weak] {

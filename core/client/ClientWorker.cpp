@@ -383,7 +383,7 @@ void OwnedSink::submit(const Telegram &request, std::function<void(const Reply &
 {
     RequestOptions options;
     options.owner = m_owner;
-    m_worker.submitRequest(request, options,
+    m_worker.submitRequest(addressed(request), options,
                            [done = std::move(done)](const Reply &reply, bool) { done(reply); });
 }
 

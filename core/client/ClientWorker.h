@@ -58,7 +58,9 @@ public:
     // scan with what it read, unlike a cancelled future, which drops the result.
     void finishJobsEarly();
     // A job of many requests on a sink of its own, so that its cancel drops only its requests.
-    void runJob(std::shared_ptr<RequestJobBase> job);
+    // `driveAddress` >= 0: on a DIN66019(II) bus, the drive its requests go to where they name
+    // none (one client serves every drive of a bus); -1: the connection's drive.
+    void runJob(std::shared_ptr<RequestJobBase> job, int driveAddress = -1);
 
     // For jobs in this thread. Returns the request's ticket; `done` may run before it returns
     // (a request that cannot be sent, or no connection).
@@ -124,7 +126,7 @@ private:
     // from a line with errors, starts the count anew), and once the drive has stopped, it ends
     // as DriveSilent (status and detail are changed).
     void noteUnanswered(PendingRequest &request, Reply::Status *status, QString *detail);
-    void stopAnswering();
+    void stopAnswering(int target);
     void noteSent(PendingRequest &request);
     // Bytes came (onReceived): the drive is there, though not necessarily answering.
     void noteHeard(const QByteArray &bytes);
@@ -206,6 +208,9 @@ private:
     qint64 m_firstUnansweredMs = 0;
     int m_unansweredInARow = 0;
     bool m_driveStopped = false;
+    // DIN66019(II): the bus address of the drive that stopped answering. The other drives of
+    // the bus are asked as before: one drive switched off must not silence its neighbours.
+    int m_stoppedTarget = -1;
     // The run's requests by what they got instead of answers.
     std::array<int, kGarbageKinds> m_runGarbage{};
     std::deque<Telegram> m_sentRecently; // the latest attempts: what a stale answer answers
@@ -230,16 +235,17 @@ private:
 class OwnedSink : public RequestSink
 {
 public:
-    explicit OwnedSink(ClientWorker &worker)
+    explicit OwnedSink(ClientWorker &worker, int driveAddress = -1)
         : m_worker(worker)
         , m_owner(worker.newOwner())
+        , m_driveAddress(driveAddress)
     {}
 
     void submit(const Telegram &request, std::function<void(const Reply &)> done) override;
     void probe(const Telegram &request,
                std::function<void(const Reply &reply, bool heard)> done) override
     {
-        m_worker.submitProbe(request, m_owner, std::move(done));
+        m_worker.submitProbe(addressed(request), m_owner, std::move(done));
     }
     void cancelPending() override { m_worker.cancelOwner(m_owner); }
     bool supports(Service service, Access access) const override
@@ -249,8 +255,17 @@ public:
     quint64 lineErrors() const override { return m_worker.lineErrors(); }
 
 private:
+    Telegram addressed(const Telegram &request) const
+    {
+        Telegram to = request;
+        if (to.driveAddress < 0)
+            to.driveAddress = m_driveAddress;
+        return to;
+    }
+
     ClientWorker &m_worker;
     const quint64 m_owner;
+    const int m_driveAddress;
 };
 
 } // namespace DriveDesk

@@ -144,11 +144,12 @@ QFuture<Reply> DriveClient::readScope()
     return send(Telegram::request(Service::Scope, Access::Read, ScopeData{}));
 }
 
-void DriveClient::start(std::shared_ptr<RequestJobBase> job)
+void DriveClient::start(std::shared_ptr<RequestJobBase> job, int driveAddress)
 {
     ClientWorker *worker = m_worker;
     QMetaObject::invokeMethod(
-        worker, [worker, job = std::move(job)] { worker->runJob(job); }, Qt::QueuedConnection);
+        worker, [worker, job = std::move(job), driveAddress] { worker->runJob(job, driveAddress); },
+        Qt::QueuedConnection);
 }
 
 void DriveClient::stopScan()
@@ -161,9 +162,14 @@ void DriveClient::stopScan()
 QFuture<DriveDescription> DriveClient::scan(ScanOptions options)
 {
     ClientWorker *worker = m_worker;
+    ConnectionSettings settings = m_settings;
+    const int driveAddress = options.driveAddress;
+    if (driveAddress >= 0 && settings.protocol != Protocol::Hsp5)
+        settings.driveAddress = driveAddress;
     return run(std::make_shared<ScanJob>(
-        std::move(options), m_settings, [worker] { return worker->connectionDescription(); },
-        worker));
+                   std::move(options), settings,
+                   [worker] { return worker->connectionDescription(); }, worker),
+               driveAddress);
 }
 
 } // namespace DriveDesk

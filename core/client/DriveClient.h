@@ -54,6 +54,9 @@ struct ScanOptions {
     // seed 000 lacks and seed 003 marks reserved. Sent only when the user says the drive has it
     // (the connection's --hsp5-extensions sets it); otherwise the identification parameters.
     bool identificationText = false;
+    // DIN66019(II): the drive on the bus to scan, where one client serves a bus's drives (a
+    // plant's link); -1: the connection's drive (ConnectionSettings::driveAddress).
+    int driveAddress = -1;
 };
 
 // A note on the wire for the telegram monitor.
@@ -118,12 +121,14 @@ public:
     void setIdleCheckAddress(quint16 address);
 
     // Runs a job of many requests in the client's thread, on the client's queue, and returns
-    // its future. Cancelling the future stops the job.
+    // its future. Cancelling the future stops the job. `driveAddress` >= 0: on a DIN66019(II)
+    // bus, the drive the job's requests go to (one client for every drive of a bus); -1: the
+    // connection's drive.
     template<typename Job>
-    QFuture<typename Job::ResultType> run(std::shared_ptr<Job> job)
+    QFuture<typename Job::ResultType> run(std::shared_ptr<Job> job, int driveAddress = -1)
     {
         QFuture<typename Job::ResultType> future = job->future();
-        start(std::move(job));
+        start(std::move(job), driveAddress);
         return future;
     }
 
@@ -149,7 +154,7 @@ private:
     void setState(State state);
     void setDriveSilent(bool silent);
     void onBaudRateFound(qint32 baudRate);
-    void start(std::shared_ptr<RequestJobBase> job);
+    void start(std::shared_ptr<RequestJobBase> job, int driveAddress);
 
     ConnectionSettings m_settings;
     ClientOptions m_options;

@@ -13,6 +13,8 @@
 
 namespace DriveDesk {
 
+class PlantLinkRun;
+
 // What one drive of a plant came to in a PlantRun.
 struct PlantDrive
 {
@@ -62,8 +64,8 @@ public:
 // finds the drives on each link, backs each up to a parameter file (UploadRun, saveUpload),
 // checks each against its file (settings only, compareDescriptions), or downloads each file to
 // its drive (DownloadRun; a drive whose settings equal its file is left alone). Links run side
-// by side, each with a client (and worker thread) of its own; the drives of one bus one after
-// another, each over a connection of its own.
+// by side (PlantLinkRun), each over one connection with a client (and worker thread) of its
+// own; the drives of one bus one after another on it.
 // A link that fails fails only its own drives. A DIN link without addresses is searched first.
 // Thread: the caller's.
 class PlantRun : public QObject
@@ -109,20 +111,6 @@ signals:
     void finished();
 
 private:
-    struct LinkState;
-
-    void startLink(LinkState &state);
-    void search(LinkState &state);
-    void nextDrive(LinkState &state);
-    void readDrive(LinkState &state, int address);
-    void finishDrive(LinkState &state, PlantDrive drive);
-    // The file in state.file to the connected drive (PlantRunDownload.cpp).
-    void download(LinkState &state, DriveClient *client, PlantDrive drive);
-    void failLink(LinkState &state, int address, const QString &reason);
-    void endLink(LinkState &state);
-    DriveClient *makeClient(LinkState &state, int address);
-    void dropClient(LinkState &state);
-
     Plant m_plant;
     const Task m_task;
     const QString m_directory;
@@ -130,7 +118,8 @@ private:
     ClientOptions m_clientOptions;
     ScanOptions m_reading;
     Language m_language = Language::English;
-    QList<std::shared_ptr<LinkState>> m_links;
+    QList<PlantLinkRun *> m_links; // in plant order
+    int m_linksRunning = 0;
     bool m_dryRun = false;
     bool m_force = false;
     bool m_stopping = false;

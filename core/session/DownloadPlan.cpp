@@ -251,6 +251,14 @@ std::optional<PasswordLevel> levelInForce(const DriveDescription &drive)
 
 } // namespace
 
+QStringList kindProblems(const DriveDescription &file, const DriveDescription &drive,
+                         bool selection)
+{
+    QStringList problems;
+    checkKind(file, drive, selection, problems);
+    return problems;
+}
+
 DownloadPlan planDownload(const DriveDescription &file, const DriveDescription &drive,
                           const DownloadOptions &options)
 {

@@ -85,6 +85,12 @@ public:
     QString summary() const;
 };
 
+// Whether `file` was made for the kind of drive `drive` is (its identification parameters, or
+// its metadata where it has none), as the download refuses and a plant's verify judges: empty
+// when it was, else each reason it was not. `selection`: the file holds part of a drive.
+QStringList kindProblems(const DriveDescription &file, const DriveDescription &drive,
+                         bool selection = false);
+
 // `drive` is a scan of the drive with its values; `file` a parameter file.
 DownloadPlan planDownload(const DriveDescription &file, const DriveDescription &drive,
                           const DownloadOptions &options);

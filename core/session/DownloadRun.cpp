@@ -40,6 +40,7 @@ void DownloadRun::start(ScanOptions reading)
         return emit failed(tr("no drive is connected; nothing was written"));
     }
     m_stage = Stage::Reading;
+    m_driveAddress = reading.driveAddress;
     reading.values = true;
     reading.parameterList = false; // the password level and every value, to plan against
     m_reading.setFuture(m_client->scan(reading));
@@ -88,7 +89,7 @@ void DownloadRun::write()
         order << item.order;
     }
     m_job = std::make_shared<WriteChangesJob>(m_protocol, changes, order);
-    m_writing.setFuture(m_client->run(m_job));
+    m_writing.setFuture(m_client->run(m_job, m_driveAddress));
 }
 
 void DownloadRun::stop()

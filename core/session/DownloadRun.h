@@ -68,6 +68,7 @@ private:
     QFutureWatcher<DriveDescription> m_reading;
     QFutureWatcher<WriteOutcome> m_writing;
     std::shared_ptr<WriteChangesJob> m_job;
+    int m_driveAddress = -1; // the drive on the client's bus, as start() was told (ScanOptions)
 };
 
 } // namespace DriveDesk

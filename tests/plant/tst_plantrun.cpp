@@ -1,7 +1,11 @@
 #include "bus/LinkFactory.h"
+#include "bus/SimulatorServer.h"
 #include "plant/PlantRun.h"
 
+#include <QMap>
+
 #include <QDir>
+#include <QFileInfo>
 #include <QSignalSpy>
 #include <QTcpServer>
 #include <QTemporaryDir>
@@ -128,6 +132,73 @@ private slots:
         }
         QCOMPARE(backup.drives().size(), 4);
         QVERIFY(QDir(dir.path()).entryList(QDir::Files).isEmpty());
+    }
+
+    // A bus is one line: its drives are asked one after another over the one connection, not
+    // each over a connection of its own.
+    void everyDriveOfALinkOverOneConnection()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        QMap<QString, int> opened;
+        const LinkMaker every = everyLink();
+        const LinkMaker counting = [&opened, every](const ConnectionSettings &settings) {
+            ++opened[settings.displayName()];
+            return every(settings);
+        };
+        Plant plant = m_plant;
+        plant.links.removeLast();
+        plant.links.first().addresses = {2, 5, 7};
+        for (PlantRun::Task task : {PlantRun::Task::Backup, PlantRun::Task::Verify}) {
+            opened.clear();
+            PlantRun run(plant, task, dir.path(), counting);
+            ScanOptions reading;
+            reading.metadata = MetadataSource::Cache;
+            reading.cacheDirectory = dir.filePath(QStringLiteral("cache"));
+            run.setReading(reading);
+            const QList<PlantDrive> drives = runToEnd(run);
+            const QString good = task == PlantRun::Task::Backup ? QStringLiteral("saved")
+                                                                : QStringLiteral("equal");
+            QCOMPARE(outcomes(drives),
+                     QStringList({QStringLiteral("bus-2 ") + good, QStringLiteral("bus-5 ") + good,
+                                  QStringLiteral("bus-7 ") + good,
+                                  QStringLiteral("single ") + good}));
+            QCOMPARE(opened.size(), 2);
+            for (auto it = opened.cbegin(); it != opened.cend(); ++it)
+                QVERIFY2(it.value() == 1, qPrintable(QStringLiteral("%1 opened %2 times")
+                                                          .arg(it.key()).arg(it.value())));
+        }
+    }
+
+    // A drive switched off on a bus fails alone: the drives after it on the same line are
+    // read as if it were not there.
+    void aSilentDriveOnABusFailsOnlyItself()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        SimulationOptions simulation;
+        simulation.driveAddresses = {2, 7};
+        SimulatorServer server(Protocol::Din66019II, simulation);
+        QVERIFY(server.listenTcp(QStringLiteral("127.0.0.1"), 0, nullptr));
+        Plant plant;
+        plant.name = QStringLiteral("Line 4");
+        plant.links = {link(QStringLiteral("bus"),
+                            QStringLiteral("tcp:127.0.0.1:%1").arg(server.tcpPort()),
+                            Protocol::Din66019II, {2, 5, 7})};
+        PlantRun backup(plant, PlantRun::Task::Backup, dir.path(), everyLink());
+        ScanOptions reading;
+        reading.metadata = MetadataSource::Cache;
+        reading.cacheDirectory = dir.filePath(QStringLiteral("cache"));
+        backup.setReading(reading);
+        const QList<PlantDrive> drives = runToEnd(backup);
+        QCOMPARE(drives.size(), 3);
+        QCOMPARE(drives.at(0).outcome, PlantDrive::Outcome::Saved);
+        QCOMPARE(drives.at(1).outcome, PlantDrive::Outcome::Failed);
+        QVERIFY2(drives.at(1).reason.contains(QStringLiteral("stopped answering")),
+                 qPrintable(drives.at(1).reason));
+        QCOMPARE(drives.at(2).outcome, PlantDrive::Outcome::Saved);
+        QVERIFY(QFileInfo::exists(dir.filePath(QStringLiteral("bus-7.json"))));
+        QVERIFY(!QFileInfo::exists(dir.filePath(QStringLiteral("bus-5.json"))));
     }
 
 private:
