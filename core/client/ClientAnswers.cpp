@@ -198,6 +198,16 @@ void ClientWorker::onLineError(const QString &reason)
 
 void ClientWorker::onDeadline()
 {
+    // On a busy machine this thread may wake for the deadline with the answer already in, or
+    // with it read but still queued for onReceived(): the link is asked for what it holds, and
+    // the judgement queued behind all of it, so that an answer that came in time counts.
+    if (m_link)
+        m_link->readWaiting();
+    QMetaObject::invokeMethod(this, &ClientWorker::judgeDeadlines, Qt::QueuedConnection);
+}
+
+void ClientWorker::judgeDeadlines()
+{
     std::vector<quint64> expired;
     for (const Request &request : m_inFlight) {
         if (request->stage != PendingRequest::Stage::Queued && request->deadline.hasExpired())

@@ -104,6 +104,8 @@ private:
     void onDecodeError(const DecodeError &error);
     void onLineError(const QString &reason);
     void onDeadline();
+    // onDeadline()'s judgement, once what the link held when it fired has been handed on.
+    void judgeDeadlines();
     void answerInverterRequest(const Telegram &request);
 
     // Validates and resolves a new request; false and *rejection when it cannot be sent.

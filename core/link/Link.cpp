@@ -31,6 +31,12 @@ void Link::send(const QByteArray &bytes)
     transmit(bytes);
 }
 
+void Link::readWaiting()
+{
+    if (m_state == State::Open)
+        pollTransport();
+}
+
 void Link::reportOpened()
 {
     if (m_state != State::Opening)

@@ -32,6 +32,10 @@ public:
     bool isOpen() const { return m_state == State::Open; }
     // Only while open; otherwise the bytes are dropped with a warning.
     void send(const QByteArray &bytes);
+    // Hands on now what the transport holds but has not reported yet: received() follows for
+    // it. A busy machine may wake the client's thread for an answer's deadline before it
+    // noticed the answer that came in time; the client asks before it judges.
+    void readWaiting();
     // E.g. "serial /dev/ttyUSB0 38400 8E1", "tcp 127.0.0.1:4001", "simulated drive".
     virtual QString description() const = 0;
 
@@ -56,6 +60,9 @@ protected:
     virtual void closeTransport() = 0;
     // Writes bytes while open; fail() if they cannot be written.
     virtual void transmit(const QByteArray &bytes) = 0;
+    // readWaiting()'s part: reads what the device has without waiting. A link whose bytes
+    // never wait (the simulated drive's) has nothing to do.
+    virtual void pollTransport() {}
 
     State state() const { return m_state; }
     // The transport is open: opened(), unless the attempt was abandoned.

@@ -93,7 +93,15 @@ void SerialLink::closeTransport()
 void SerialLink::transmit(const QByteArray &bytes)
 {
     if (m_port->write(bytes) != bytes.size())
-        fail(reasonFor(QSerialPort::WriteError));
+        return fail(reasonFor(QSerialPort::WriteError));
+    // Out now, not when the event loop next gets to it: the answer's deadline has started.
+    m_port->flush();
+}
+
+void SerialLink::pollTransport()
+{
+    // A wait of 0 ms is a look, not a wait; its "timeout" is no error (onErrorOccurred).
+    m_port->waitForReadyRead(0);
 }
 
 QString SerialLink::description() const

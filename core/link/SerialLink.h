@@ -21,6 +21,7 @@ private:
     void openTransport() override;
     void closeTransport() override;
     void transmit(const QByteArray &bytes) override;
+    void pollTransport() override;
     void onErrorOccurred(QSerialPort::SerialPortError error);
     // In words, with the system's own text.
     QString reasonFor(QSerialPort::SerialPortError error) const;

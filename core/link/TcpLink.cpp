@@ -44,7 +44,14 @@ void TcpLink::closeTransport()
 void TcpLink::transmit(const QByteArray &bytes)
 {
     if (m_socket->write(bytes) != bytes.size())
-        fail(tr("writing failed (%1)").arg(m_socket->errorString()));
+        return fail(tr("writing failed (%1)").arg(m_socket->errorString()));
+    // Out now, not when the event loop next gets to it: the answer's deadline has started.
+    m_socket->flush();
+}
+
+void TcpLink::pollTransport()
+{
+    m_socket->waitForReadyRead(0);
 }
 
 QString TcpLink::description() const
@@ -66,6 +73,9 @@ void TcpLink::onConnected()
 
 void TcpLink::onErrorOccurred(QAbstractSocket::SocketError error)
 {
+    // A look at the socket (pollTransport) that found nothing is no failure.
+    if (error == QAbstractSocket::SocketTimeoutError)
+        return;
     if (error == QAbstractSocket::RemoteHostClosedError)
         fail(tr("the device server closed the connection"));
     else

@@ -28,6 +28,7 @@ private:
     void openTransport() override;
     void closeTransport() override;
     void transmit(const QByteArray &bytes) override;
+    void pollTransport() override;
     void onConnected();
     void onErrorOccurred(QAbstractSocket::SocketError error);
 

@@ -8,7 +8,7 @@ drivedesk_add_test(NAME tst_whenfinished LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_whenfinished.cpp LIBS drivedesk_client)
 
 foreach(name clientservices clientdin clientpipeline clientfaults clienttransports clientscan clientunplug
-        clientseedonly clientcache)
+        clientseedonly clientcache clientstall)
     drivedesk_add_test(NAME tst_${name} LABELS unit integration TIMEOUT 300
         SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_${name}.cpp ${CMAKE_CURRENT_LIST_DIR}/ClientTestSupport.h
         LIBS drivedesk_client drivedesk_bus drivedesk_translations)
