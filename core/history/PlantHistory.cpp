@@ -1,0 +1,157 @@
+#include "PlantHistory.h"
+
+#include "parameters/ParameterDocument.h"
+
+#include <QSet>
+
+namespace DriveDesk {
+
+namespace {
+
+// A file a commit changed: its blob before and after; an empty one where it was not there.
+struct FileChange
+{
+    QString name;
+    QByteArray before;
+    QByteArray after;
+};
+
+struct Commit
+{
+    PlantRevision revision;
+    QList<FileChange> files;
+};
+
+const char kRecord = '\x1e';
+const char kField = '\x1f';
+
+QByteArray blobOrNone(const QByteArray &id)
+{
+    return id.count('0') == id.size() ? QByteArray() : id;
+}
+
+// `git log --raw` in records: the header's fields, then a line a file changed,
+// ":100644 100644 <before> <after> M\t<name>".
+QList<Commit> parseLog(const QByteArray &log)
+{
+    QList<Commit> commits;
+    for (const QByteArray &record : log.split(kRecord)) {
+        if (record.trimmed().isEmpty())
+            continue;
+        const qsizetype headerEnd = record.indexOf('\n');
+        const QList<QByteArray> fields = record.left(headerEnd).split(kField);
+        if (fields.size() < 5)
+            continue;
+        Commit commit;
+        commit.revision.id = QString::fromLatin1(fields[0]);
+        commit.revision.time = QDateTime::fromSecsSinceEpoch(fields[1].toLongLong());
+        commit.revision.author = QString::fromUtf8(fields[2]);
+        commit.revision.email = QString::fromUtf8(fields[3]);
+        commit.revision.subject = QString::fromUtf8(fields[4]);
+        for (const QByteArray &line : record.mid(headerEnd + 1).split('\n')) {
+            if (!line.startsWith(':'))
+                continue;
+            const qsizetype tab = line.indexOf('\t');
+            const QList<QByteArray> raw = line.left(tab).split(' ');
+            const QString name = QString::fromUtf8(line.mid(tab + 1));
+            if (tab < 0 || raw.size() < 5 || !driveOfFile(name))
+                continue;
+            commit.files << FileChange{name, blobOrNone(raw[2]), blobOrNone(raw[3])};
+        }
+        commits << commit;
+    }
+    return commits;
+}
+
+struct ParsedBlob
+{
+    std::optional<DriveDescription> description;
+    QString reason;
+};
+
+void addTo(DriveFiles &files, const QString &name, const QByteArray &blob,
+           const QHash<QByteArray, ParsedBlob> &parsed)
+{
+    if (blob.isEmpty())
+        return;
+    const QString drive = *driveOfFile(name);
+    const ParsedBlob &read = parsed[blob];
+    if (read.description)
+        files.drives.insert(drive, *read.description);
+    else
+        files.unreadable.insert(drive, read.reason);
+}
+
+} // namespace
+
+std::optional<QList<PlantRevision>> readPlantHistory(const BackupRepository &repository,
+                                                     const HistoryFilter &filter,
+                                                     QString *error)
+{
+    if (!repository.hasCommits())
+        return QList<PlantRevision>();
+    QStringList arguments{QStringLiteral("log"), QStringLiteral("--first-parent"),
+                          QStringLiteral("--no-renames"), QStringLiteral("--raw"),
+                          QStringLiteral("--no-abbrev"), QStringLiteral("--root"),
+                          QStringLiteral("--format=%x1e%H%x1f%ct%x1f%an%x1f%ae%x1f%s"),
+                          QStringLiteral("HEAD"), QStringLiteral("--")};
+    arguments << (filter.drive.isEmpty() ? QStringLiteral("*.json")
+                                         : filter.drive + QStringLiteral(".json"));
+    const Git::Result log = repository.git().run(arguments);
+    if (!log.ok) {
+        *error = log.error;
+        return std::nullopt;
+    }
+    const QList<Commit> commits = parseLog(log.out);
+
+    QList<QByteArray> blobs;
+    QSet<QByteArray> wanted;
+    for (const Commit &commit : commits) {
+        for (const FileChange &file : commit.files) {
+            for (const QByteArray &blob : {file.before, file.after}) {
+                if (!blob.isEmpty() && !wanted.contains(blob)) {
+                    wanted.insert(blob);
+                    blobs << blob;
+                }
+            }
+        }
+    }
+    const auto contents = repository.contents(blobs, error);
+    if (!contents)
+        return std::nullopt;
+    QHash<QByteArray, ParsedBlob> parsed;
+    for (const QByteArray &blob : std::as_const(blobs)) {
+        ParsedBlob &read = parsed[blob];
+        read.description = ParameterDocument::fromJson(contents->value(blob), &read.reason);
+    }
+
+    QList<PlantRevision> revisions;
+    for (const Commit &commit : commits) {
+        PlantRevision revision = commit.revision;
+        DriveFiles before;
+        DriveFiles after;
+        for (const FileChange &file : commit.files) {
+            addTo(before, file.name, file.before, parsed);
+            addTo(after, file.name, file.after, parsed);
+        }
+        for (DriveChange &change : compareRevisions(before, after)) {
+            if (!filter.drive.isEmpty() && change.drive != filter.drive)
+                continue;
+            if (!filter.parameter.isEmpty()) {
+                if (change.kind != DriveChange::Kind::Changed)
+                    continue;
+                change.differences.removeIf([&filter](const ParameterDifference &difference) {
+                    return !sameParameterId(filter.parameter, difference.id);
+                });
+                if (change.differences.isEmpty())
+                    continue;
+            }
+            revision.changes << change;
+        }
+        if (filter.isEmpty() || !revision.changes.isEmpty())
+            revisions << revision;
+    }
+    return revisions;
+}
+
+} // namespace DriveDesk
