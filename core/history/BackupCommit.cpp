@@ -1,5 +1,6 @@
 #include "BackupCommit.h"
 
+#include "plant/PlantFile.h"
 #include "plant/PlantRun.h"
 
 #include <QDir>
@@ -16,9 +17,15 @@ namespace {
 // never refused for want of user.name.
 void authorWhereGitHasNone(Git &git)
 {
-    const auto configured = [&git](const char *key) {
-        const Git::Result value = git.run({QStringLiteral("config"), QLatin1String(key)});
-        return value.ok && !value.out.trimmed().isEmpty();
+    // One run for both: "user.name Jane Doe\nuser.email jane@example.org\n".
+    const Git::Result values = git.run({QStringLiteral("config"), QStringLiteral("--get-regexp"),
+                                        QStringLiteral("^user\\.(name|email)$")});
+    const auto configured = [&values](const QByteArray &key) {
+        for (const QByteArray &line : values.out.split('\n')) {
+            if (line.startsWith(key + ' ') && !line.mid(key.size() + 1).trimmed().isEmpty())
+                return true;
+        }
+        return false;
     };
     const bool name = configured("user.name");
     const bool email = configured("user.email");
@@ -50,15 +57,16 @@ void authorWhereGitHasNone(Git &git)
 
 QString BackupCommit::commitMessage(const QList<DriveChange> &changes) const
 {
-    int count = 0;
     QStringList lines;
+    QStringList drives;
     for (const DriveChange &change : changes) {
-        const QStringList of = change.lines();
-        count += int(of.size());
-        lines << of;
+        lines << change.lines();
+        drives << change.drive;
     }
+    // The drives, not a count: `git log --oneline` then says where to look.
     const QString subject = message.trimmed().isEmpty()
-                                ? tr("%1: backup, %n change(s)", nullptr, count).arg(plantName)
+                                ? tr("%1: backup, %2 changed")
+                                      .arg(plantName, drives.join(QStringLiteral(", ")))
                                 : message.trimmed();
     return subject + QStringLiteral("\n\n") + lines.join(QLatin1Char('\n')) + QLatin1Char('\n');
 }
@@ -78,8 +86,11 @@ std::optional<BackupCommit::Outcome> BackupCommit::commit(BackupRepository &repo
         for (auto it = files->cbegin(); it != files->cend(); ++it)
             last.insert(it.key(), blobs->value(it.value()));
     }
+    QStringList dropped = gone;
+    if (plant)
+        dropped << filesOfNoDrive(*plant, last.keys());
     QMap<QString, QByteArray> now = last;
-    for (const QString &name : gone)
+    for (const QString &name : std::as_const(dropped))
         now.remove(name);
     for (const QString &name : saved) {
         QFile file(QDir(repository.directory()).filePath(name));
@@ -96,7 +107,7 @@ std::optional<BackupCommit::Outcome> BackupCommit::commit(BackupRepository &repo
         return outcome;
 
     QStringList removed;
-    for (const QString &name : gone) {
+    for (const QString &name : std::as_const(dropped)) {
         if (last.contains(name))
             removed << name;
     }
@@ -110,12 +121,12 @@ std::optional<BackupCommit::Outcome> BackupCommit::commit(BackupRepository &repo
     }
     // The file stays in the folder: the drive's last backup is the user's to delete.
     if (!removed.isEmpty()) {
-        const Git::Result dropped = git.run(
+        const Git::Result untracked = git.run(
             QStringList{QStringLiteral("rm"), QStringLiteral("-q"), QStringLiteral("--cached"),
                         QStringLiteral("--")}
             + removed);
-        if (!dropped.ok) {
-            *error = dropped.error;
+        if (!untracked.ok) {
+            *error = untracked.error;
             return std::nullopt;
         }
     }

@@ -22,6 +22,9 @@ public:
     // this backup) and those of drives the plant no longer has.
     QStringList saved;
     QStringList gone;
+    // The plant as the backup's run left it, if given: the last commit's files of no drive of
+    // it (filesOfNoDrive) are gone too.
+    const Plant *plant = nullptr;
     // The plant's name and the user's words for the commit's first line, if any.
     QString plantName;
     QString message;
@@ -40,7 +43,8 @@ public:
     // name and host. Nothing and *error, naming what git said, when git fails.
     std::optional<Outcome> commit(BackupRepository &repository, QString *error) const;
 
-    // The commit message: the user's words or "Line 3: backup, 2 changes", then a line a change.
+    // The commit message: the user's words or "Line 3: backup, cabinet-5 changed", then a
+    // line a change.
     QString commitMessage(const QList<DriveChange> &changes) const;
 };
 

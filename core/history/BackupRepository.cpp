@@ -3,6 +3,8 @@
 #include "parameters/ParameterDocument.h"
 #include "parameters/SavedFile.h"
 
+#include <QtConcurrent/QtConcurrentMap>
+
 #include <QDir>
 #include <QFileInfo>
 #include <QRegularExpression>
@@ -12,8 +14,6 @@ namespace DriveDesk {
 std::optional<BackupRepository> BackupRepository::open(const QString &directory, bool create,
                                                        QString *error)
 {
-    if (!Git::isAvailable(error))
-        return std::nullopt;
     if (!QFileInfo(directory).isDir() && !(create && QDir().mkpath(directory))) {
         *error = create ? tr("cannot make the directory %1").arg(QDir::toNativeSeparators(directory))
                         : tr("the directory %1 does not exist").arg(QDir::toNativeSeparators(directory));
@@ -23,6 +23,10 @@ std::optional<BackupRepository> BackupRepository::open(const QString &directory,
     const QString canonical = QFileInfo(directory).canonicalFilePath();
     const Git::Result top = repository.m_git.run(
         {QStringLiteral("rev-parse"), QStringLiteral("--show-toplevel")});
+    if (!top.started) {
+        *error = top.error;
+        return std::nullopt;
+    }
     const bool own = top.ok
                      && QFileInfo(QString::fromUtf8(top.out).trimmed()).canonicalFilePath()
                             == canonical;
@@ -153,18 +157,32 @@ bool BackupRepository::extract(const QString &commit, const QString &target, QSt
     return true;
 }
 
+QList<ReadDescription> readDescriptions(const QList<QByteArray> &contents)
+{
+    return QtConcurrent::blockingMapped(contents, [](const QByteArray &bytes) {
+        ReadDescription read;
+        read.description = ParameterDocument::fromJson(bytes, &read.reason);
+        return read;
+    });
+}
+
 DriveFiles readDriveFiles(const QMap<QString, QByteArray> &files)
 {
-    DriveFiles result;
+    QStringList drives;
+    QList<QByteArray> contents;
     for (auto it = files.cbegin(); it != files.cend(); ++it) {
-        const std::optional<QString> drive = driveOfFile(it.key());
-        if (!drive)
-            continue;
-        QString reason;
-        if (auto description = ParameterDocument::fromJson(it.value(), &reason))
-            result.drives.insert(*drive, std::move(*description));
+        if (const std::optional<QString> drive = driveOfFile(it.key())) {
+            drives << *drive;
+            contents << it.value();
+        }
+    }
+    const QList<ReadDescription> read = readDescriptions(contents);
+    DriveFiles result;
+    for (qsizetype i = 0; i < drives.size(); ++i) {
+        if (read[i].description)
+            result.drives.insert(drives[i], *read[i].description);
         else
-            result.unreadable.insert(*drive, reason);
+            result.unreadable.insert(drives[i], read[i].reason);
     }
     return result;
 }

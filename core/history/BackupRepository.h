@@ -55,6 +55,17 @@ private:
     Git m_git;
 };
 
+// A parameter file's contents read: its description, or why it cannot be read.
+struct ReadDescription
+{
+    std::optional<DriveDescription> description;
+    QString reason;
+};
+
+// Each file's contents read, in order, on every core at once: reading is most of the work of
+// a commit and of a history, and each file stands alone.
+QList<ReadDescription> readDescriptions(const QList<QByteArray> &contents);
+
 // Reads each file's contents into a DriveFiles: a description per drive, or why it cannot be
 // read. `files`: file name -> contents.
 DriveFiles readDriveFiles(const QMap<QString, QByteArray> &files);

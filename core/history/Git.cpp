@@ -76,6 +76,7 @@ Git::Result Git::run(const QStringList &arguments, const QByteArray &input) cons
         result.error = tr("git cannot be run (%1): install git").arg(process.errorString());
         return result;
     }
+    result.started = true;
     if (!input.isEmpty())
         process.write(input);
     process.closeWriteChannel();

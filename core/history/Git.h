@@ -20,6 +20,7 @@ public:
     struct Result
     {
         bool ok = false;
+        bool started = false; // false: the git program could not be run at all
         QByteArray out;
         QString error; // what went wrong, naming what git said; empty when ok
     };

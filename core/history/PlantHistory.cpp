@@ -1,7 +1,5 @@
 #include "PlantHistory.h"
 
-#include "parameters/ParameterDocument.h"
-
 #include <QSet>
 
 namespace DriveDesk {
@@ -63,19 +61,13 @@ QList<Commit> parseLog(const QByteArray &log)
     return commits;
 }
 
-struct ParsedBlob
-{
-    std::optional<DriveDescription> description;
-    QString reason;
-};
-
 void addTo(DriveFiles &files, const QString &name, const QByteArray &blob,
-           const QHash<QByteArray, ParsedBlob> &parsed)
+           const QHash<QByteArray, ReadDescription> &parsed)
 {
     if (blob.isEmpty())
         return;
     const QString drive = *driveOfFile(name);
-    const ParsedBlob &read = parsed[blob];
+    const ReadDescription &read = parsed[blob];
     if (read.description)
         files.drives.insert(drive, *read.description);
     else
@@ -119,11 +111,14 @@ std::optional<QList<PlantRevision>> readPlantHistory(const BackupRepository &rep
     const auto contents = repository.contents(blobs, error);
     if (!contents)
         return std::nullopt;
-    QHash<QByteArray, ParsedBlob> parsed;
-    for (const QByteArray &blob : std::as_const(blobs)) {
-        ParsedBlob &read = parsed[blob];
-        read.description = ParameterDocument::fromJson(contents->value(blob), &read.reason);
-    }
+    QList<QByteArray> texts;
+    texts.reserve(blobs.size());
+    for (const QByteArray &blob : std::as_const(blobs))
+        texts << contents->value(blob);
+    const QList<ReadDescription> read = readDescriptions(texts);
+    QHash<QByteArray, ReadDescription> parsed;
+    for (qsizetype i = 0; i < blobs.size(); ++i)
+        parsed.insert(blobs[i], read[i]);
 
     QList<PlantRevision> revisions;
     for (const Commit &commit : commits) {
