@@ -69,7 +69,7 @@ private slots:
         QVERIFY(outcome->committed);
         QCOMPARE(git(folder.path(), {QStringLiteral("log"), QStringLiteral("-1"),
                                      QStringLiteral("--format=%an|%B")}),
-                 QStringLiteral("Test Engineer|Line 3: backup, 1 change\n\ncabinet-5 added"));
+                 QStringLiteral("Test Engineer|Line 3: backup, cabinet-5 changed\n\ncabinet-5 added"));
 
         // The actual frequency moved on: a live value, no change, no commit.
         find(drive, EditorSample::kFrequency)->values[0] = -4000;
