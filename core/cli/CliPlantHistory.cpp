@@ -186,9 +186,6 @@ std::unique_ptr<QTemporaryDir> extractRevision(const QString &directory, const Q
 bool commitPlantBackup(const PlantRequest &request, const Plant &plant,
                        const QList<PlantDrive> &drives, QTextStream &out, QString *error)
 {
-    auto repository = BackupRepository::open(request.directory, true, error);
-    if (!repository)
-        return false;
     BackupCommit backup;
     backup.plantName = plant.name;
     backup.message = request.message;
@@ -196,6 +193,14 @@ bool commitPlantBackup(const PlantRequest &request, const Plant &plant,
         if (drive.outcome == PlantDrive::Outcome::Saved)
             backup.saved << QFileInfo(drive.file).fileName();
     }
+    // A backup that saved nothing is no revision of the machine, whatever the plant file says.
+    if (backup.saved.isEmpty()) {
+        out << CliPlantHistoryText::tr("no drive saved: nothing committed") << '\n';
+        return true;
+    }
+    auto repository = BackupRepository::open(request.directory, true, error);
+    if (!repository)
+        return false;
     backup.plant = &plant;
     const auto outcome = backup.commit(*repository, error);
     if (!outcome)

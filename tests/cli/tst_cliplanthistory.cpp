@@ -7,6 +7,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcessEnvironment>
+#include <QTcpServer>
 #include <QTemporaryDir>
 
 using namespace DriveDesk::CliTest;
@@ -192,6 +193,24 @@ private slots:
         QCOMPARE(run.exitCode, 2);
         QVERIFY2(run.err.contains(QStringLiteral("--at belongs to plant verify and plant download")),
                  qPrintable(run.err));
+    }
+
+    // No drive answered: nothing saved, so no revision, and the last one stays the newest.
+    void aBackupThatSavedNothingCommitsNothing()
+    {
+        QTcpServer closed;
+        QVERIFY(closed.listen(QHostAddress::LocalHost));
+        const QString dead = QStringLiteral("tcp:127.0.0.1:%1").arg(closed.serverPort());
+        closed.close();
+        const QString plantFile = m_dir.filePath(QStringLiteral("dead.json"));
+        QVERIFY(writeText(plantFile, QStringLiteral(
+            "{\"format\": \"drivedesk-plant\", \"version\": 1, \"name\": \"Line 3\", \"links\": ["
+            "{\"name\": \"hoist\", \"connect\": \"%1\", \"protocol\": \"hsp5\"}]}\n").arg(dead)));
+        const Run run = plant({QStringLiteral("backup"), plantFile, m_backups, QStringLiteral("--commit")});
+        QCOMPARE(run.exitCode, 3);
+        QVERIFY2(run.out.contains(QStringLiteral("no drive saved: nothing committed\n")), qPrintable(run.out));
+        QCOMPARE(git({QStringLiteral("rev-list"), QStringLiteral("--count"), QStringLiteral("HEAD")}),
+                 QStringLiteral("2"));
     }
 
     // Neither user.name nor user.email anywhere: the login name stands in.
