@@ -74,6 +74,38 @@ void addTo(DriveFiles &files, const QString &name, const QByteArray &blob,
         files.unreadable.insert(drive, read.reason);
 }
 
+// Revisions whose files are read together: one run of git cat-file each.
+constexpr qsizetype kBatch = 100;
+
+// The versions the revisions from `first` on (a batch) need and that are not read yet, read.
+bool readBatch(const BackupRepository &repository, const QList<Commit> &commits, qsizetype first,
+               QHash<QByteArray, ReadDescription> &parsed, QString *error)
+{
+    QList<QByteArray> blobs;
+    QSet<QByteArray> wanted;
+    for (qsizetype i = first; i < std::min(commits.size(), first + kBatch); ++i) {
+        for (const FileChange &file : commits[i].files) {
+            for (const QByteArray &blob : {file.before, file.after}) {
+                if (!blob.isEmpty() && !parsed.contains(blob) && !wanted.contains(blob)) {
+                    wanted.insert(blob);
+                    blobs << blob;
+                }
+            }
+        }
+    }
+    const auto contents = repository.contents(blobs, error);
+    if (!contents)
+        return false;
+    QList<QByteArray> texts;
+    texts.reserve(blobs.size());
+    for (const QByteArray &blob : std::as_const(blobs))
+        texts << contents->value(blob);
+    const QList<ReadDescription> read = readDescriptions(texts);
+    for (qsizetype i = 0; i < blobs.size(); ++i)
+        parsed.insert(blobs[i], read[i]);
+    return true;
+}
+
 } // namespace
 
 std::optional<QList<PlantRevision>> readPlantHistory(const BackupRepository &repository,
@@ -96,32 +128,23 @@ std::optional<QList<PlantRevision>> readPlantHistory(const BackupRepository &rep
     }
     const QList<Commit> commits = parseLog(log.out);
 
-    QList<QByteArray> blobs;
-    QSet<QByteArray> wanted;
-    for (const Commit &commit : commits) {
-        for (const FileChange &file : commit.files) {
+    // Each version is read once and dropped after the last (oldest) revision that needs it, a
+    // batch of revisions at a time: a long history is never held in memory whole.
+    QHash<QByteArray, qsizetype> lastUse;
+    for (qsizetype i = 0; i < commits.size(); ++i) {
+        for (const FileChange &file : commits[i].files) {
             for (const QByteArray &blob : {file.before, file.after}) {
-                if (!blob.isEmpty() && !wanted.contains(blob)) {
-                    wanted.insert(blob);
-                    blobs << blob;
-                }
+                if (!blob.isEmpty())
+                    lastUse.insert(blob, i);
             }
         }
     }
-    const auto contents = repository.contents(blobs, error);
-    if (!contents)
-        return std::nullopt;
-    QList<QByteArray> texts;
-    texts.reserve(blobs.size());
-    for (const QByteArray &blob : std::as_const(blobs))
-        texts << contents->value(blob);
-    const QList<ReadDescription> read = readDescriptions(texts);
     QHash<QByteArray, ReadDescription> parsed;
-    for (qsizetype i = 0; i < blobs.size(); ++i)
-        parsed.insert(blobs[i], read[i]);
-
     QList<PlantRevision> revisions;
-    for (const Commit &commit : commits) {
+    for (qsizetype index = 0; index < commits.size(); ++index) {
+        if (index % kBatch == 0 && !readBatch(repository, commits, index, parsed, error))
+            return std::nullopt;
+        const Commit &commit = commits[index];
         PlantRevision revision = commit.revision;
         DriveFiles before;
         DriveFiles after;
@@ -145,6 +168,12 @@ std::optional<QList<PlantRevision>> readPlantHistory(const BackupRepository &rep
         }
         if (filter.isEmpty() || !revision.changes.isEmpty())
             revisions << revision;
+        for (const FileChange &file : commit.files) {
+            for (const QByteArray &blob : {file.before, file.after}) {
+                if (!blob.isEmpty() && lastUse.value(blob) == index)
+                    parsed.remove(blob);
+            }
+        }
     }
     return revisions;
 }
