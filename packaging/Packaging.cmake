@@ -74,9 +74,10 @@ and a simulated drive to try it all without hardware (drivedesk-sim).")
 # The libraries the programs link come from dpkg-shlibdeps (Qt's, and libfftw3-double3 for the
 # scope's spectrum; tools/package.sh checks they are there). What it cannot see: Qt loads its
 # platform plugins (xcb) and its SQLite driver (the journal) at run time, and its own
-# translations for the German texts.
+# translations for the German texts; and `plant backup --commit`, `plant history` and `--at`
+# run the git program.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "qt6-qpa-plugins, libqt6sql6-sqlite")
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "qt6-qpa-plugins, libqt6sql6-sqlite, git")
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "qt6-translations-l10n")
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "bash-completion")
 # The package is made from the build the tests ran in: `cpack` must not build everything first

@@ -67,13 +67,13 @@ for file in "${required[@]}"; do
     grep -qxF "$file" <<<"$contents" || fail "the package lacks $file"
 done
 
-# Qt's libraries and FFTW's (the scope's spectrum) come from dpkg-shlibdeps; the platform plugin
-# and translations it cannot see.
+# Qt's libraries and FFTW's (the scope's spectrum) come from dpkg-shlibdeps; the platform plugin,
+# git (a plant's backup history) and translations it cannot see.
 depends=$(dpkg-deb --field "$deb" Depends)
 recommends=$(dpkg-deb --field "$deb" Recommends)
 echo "Depends: $depends"
 echo "Recommends: $recommends"
-for package in libqt6core6 libqt6widgets6 libqt6serialport6 libfftw3-double3 qt6-qpa-plugins; do
+for package in libqt6core6 libqt6widgets6 libqt6serialport6 libfftw3-double3 qt6-qpa-plugins git; do
     grep -qE "(^|, )$package( |,|$)" <<<"$depends" || fail "Depends lacks $package"
 done
 grep -qE "(^|, )qt6-translations-l10n( |,|$)" <<<"$recommends" \

@@ -8,7 +8,7 @@ packages=(
     cmake g++ make ninja-build pkg-config ccache
     qt6-base-dev qt6-serialport-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
     qt6-qpa-plugins qt6-translations-l10n libqt6sql6-sqlite libqcustomplot-dev libfftw3-dev
-    xvfb xauth socat
+    xvfb xauth socat git
     dpkg-dev lintian appstream desktop-file-utils file
 )
 

@@ -33,8 +33,13 @@ void addJournalOptions(QCommandLineParser &parser)
 bool parseJournalOptions(const QCommandLineParser &parser, CliRequest &request, QString *error)
 {
     const bool reading = request.command == CliRequest::Command::Journal;
+    // plant history filters its revisions by drive and parameter as the journal its entries.
+    const bool history = request.plant && request.plant->action == PlantRequest::Action::History;
     if (!reading) {
         for (const char *name : kFilterOptions) {
+            const bool historyFilter = qstrcmp(name, "drive") == 0 || qstrcmp(name, "parameter") == 0;
+            if (history && historyFilter)
+                continue;
             if (parser.isSet(QLatin1String(name))) {
                 *error = QStringLiteral("--%1 belongs to journal").arg(QLatin1String(name));
                 return false;

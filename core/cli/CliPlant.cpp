@@ -1,6 +1,9 @@
 // drivedesk-cli plant: every drive of a plant file found, backed up or checked.
 #include "CliPlant.h"
 
+#include "cli/CliPlantHistory.h"
+#include "history/Git.h"
+
 #include "bus/LinkFactory.h"
 #include "link/ConnectionOptions.h"
 
@@ -9,6 +12,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QTemporaryDir>
 
 namespace DriveDesk {
 
@@ -40,9 +44,11 @@ std::optional<CliRequest> parsePlantCommand(const QCommandLineParser &parser,
         plant.action = PlantRequest::Action::Verify;
     } else if (action == QLatin1String("download")) {
         plant.action = PlantRequest::Action::Download;
+    } else if (action == QLatin1String("history")) {
+        plant.action = PlantRequest::Action::History;
     } else {
-        *error = QStringLiteral("plant takes find PLANT, backup PLANT DIR, verify PLANT DIR or "
-                                "download PLANT DIR");
+        *error = QStringLiteral("plant takes find PLANT, backup PLANT DIR, verify PLANT DIR, "
+                                "download PLANT DIR or history PLANT DIR");
         return std::nullopt;
     }
     if (positional.size() != expected) {
@@ -68,8 +74,9 @@ std::optional<CliRequest> parsePlantCommand(const QCommandLineParser &parser,
     }
     if (parser.isSet(QStringLiteral("format"))) {
         const QString format = parser.value(QStringLiteral("format")).toLower();
-        if (plant.action != PlantRequest::Action::Verify) {
-            *error = QStringLiteral("--format belongs to plant verify");
+        if (plant.action != PlantRequest::Action::Verify
+            && plant.action != PlantRequest::Action::History) {
+            *error = QStringLiteral("--format belongs to plant verify and plant history");
             return std::nullopt;
         }
         if (format != QLatin1String("json") && format != QLatin1String("table")) {
@@ -88,6 +95,8 @@ std::optional<CliRequest> parsePlantCommand(const QCommandLineParser &parser,
                                                                QStringLiteral("ms")),
                                     1, 600000, &request.timeoutMs, error))
         return std::nullopt;
+    if (!parsePlantHistoryOptions(parser, plant, error))
+        return std::nullopt;
     request.quiet = parser.isSet(QStringLiteral("quiet"));
     request.useCache = !parser.isSet(QStringLiteral("no-cache"));
     request.plant = plant;
@@ -102,12 +111,28 @@ CliPlant::CliPlant(CliRequest request, QObject *parent)
     , m_err(stderr)
 {}
 
+CliPlant::~CliPlant() = default;
+
 void CliPlant::start()
 {
     QString error;
     const std::optional<Plant> plant = PlantFile::load(m_plant.plantFile, &error);
     if (!plant)
         return end(2, error);
+    if (m_plant.action == PlantRequest::Action::History) {
+        const int exitCode = printPlantHistory(m_request, m_out, &error);
+        return end(exitCode, error);
+    }
+    // Before anything is sent: git missing, or a revision that is not there, is bad input.
+    if (m_plant.commit && !Git::isAvailable(&error))
+        return end(2, error);
+    QString directory = m_plant.directory;
+    if (!m_plant.at.isEmpty()) {
+        m_revision = extractRevision(m_plant.directory, m_plant.at, &m_revisionId, &error);
+        if (!m_revision)
+            return end(2, error);
+        directory = m_revision->path();
+    }
     const PlantRun::Task task = m_plant.action == PlantRequest::Action::Find ? PlantRun::Task::Find
                                 : m_plant.action == PlantRequest::Action::Backup
                                     ? PlantRun::Task::Backup
@@ -119,7 +144,7 @@ void CliPlant::start()
     if ((task == PlantRun::Task::Verify || task == PlantRun::Task::Download)
         && !QDir(m_plant.directory).exists())
         return end(2, tr("the directory %1 does not exist").arg(m_plant.directory));
-    m_run = new PlantRun(*plant, task, m_plant.directory, everyLink(), this);
+    m_run = new PlantRun(*plant, task, directory, everyLink(), this);
     ClientOptions options;
     options.timeoutMs = m_request.timeoutMs;
     m_run->setClientOptions(options);
@@ -160,10 +185,18 @@ void CliPlant::onProgress(const QString &link, int address, int percent, const Q
 
 void CliPlant::onFinished()
 {
-    const QList<PlantDrive> drives = m_run->drives();
+    QList<PlantDrive> drives = m_run->drives();
+    nameRevisionFiles(drives);
+    bool committed = true;
+    QString commitError;
     switch (m_plant.action) {
+    case PlantRequest::Action::History: break;
     case PlantRequest::Action::Find: printFind(drives); break;
-    case PlantRequest::Action::Backup: printBackup(drives); break;
+    case PlantRequest::Action::Backup:
+        printBackup(drives);
+        if (m_plant.commit && !m_interrupted)
+            committed = commitPlantBackup(m_plant, m_run->plant(), drives, m_out, &commitError);
+        break;
     case PlantRequest::Action::Verify:
         if (m_request.format == CliRequest::Format::Json)
             printVerifyJson(drives);
@@ -186,9 +219,23 @@ void CliPlant::onFinished()
     }
     if (m_interrupted)
         return end(130);
+    if (!committed)
+        return end(1, commitError);
     if (noneAnswered)
         return end(3, tr("no link answered"));
     end(allGood ? 0 : 1);
+}
+
+void CliPlant::nameRevisionFiles(QList<PlantDrive> &drives) const
+{
+    if (!m_revision)
+        return;
+    const QString folder = QDir::toNativeSeparators(m_revision->path() + QLatin1Char('/'));
+    const QString revision = m_revisionId.left(12) + QLatin1Char(':');
+    for (PlantDrive &drive : drives) {
+        drive.file = QDir::toNativeSeparators(drive.file).replace(folder, revision);
+        drive.reason.replace(folder, revision);
+    }
 }
 
 void CliPlant::printFind(const QList<PlantDrive> &drives)

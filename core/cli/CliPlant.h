@@ -7,6 +7,10 @@
 #include <QObject>
 #include <QTextStream>
 
+#include <memory>
+
+class QTemporaryDir;
+
 class QCommandLineParser;
 
 namespace DriveDesk {
@@ -29,6 +33,7 @@ class CliPlant : public QObject
     Q_OBJECT
 public:
     explicit CliPlant(CliRequest request, QObject *parent = nullptr);
+    ~CliPlant() override;
 
     void start();
     // Ctrl+C: every link stops after the value on its way; what was done is reported, and the
@@ -46,6 +51,9 @@ private:
     void printVerify(const QList<PlantDrive> &drives);
     void printVerifyJson(const QList<PlantDrive> &drives);
     void printDownload(const QList<PlantDrive> &drives);
+    // --at: the files named as in the revision ("3f2a1bc04e11:cabinet-5.json"), not by the
+    // temporary folder they were read from.
+    void nameRevisionFiles(QList<PlantDrive> &drives) const;
     // "3 of 5 drives saved; unreachable: dead (cannot connect ...)".
     void end(int exitCode, const QString &message = {});
 
@@ -54,6 +62,8 @@ private:
     PlantRun *m_run = nullptr;
     QTextStream m_out;
     QTextStream m_err;
+    std::unique_ptr<QTemporaryDir> m_revision; // --at: the revision's files
+    QString m_revisionId;
     QHash<QString, int> m_shown; // per drive: the last progress step printed
     bool m_finished = false;
     bool m_interrupted = false;

@@ -2,6 +2,7 @@
 
 #include "cli/CliJournal.h"
 #include "cli/CliPlant.h"
+#include "cli/CliPlantHistory.h"
 #include "cli/CliSpectrum.h"
 #include "cli/CommandLineUsage.h"
 #include "link/ConnectionOptions.h"
@@ -150,6 +151,7 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
                        dryRun, force, channels, duration, rate, csv, offline, version, update,
                        channel, from, to, peaks});
     addJournalOptions(parser);
+    addPlantHistoryOptions(parser);
     *helpText = cliUsage();
 
     // A negative value ("write uF.07 -5") is not an option: shield such words from the parser.
@@ -189,6 +191,8 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
             return std::nullopt;
         return plant;
     }
+    if (!refusePlantHistoryOptions(parser, error))
+        return std::nullopt;
     // The journal is read from its file, not from a drive (core/cli/CliJournal.cpp).
     if (first == QLatin1String("journal"))
         return parseJournalCommand(parser, connection, parser.positionalArguments(), error);

@@ -17,13 +17,19 @@ class ConnectionOptions;
 
 // `drivedesk-cli plant`: every drive of a plant file (docs/plant.md), its links from the file.
 struct PlantRequest {
-    enum class Action : quint8 { Find, Backup, Verify, Download };
+    enum class Action : quint8 { Find, Backup, Verify, Download, History };
     Action action = Action::Find;
     QString plantFile;
-    QString directory; // backup, verify: where the drives' parameter files are
+    QString directory; // backup, verify, history: where the drives' parameter files are
     bool update = false; // find: write the addresses found into the plant file
     bool dryRun = false; // download: show what would be written
     bool force = false;  // download: write although the checks found problems
+    // backup --commit [--message TEXT]: the backup committed to the directory's git repository
+    bool commit = false;
+    QString message;
+    QString at;          // verify, download --at REV: the files as they were at a revision
+    QString drive;       // history --drive NAME ("cabinet-5")
+    QString parameter;   // history --parameter ID
 };
 
 // `drivedesk-cli spectrum`: a channel's spectrum from a scope CSV export or recording file.

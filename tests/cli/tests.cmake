@@ -17,3 +17,6 @@ add_dependencies(tst_cliplant drivedesk-cli drivedesk-sim)
 drivedesk_add_test(NAME tst_clispectrum LABELS unit integration SOURCES cli/tst_clispectrum.cpp
     LIBS drivedesk_scope)
 add_dependencies(tst_clispectrum drivedesk-cli)
+drivedesk_add_test(NAME tst_cliplanthistory LABELS integration TIMEOUT 180
+    SOURCES cli/tst_cliplanthistory.cpp LIBS Qt6::Core Qt6::Network)
+add_dependencies(tst_cliplanthistory drivedesk-cli drivedesk-sim)
