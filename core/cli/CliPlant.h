@@ -1,11 +1,15 @@
 #pragma once
 
 #include "cli/CommandLine.h"
+#include "journal/Journal.h"
 #include "plant/PlantRun.h"
+#include "session/EditJournal.h"
 
 #include <QHash>
 #include <QObject>
 #include <QTextStream>
+
+#include <memory>
 
 class QCommandLineParser;
 
@@ -52,6 +56,8 @@ private:
     CliRequest m_request;
     PlantRequest m_plant;
     PlantRun *m_run = nullptr;
+    std::unique_ptr<Journal> m_journal; // a download's, unless --no-journal
+    std::unique_ptr<EditJournal> m_editJournal;
     QTextStream m_out;
     QTextStream m_err;
     QHash<QString, int> m_shown; // per drive: the last progress step printed

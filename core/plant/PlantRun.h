@@ -13,6 +13,8 @@
 
 namespace DriveDesk {
 
+class EditJournal;
+
 // What one drive of a plant came to in a PlantRun.
 struct PlantDrive
 {
@@ -89,6 +91,9 @@ public:
         m_force = force;
     }
 
+    // Download: every value written is journaled there; none: not journaled. Outlives the run.
+    void setJournal(EditJournal *journal) { m_journal = journal; }
+
     void start();
     // Ends every link after the value on its way; drives not done are Stopped.
     void stop();
@@ -133,6 +138,7 @@ private:
     QList<std::shared_ptr<LinkState>> m_links;
     bool m_dryRun = false;
     bool m_force = false;
+    EditJournal *m_journal = nullptr;
     bool m_stopping = false;
     bool m_started = false;
 };

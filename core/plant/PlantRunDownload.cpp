@@ -15,6 +15,7 @@ void PlantRun::download(LinkState &state, DriveClient *client, PlantDrive drive)
     DownloadOptions options;
     options.force = m_force;
     run->setOptions(options);
+    run->setJournal(m_journal);
     const auto end = [this, &state, run](const PlantDrive &done) {
         run->disconnect(this);
         run->deleteLater();
