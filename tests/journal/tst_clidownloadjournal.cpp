@@ -88,6 +88,12 @@ bool changeFile(const QString &path, const QStringList &ids, int step)
         && file.write(QJsonDocument(root).toJson()) > 0;
 }
 
+// A parameter's id as the parameter file has it: "dr.4" for the journal's "dr.04".
+QString fileId(const QString &id)
+{
+    return QStringLiteral("%1.%2").arg(id.section(QLatin1Char('.'), 0, 0)).arg(id.section(QLatin1Char('.'), 1).toInt());
+}
+
 // drivedesk-cli with a data folder of its own (where the default journal lives).
 Run cliWithData(const QStringList &arguments, const QString &home)
 {
@@ -229,13 +235,14 @@ private slots:
         QSet<QString> journaled;
         for (const JournalEntry &entry : entries) {
             const qsizetype set = entry.set.value_or(0);
-            const qint64 held = now.value(entry.parameterId).value(set, -1);
-            const QString what = QStringLiteral("%1 set %2: %3, holds %4").arg(entry.parameterId).arg(set).arg(entry.outcomeText()).arg(held);
-            journaled << QStringLiteral("%1/%2").arg(entry.parameterId).arg(set);
-            if (!ids.contains(entry.parameterId))
+            const QString id = fileId(entry.parameterId);
+            const qint64 held = now.value(id).value(set, -1);
+            const QString what = QStringLiteral("%1 set %2: %3, holds %4").arg(id).arg(set).arg(entry.outcomeText()).arg(held);
+            journaled << QStringLiteral("%1/%2").arg(id).arg(set);
+            if (!ids.contains(id))
                 continue; // written whatever the drive holds (Fr.09, ud.11)
-            QCOMPARE(entry.before.raw, before.value(entry.parameterId).value(set));
-            QCOMPARE(entry.written.raw, wanted.value(entry.parameterId).value(set));
+            QCOMPARE(entry.before.raw, before.value(id).value(set));
+            QCOMPARE(entry.written.raw, wanted.value(id).value(set));
             if (entry.outcome == JournalOutcome::Written) {
                 QVERIFY2(held == *entry.written.raw, qPrintable(what));
             } else {
