@@ -62,6 +62,11 @@ void WriteJournal::attach(DriveSession *session, EditController *edit)
     apply();
 }
 
+bool WriteJournal::isOn() const
+{
+    return m_action->isChecked();
+}
+
 void WriteJournal::apply()
 {
     if (!m_edit || !m_session)
