@@ -2,21 +2,29 @@
 // Per protocol and baud rate, on the simulated F5 whose metadata a first (cold) scan put into a
 // temporary cache: the upload (every value of the parameter list), then a download of that file
 // with kChanged values changed, split into reading the drive afresh and writing with read-back.
-// The user's cache is never read or written.
+// The user's cache is never read or written. Each download's write runs twice, on a fresh
+// drive: without the journal and with one (a temporary file), the entries begun before the
+// write and completed as the values come back; `bench_transfer [ROUNDS]` repeats it all and
+// prints each case's fastest, median and slowest write and the journal's share of the median.
 #include "bus/LinkFactory.h"
 #include "client/ClientTiming.h"
 #include "client/DriveClient.h"
+#include "journal/Journal.h"
 #include "parameters/ParameterList.h"
 #include "session/DownloadRun.h"
+#include "session/EditJournal.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QFutureWatcher>
+#include <QMap>
 #include <QStringList>
 #include <QTemporaryDir>
 #include <QTimer>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 
 using namespace DriveDesk;
@@ -29,6 +37,7 @@ constexpr int kChanged = 40; // values the download writes (op and dr sets)
 struct Case {
     Protocol protocol;
     qint32 baud;
+    bool journaled = false;
 };
 
 struct Traffic {
@@ -60,9 +69,31 @@ DriveDescription changed(DriveDescription file)
 class TransferBenchmark : public QObject
 {
 public:
-    explicit TransferBenchmark(QList<Case> cases)
+    TransferBenchmark(QList<Case> cases, Journal *journal)
         : m_cases(std::move(cases))
+        , m_journal(journal)
     {}
+
+    // Each case's write times: fastest, median, slowest, and the journal's share.
+    void summarize() const
+    {
+        std::printf("\nwrite with read-back, %lld round(s): fastest / median / slowest\n",
+                    qlonglong(m_writes.isEmpty() ? 0 : m_writes.first().size()));
+        for (auto it = m_writes.begin(); it != m_writes.end(); ++it) {
+            QList<double> times = it.value();
+            std::sort(times.begin(), times.end());
+            std::printf("  %-32s %6.1f / %6.1f / %6.1f ms", qPrintable(it.key()),
+                        times.first() * 1e3, median(times) * 1e3, times.last() * 1e3);
+            if (it.key().endsWith(QLatin1String("journal"))) {
+                const QString without = it.key().chopped(int(std::strlen(" journal")));
+                QList<double> plain = m_writes.value(without);
+                std::sort(plain.begin(), plain.end());
+                if (!plain.isEmpty())
+                    std::printf("  journal %+.1f %%", (median(times) / median(plain) - 1) * 100);
+            }
+            std::printf("\n");
+        }
+    }
 
     void next()
     {
@@ -132,9 +163,28 @@ private:
         watcher->setFuture(m_client->scan(options));
     }
 
+    static double median(const QList<double> &sorted)
+    {
+        const qsizetype n = sorted.size();
+        return n % 2 ? sorted.at(n / 2) : (sorted.at(n / 2 - 1) + sorted.at(n / 2)) / 2;
+    }
+
+    QString caseName() const
+    {
+        return QStringLiteral("%1 %2%3")
+            .arg(protocolName(m_case.protocol))
+            .arg(m_case.baud)
+            .arg(m_case.journaled ? QStringLiteral(" journal") : QString());
+    }
+
     void download(const DriveDescription &file)
     {
         auto *run = new DownloadRun(m_client.get(), m_case.protocol, file, this);
+        if (m_case.journaled) {
+            m_entries = std::make_unique<EditJournal>(m_journal, JournalDrive {},
+                                                      QStringLiteral("download of bench.json"));
+            run->setJournal(m_entries.get());
+        }
         m_timer.start();
         m_traffic = {};
         connect(run, &DownloadRun::planned, this, [this, run](const DownloadPlan &plan) {
@@ -151,7 +201,8 @@ private:
             QCoreApplication::exit(1);
         });
         connect(run, &DownloadRun::finished, this, [this, run](const DownloadReport &report) {
-            print("download: write", m_values);
+            m_writes[caseName()] << m_timer.nsecsElapsed() / 1e9;
+            print(m_case.journaled ? "download: write+j" : "download: write", m_values);
             m_writing = false;
             for (const QString &line : std::as_const(m_log))
                 std::printf("    %s\n", qPrintable(line));
@@ -186,6 +237,9 @@ private:
     }
 
     QList<Case> m_cases;
+    Journal *const m_journal;
+    std::unique_ptr<EditJournal> m_entries; // the journaled download's
+    QMap<QString, QList<double>> m_writes; // per case: each round's write, in seconds
     qsizetype m_index = 0;
     Case m_case{};
     ConnectionSettings m_settings;
@@ -207,9 +261,26 @@ int main(int argc, char **argv)
 {
     QCoreApplication app(argc, argv);
     std::printf("count: parameters read, or values written\n");
-    TransferBenchmark benchmark({ { Protocol::Hsp5, 38400 },
-                                  { Protocol::Hsp5, 115200 },
-                                  { Protocol::Din66019II, 38400 } });
+    const int rounds = argc > 1 ? std::max(1, QString::fromLocal8Bit(argv[1]).toInt()) : 1;
+    QTemporaryDir folder;
+    Journal journal(folder.filePath(QStringLiteral("journal.sqlite")));
+    if (!journal.open()) {
+        std::fprintf(stderr, "%s\n", qPrintable(journal.errorString()));
+        return 1;
+    }
+    QList<Case> cases;
+    for (int round = 0; round < rounds; ++round) {
+        for (const Case &line : { Case { Protocol::Hsp5, 38400 }, Case { Protocol::Hsp5, 115200 },
+                                  Case { Protocol::Din66019II, 38400 } }) {
+            // Alternating, so that a change in the machine's load falls on both alike.
+            const bool journalFirst = round % 2 == 1;
+            cases << Case { line.protocol, line.baud, journalFirst }
+                  << Case { line.protocol, line.baud, !journalFirst };
+        }
+    }
+    TransferBenchmark benchmark(cases, &journal);
     QTimer::singleShot(0, &benchmark, [&benchmark] { benchmark.next(); });
-    return app.exec();
+    const int code = app.exec();
+    benchmark.summarize();
+    return code;
 }

@@ -9,6 +9,7 @@
 
 #include <QCommandLineParser>
 #include <QDir>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -153,6 +154,19 @@ void CliPlant::start()
     m_run->setReading(reading);
     m_run->setLanguage(m_request.connection.language);
     m_run->setDownloadOptions(m_plant.dryRun, m_plant.force);
+    if (task == PlantRun::Task::Download && !m_plant.dryRun && m_request.journalWrites) {
+        // Before any drive is read: a journal that cannot be written stops every download
+        // before anything is written.
+        m_journal = std::make_unique<Journal>(m_request.journalPath);
+        if (!m_journal->open())
+            return end(1, tr("nothing was written: %1 (--no-journal downloads without it)")
+                              .arg(m_journal->errorString()));
+        m_editJournal = std::make_unique<EditJournal>(
+            m_journal.get(), JournalDrive {},
+            tr("plant download of %1").arg(QFileInfo(m_plant.plantFile).fileName()));
+        m_editJournal->setRemedy(tr("--no-journal downloads without it"));
+        m_run->setJournal(m_editJournal.get());
+    }
     connect(m_run, &PlantRun::progress, this, &CliPlant::onProgress);
     connect(m_run, &PlantRun::finished, this, &CliPlant::onFinished, Qt::QueuedConnection);
     m_run->start();

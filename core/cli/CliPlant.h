@@ -1,7 +1,9 @@
 #pragma once
 
 #include "cli/CommandLine.h"
+#include "journal/Journal.h"
 #include "plant/PlantRun.h"
+#include "session/EditJournal.h"
 
 #include <QHash>
 #include <QObject>
@@ -60,6 +62,8 @@ private:
     CliRequest m_request;
     PlantRequest m_plant;
     PlantRun *m_run = nullptr;
+    std::unique_ptr<Journal> m_journal; // a download's, unless --no-journal
+    std::unique_ptr<EditJournal> m_editJournal;
     QTextStream m_out;
     QTextStream m_err;
     std::unique_ptr<QTemporaryDir> m_revision; // --at: the revision's files

@@ -6,9 +6,9 @@
 #include "journal/Journal.h"
 #include "parameters/ParameterFormat.h"
 #include "parameters/ParameterId.h"
+#include "session/EditJournal.h"
 #include "state/DriveState.h"
 #include "state/EditCheck.h"
-#include "state/EditJournal.h"
 #include "state/EditText.h"
 #include "state/ValueEdits.h"
 

@@ -15,10 +15,10 @@
 #include "parameters/ParameterId.h"
 #include "parameters/ParameterProperties.h"
 #include "scope/ScopeRecording.h"
+#include "session/EditJournal.h"
 #include "session/PasswordLevelJob.h"
 #include "session/ScopeRecorder.h"
 #include "state/DriveState.h"
-#include "state/EditJournal.h"
 #include "state/ValueEdits.h"
 
 #include <QFutureWatcher>

@@ -99,7 +99,7 @@ private:
     // What the command knows of the drive: the parameter it reads or writes, and the edit's
     // outcome, as the window's state holds them.
     DriveState *m_state = nullptr;
-    std::unique_ptr<Journal> m_journal;          // a write's, unless --no-journal
+    std::unique_ptr<Journal> m_journal; // a write's or a download's, unless --no-journal
     std::unique_ptr<EditJournal> m_editJournal;
     QTextStream m_out;
     QTextStream m_err;

@@ -2,10 +2,14 @@
 #include "CliRunner.h"
 
 #include "cli/CliPlant.h"
+#include "journal/Journal.h"
 #include "parameters/ParameterList.h"
 #include "session/DownloadRun.h"
+#include "session/EditJournal.h"
 #include "session/ScopeRecorder.h"
 #include "session/UploadRun.h"
+
+#include <QFileInfo>
 
 #include <unistd.h>
 
@@ -92,6 +96,19 @@ void CliRunner::runDownload()
     options.sets = m_request.setMask;
     options.force = m_request.force;
     m_download->setOptions(options);
+    if (m_request.journalWrites && !m_request.dryRun) {
+        // Before the drive is read: a journal that cannot be written stops the download
+        // before anything is.
+        QString error;
+        if (!openJournal(&error))
+            return fail(1, tr("nothing was written: %1 (--no-journal downloads without it)")
+                               .arg(error));
+        m_editJournal = std::make_unique<EditJournal>(
+            m_journal.get(), JournalDrive {},
+            tr("download of %1").arg(QFileInfo(m_request.files.constFirst()).fileName()));
+        m_editJournal->setRemedy(tr("--no-journal downloads without it"));
+        m_download->setJournal(m_editJournal.get());
+    }
     connect(m_download, &DownloadRun::progress, this,
             [this](int done, int total, const QString &what) {
                 progressLine(done * 100 / std::max(1, total), what);

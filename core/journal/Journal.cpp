@@ -330,6 +330,26 @@ bool Journal::complete(qint64 id, const JournalValue &readBack, JournalOutcome o
     return true;
 }
 
+bool Journal::transaction(const std::function<bool()> &work)
+{
+    if (m_inTransaction)
+        return work();
+    if (!isOpen() || m_access != Access::Write)
+        return fail(tr("the journal %1 is not open for writing").arg(m_path));
+    QSqlQuery query(QSqlDatabase::database(m_connection, false));
+    if (!query.exec(QStringLiteral("BEGIN IMMEDIATE")))
+        return fail(JournalProblem::of(m_path, query.lastError(), m_busyTimeoutMs));
+    m_inTransaction = true;
+    const bool done = work();
+    m_inTransaction = false;
+    if (done && query.exec(QStringLiteral("COMMIT")))
+        return true;
+    const QString error
+        = done ? JournalProblem::of(m_path, query.lastError(), m_busyTimeoutMs) : m_error;
+    query.exec(QStringLiteral("ROLLBACK"));
+    return fail(error);
+}
+
 std::optional<QList<JournalEntry>> Journal::entries(const JournalFilter &filter)
 {
     if (!isOpen()) {

@@ -7,6 +7,7 @@
 #include <QList>
 #include <QString>
 
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -71,6 +72,11 @@ public:
     bool complete(qint64 id, const JournalValue &readBack, JournalOutcome outcome,
                   const QString &reason = {});
 
+    // Runs `work` as one transaction: the entries it begins and completes are stored together,
+    // or not at all where it returns false; one commit for many entries instead of one each.
+    // A call inside `work` joins the transaction. False, with errorString(), when it failed.
+    bool transaction(const std::function<bool()> &work);
+
     // The entries the filter lets through, in the order they were begun (newest last), or
     // nothing when the journal cannot be read.
     std::optional<QList<JournalEntry>> entries(const JournalFilter &filter = {});
@@ -87,6 +93,7 @@ private:
     int m_busyTimeoutMs = kDefaultBusyTimeoutMs;
     Access m_access = Access::Write;
     int m_entriesSinceCheckpoint = 0;
+    bool m_inTransaction = false;
     std::unique_ptr<Statements> m_statements; // set while open
     std::unique_ptr<JournalCheckpointer> m_checkpointer; // from the first checkpoint on
     QString m_error;

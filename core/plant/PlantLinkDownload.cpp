@@ -13,6 +13,7 @@ void PlantLinkRun::download(PlantDrive drive)
     DownloadOptions options;
     options.force = m_job.force;
     run->setOptions(options);
+    run->setJournal(m_job.journal);
     connect(run, &DownloadRun::progress, this,
             [this, address = drive.address](int done, int total, const QString &what) {
                 emit progress(address, done * 100 / std::max(1, total), what);

@@ -23,6 +23,7 @@ struct PlantJob
     Language language = Language::English;
     bool dryRun = false; // download: plan only
     bool force = false;  // download: write despite the checks
+    EditJournal *journal = nullptr; // download: where each value written is journaled
 };
 
 // One link of a plant at work, over one connection and one client for every drive on it: a

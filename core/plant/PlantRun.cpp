@@ -54,6 +54,7 @@ void PlantRun::start()
     job.language = m_language;
     job.dryRun = m_dryRun;
     job.force = m_force;
+    job.journal = m_journal;
     for (qsizetype i = 0; i < m_plant.links.size(); ++i) {
         auto *link = new PlantLinkRun(m_plant.links.at(i), job, this);
         const QString name = m_plant.links.at(i).name;

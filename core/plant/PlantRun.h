@@ -13,6 +13,7 @@
 
 namespace DriveDesk {
 
+class EditJournal;
 class PlantLinkRun;
 
 // What one drive of a plant came to in a PlantRun.
@@ -91,6 +92,9 @@ public:
         m_force = force;
     }
 
+    // Download: every value written is journaled there; none: not journaled. Outlives the run.
+    void setJournal(EditJournal *journal) { m_journal = journal; }
+
     void start();
     // Ends every link after the value on its way; drives not done are Stopped.
     void stop();
@@ -122,6 +126,7 @@ private:
     int m_linksRunning = 0;
     bool m_dryRun = false;
     bool m_force = false;
+    EditJournal *m_journal = nullptr;
     bool m_stopping = false;
     bool m_started = false;
 };

@@ -1,5 +1,6 @@
 #include "DownloadRun.h"
 
+#include "parameters/SetList.h"
 #include "session/WriteChangesJob.h"
 
 namespace DriveDesk {
@@ -21,6 +22,8 @@ DownloadRun::DownloadRun(DriveClient *client, Protocol protocol, DriveDescriptio
                 emit progress(written, int(m_plan.items.size()),
                               tr("writing %1 of %2").arg(written).arg(m_plan.items.size()));
             });
+    connect(&m_writing, &QFutureWatcher<WriteOutcome>::resultsReadyAt, this,
+            &DownloadRun::completeJournal);
     connect(&m_writing, &QFutureWatcher<WriteOutcome>::finished, this, &DownloadRun::onWritten);
 }
 
@@ -81,6 +84,11 @@ void DownloadRun::write()
         m_stage = Stage::Done;
         return emit failed(tr("the drive is no longer connected; nothing was written"));
     }
+    if (QString error; m_journal && !beginJournal(&error)) {
+        m_stage = Stage::Done;
+        return emit failed(
+            tr("the journal cannot record the download: %1; nothing was written").arg(error));
+    }
     m_stage = Stage::Writing;
     QList<ValueChange> changes;
     QList<WriteOrder> order;
@@ -90,6 +98,52 @@ void DownloadRun::write()
     }
     m_job = std::make_shared<WriteChangesJob>(m_protocol, changes, order);
     m_writing.setFuture(m_client->run(m_job, m_driveAddress));
+}
+
+const ParameterDescription *DownloadRun::parameterOf(const DownloadItem &item) const
+{
+    // The plan writes what the drive described; a forced download may write what only the
+    // file describes.
+    const ParameterDescription *parameter = m_drive.find(item.change.address);
+    return parameter ? parameter : m_file.find(item.change.address);
+}
+
+bool DownloadRun::beginJournal(QString *error)
+{
+    if (m_plan.items.isEmpty())
+        return true; // nothing written, no job in the journal
+    QList<EditJournal::Write> writes;
+    for (const DownloadItem &item : std::as_const(m_plan.items)) {
+        const ParameterDescription *parameter = parameterOf(item);
+        if (!parameter) {
+            *error = tr("%1 is not described").arg(item.id);
+            return false;
+        }
+        EditJournal::Write write { item.id, parameter, item.change.steps, item.before };
+        for (WriteStep &step : write.steps)
+            step.setMask = SetList::setsWritten(item.change.setProgrammable, step.setMask);
+        writes << write;
+    }
+    const std::optional<QList<QList<EditJournal::Entry>>> begun
+        = m_journal->begin(EditJournal::driveOf(m_client->settings(), m_drive), writes, error);
+    if (!begun)
+        return false;
+    m_journaled = *begun;
+    return true;
+}
+
+void DownloadRun::completeJournal(int begin, int end)
+{
+    if (m_journaled.isEmpty())
+        return;
+    const QFuture<WriteOutcome> future = m_writing.future();
+    m_journal->completeTogether([&] {
+        for (int index = begin; index < end && index < int(m_journaled.size()); ++index) {
+            m_journal->complete(*parameterOf(m_plan.items.at(index)), m_journaled.at(index),
+                                future.resultAt(index));
+            m_journaled[index].clear(); // completed
+        }
+    });
 }
 
 void DownloadRun::stop()
@@ -121,6 +175,31 @@ void DownloadRun::onWritten()
     }
     if (m_stopped)
         stopReason = tr("stopped by the user");
+    if (m_journal && !m_journaled.isEmpty()) {
+        // An item without an outcome was never sent: the drive holds what it held.
+        m_journal->completeTogether([&] {
+            for (int i = 0; i < int(outcomes.size()); ++i) {
+                if (m_journaled.at(i).isEmpty())
+                    continue;
+                const DownloadItem &item = m_plan.items.at(i);
+                if (outcomes[i]) {
+                    m_journal->complete(*parameterOf(item), m_journaled.at(i), *outcomes[i]);
+                    continue;
+                }
+                quint8 mask = 0;
+                for (const WriteStep &step : item.change.steps)
+                    mask |= step.setMask ? SetList::setsWritten(item.change.setProgrammable,
+                                                                step.setMask)
+                                         : quint8(1);
+                m_journal->complete(
+                    *parameterOf(item), m_journaled.at(i),
+                    EditJournal::notSent(item.change.address, mask,
+                                         stopReason.isEmpty() ? tr("the download ended first")
+                                                              : stopReason));
+            }
+        });
+        m_journaled.clear();
+    }
     m_job.reset();
     m_stage = Stage::Done;
     emit finished(reportDownload(m_plan, outcomes, stopReason, m_drive));

@@ -3,6 +3,7 @@
 #include "client/DriveClient.h"
 #include "session/DownloadPlan.h"
 #include "session/DownloadReport.h"
+#include "session/EditJournal.h"
 
 #include <QFutureWatcher>
 #include <QObject>
@@ -30,6 +31,11 @@ public:
                 QObject *parent = nullptr);
     ~DownloadRun() override;
 
+    // Every value write() writes is journaled there (docs/journal.md): its entry begun before
+    // anything is sent, completed with its outcome; a journal that cannot take the entries
+    // stops the download unsent. None: not journaled. The journal outlives the run.
+    void setJournal(EditJournal *journal) { m_journal = journal; }
+
     // Reads the drive as `reading` says (where its metadata comes from), with the values of
     // every set, then plans.
     void start(ScanOptions reading = {});
@@ -56,6 +62,10 @@ signals:
 private:
     void onRead();
     void onWritten();
+    // Begins the entries of every item of the plan; false and why when the journal cannot.
+    bool beginJournal(QString *error);
+    const ParameterDescription *parameterOf(const DownloadItem &item) const;
+    void completeJournal(int begin, int end);
 
     const QPointer<DriveClient> m_client; // gone with its session: the run then ends
     const Protocol m_protocol;
@@ -69,6 +79,8 @@ private:
     QFutureWatcher<WriteOutcome> m_writing;
     std::shared_ptr<WriteChangesJob> m_job;
     int m_driveAddress = -1; // the drive on the client's bus, as start() was told (ScanOptions)
+    EditJournal *m_journal = nullptr;
+    QList<QList<EditJournal::Entry>> m_journaled; // per item of the plan, while writing
 };
 
 } // namespace DriveDesk

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "state/EditJournal.h"
+#include "session/EditJournal.h"
 #include "state/EditOutcome.h"
 #include "state/StateEditor.h"
 

@@ -270,10 +270,34 @@ private slots:
         Run read = cli(drive5);
         QVERIFY2(read.out.contains(QStringLiteral("2500 1/min")), qPrintable(explain(read)));
 
+        const QString journal = m_dir.filePath(QStringLiteral("plant-journal.sqlite"));
         run = cli({QStringLiteral("plant"), QStringLiteral("download"), m_live, m_backups,
-                   QStringLiteral("--quiet")});
+                   QStringLiteral("--quiet"), QStringLiteral("--journal"), journal});
         QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
         QVERIFY2(run.out.contains(QStringLiteral("cabinet-5: written\n")), qPrintable(run.out));
+        // Each value written has its entry, of drive 5 alone: the others were not written to.
+        const Run journaled = cli({QStringLiteral("journal"), QStringLiteral("--journal"), journal,
+                                   QStringLiteral("--format"), QStringLiteral("json")});
+        QVERIFY2(journaled.exitCode == 0, qPrintable(explain(journaled)));
+        const QJsonArray entries = QJsonDocument::fromJson(journaled.out.toUtf8()).array();
+        QVERIFY2(!entries.isEmpty(), qPrintable(journaled.out));
+        int maximumSpeed = 0;
+        for (const QJsonValue &value : entries) {
+            const QJsonObject entry = value.toObject();
+            QCOMPARE(entry.value(QStringLiteral("job")).toObject().value(QStringLiteral("description")).toString(),
+                     QStringLiteral("plant download of live.json"));
+            QCOMPARE(entry.value(QStringLiteral("drive")).toObject().value(QStringLiteral("address")).toInt(), 5);
+            QCOMPARE(entry.value(QStringLiteral("outcome")).toString(), QStringLiteral("written"));
+            if (entry.value(QStringLiteral("parameter")).toObject().value(QStringLiteral("id")).toString()
+                != QLatin1String("op.11"))
+                continue;
+            ++maximumSpeed;
+            QCOMPARE(entry.value(QStringLiteral("set")).toInt(), 2);
+            QCOMPARE(entry.value(QStringLiteral("before")).toObject().value(QStringLiteral("raw")).toInt(), 2500);
+            QCOMPARE(entry.value(QStringLiteral("written")).toObject().value(QStringLiteral("raw")).toInt(), 3000);
+            QCOMPARE(entry.value(QStringLiteral("readBack")).toObject().value(QStringLiteral("raw")).toInt(), 3000);
+        }
+        QCOMPARE(maximumSpeed, 1);
         for (const QString &drive : {QStringLiteral("cabinet-2"), QStringLiteral("cabinet-9"),
                                      QStringLiteral("hoist")}) {
             QVERIFY2(run.out.contains(QStringLiteral("%1: already equal, nothing written\n").arg(drive)),

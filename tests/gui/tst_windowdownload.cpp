@@ -1,5 +1,6 @@
 #include "tst_mainwindow_support.h"
 
+#include "journal/Journal.h"
 #include "parameters/ParameterDocument.h"
 #include "transfer/DownloadDialog.h"
 #include "transfer/DownloadFeature.h"
@@ -20,6 +21,7 @@
 #include <QStatusBar>
 #include <QTreeWidget>
 
+#include <algorithm>
 #include <memory>
 
 using namespace DriveDesk;
@@ -92,6 +94,26 @@ private:
         return rows;
     }
 
+    // The window's journal's entries after the entry `after` (the journal outlives the test).
+    static QList<JournalEntry> journalEntries(qint64 after = 0)
+    {
+        Journal journal; // the default one, in the test's own data folder
+        QList<JournalEntry> found;
+        if (!journal.open(Journal::Access::Read))
+            return found;
+        for (const JournalEntry &entry : journal.entries().value_or(QList<JournalEntry>())) {
+            if (entry.id > after)
+                found << entry;
+        }
+        return found;
+    }
+
+    static qint64 lastEntry()
+    {
+        const QList<JournalEntry> entries = journalEntries();
+        return entries.isEmpty() ? 0 : entries.constLast().id;
+    }
+
     bool planned() const
     {
         return QTest::qWaitFor(
@@ -153,6 +175,53 @@ private slots:
         dialog()->reject();
         QTRY_VERIFY(!dialog());
         QTRY_VERIFY(action->isEnabled());
+    }
+
+    // Drive > Journal Every Write on (as it is unless turned off): each value the download
+    // writes has its entry in the window's journal, as the drive took it; off: none.
+    void theDownloadIsJournaledWhileJournalEveryWriteIsOn()
+    {
+        const QString file = fileWith(QStringLiteral("journaled.json"), [](DriveDescription &d) {
+            setValue(d, kFixedSpeed1, 5, 555);
+        });
+        QVERIFY(!file.isEmpty());
+        auto *journalAction = m_window->findChild<QAction *>(QStringLiteral("journalWritesAction"));
+        QVERIFY(journalAction->isChecked());
+        const qint64 last = lastEntry();
+        feature()->downloadFile(file);
+        QVERIFY(planned());
+        QVERIFY(writeAndFinish());
+        QCOMPARE(onDrive(kFixedSpeed1, 5), 555);
+        const QList<JournalEntry> entries = journalEntries(last);
+        QCOMPARE(entries.size(), dialog()->run()->plan().valueCount());
+        const auto fixedSpeed = std::find_if(entries.begin(), entries.end(), [](const JournalEntry &e) {
+            return e.parameterAddress == kFixedSpeed1;
+        });
+        QVERIFY(fixedSpeed != entries.end());
+        QCOMPARE(fixedSpeed->jobDescription, QStringLiteral("download of journaled.json"));
+        QCOMPARE(fixedSpeed->set, 5);
+        QCOMPARE(fixedSpeed->before.raw, 100);
+        QCOMPARE(fixedSpeed->written.raw, 555);
+        QCOMPARE(fixedSpeed->readBack.raw, 555);
+        QCOMPARE(fixedSpeed->outcome, JournalOutcome::Written);
+        QCOMPARE(fixedSpeed->drive.link, m_window->session()->settings().target());
+        QVERIFY(!fixedSpeed->drive.serialNumber.isEmpty());
+        dialog()->reject();
+        QTRY_VERIFY(!dialog());
+
+        journalAction->setChecked(false);
+        const QString unjournaled = fileWith(QStringLiteral("unjournaled.json"), [](DriveDescription &d) {
+            setValue(d, kFixedSpeed1, 6, 666);
+        });
+        QVERIFY(!unjournaled.isEmpty());
+        const qint64 lastBefore = lastEntry();
+        feature()->downloadFile(unjournaled);
+        QVERIFY(planned());
+        QVERIFY(writeAndFinish());
+        QCOMPARE(onDrive(kFixedSpeed1, 6), 666);
+        QVERIFY(journalEntries(lastBefore).isEmpty());
+        dialog()->reject();
+        QTRY_VERIFY(!dialog());
     }
 
     void aFileOfAnotherDriveNeedsTheChecksOverruled()

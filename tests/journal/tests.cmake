@@ -26,3 +26,13 @@ add_dependencies(tst_clijournal drivedesk-cli)
 drivedesk_add_test(NAME tst_journalwrites LABELS integration SOURCES journal/tst_journalwrites.cpp
     LIBS drivedesk_journal drivedesk_cli)
 add_dependencies(tst_journalwrites drivedesk-cli drivedesk-sim)
+
+# The download journals what it writes: DownloadRun in process against the simulated drive, read
+# again, and stopped half way.
+drivedesk_add_test(NAME tst_journaldownload LABELS integration
+    SOURCES journal/tst_journaldownload.cpp LIBS drivedesk_session drivedesk_bus)
+# drivedesk-cli download against drivedesk-sim: journaled, killed half way, with a journal that
+# cannot be written, and without one.
+drivedesk_add_test(NAME tst_clidownloadjournal LABELS integration
+    SOURCES journal/tst_clidownloadjournal.cpp LIBS drivedesk_journal)
+add_dependencies(tst_clidownloadjournal drivedesk-cli drivedesk-sim)

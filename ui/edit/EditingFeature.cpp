@@ -264,4 +264,9 @@ int EditingFeature::activeSet() const
     return frame().session() ? frame().session()->activeSet() : -1;
 }
 
+bool EditingFeature::journalsWrites() const
+{
+    return m_journal->isOn();
+}
+
 } // namespace DriveDesk

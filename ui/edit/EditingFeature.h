@@ -28,6 +28,8 @@ public:
     // A higher password level opens values the drive refused until now: they are read at once,
     // not left as "?" until the next refresh.
     void readOpenedValues(DriveDesk::PasswordLevel from, DriveDesk::PasswordLevel to);
+    // Drive > Journal Every Write is on: every value the window writes is journaled.
+    bool journalsWrites() const;
 
 private:
     void resetToDefault();

@@ -5,8 +5,8 @@
 #include "frame/DriveSession.h"
 #include "frame/WindowFrame.h"
 #include "journal/Journal.h"
+#include "session/EditJournal.h"
 #include "state/DriveState.h"
-#include "state/EditJournal.h"
 
 #include <QAction>
 #include <QMenu>
@@ -60,6 +60,11 @@ void WriteJournal::attach(DriveSession *session, EditController *edit)
         });
     }
     apply();
+}
+
+bool WriteJournal::isOn() const
+{
+    return m_action->isChecked();
 }
 
 void WriteJournal::apply()

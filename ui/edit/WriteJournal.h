@@ -30,6 +30,8 @@ public:
     // The session's edits from now on; none: no session.
     void attach(DriveSession *session, EditController *edit);
     QAction *action() const { return m_action; }
+    // Drive > Journal Every Write: the window's writes are journaled.
+    bool isOn() const;
 
 private:
     void apply();

@@ -7,6 +7,7 @@
 #include "edit/SetsFeature.h"
 #include "files/ParameterFileFeature.h"
 #include "monitor/MonitorFeature.h"
+#include "plant/PlantDock.h"
 #include "plant/PlantFeature.h"
 #include "scope/ScopeFeature.h"
 #include "transfer/DownloadFeature.h"
@@ -38,6 +39,8 @@ QList<WindowFeature *> makeWindowFeatures(WindowFrame &frame)
     QObject::connect(access, &AccessFeature::levelRaised, editing,
                      &EditingFeature::readOpenedValues);
     features << editing << access;
+    // The download journals its writes as the edits do, by the one setting.
+    download->setJournaled([editing] { return editing->journalsWrites(); });
     features << QList<WindowFeature *>{
         new MonitorFeature(frame),
         new ScopeFeature(frame),
@@ -55,6 +58,7 @@ QList<WindowFeature *> makeWindowFeatures(WindowFrame &frame)
                          window->setReading(false, fileB, nameB);
                          window->compare();
                      });
+    plant->dock()->setJournaled([editing] { return editing->journalsWrites(); });
     features << plant;
     return features;
 }

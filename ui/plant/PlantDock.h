@@ -8,6 +8,7 @@
 #include <QPointer>
 #include <QTemporaryDir>
 
+#include <functional>
 #include <memory>
 
 class QAction;
@@ -50,6 +51,9 @@ public:
     PlantReportDialog *reportDialog() const { return m_report; }
     // How the jobs' clients wait for an answer (a search asks 240 addresses with this wait).
     void setClientOptions(const ClientOptions &options) { m_clientOptions = options; }
+    // Asked at each Download All: journal what it writes (Drive > Journal Every Write), into
+    // the window's journal. Unset: not journaled.
+    void setJournaled(std::function<bool()> journaled) { m_journaled = std::move(journaled); }
 
     QAction *findAction() const { return m_findAction; }
     QAction *backupAction() const { return m_backupAction; }
@@ -101,6 +105,7 @@ private:
     Plant m_jobPlant; // the plant the job at work was given
     Job m_job = Job::None;
     ClientOptions m_clientOptions;
+    std::function<bool()> m_journaled;
     std::unique_ptr<QTemporaryDir> m_compareFiles; // the two drives read for a comparison
     QPointer<PlantReportDialog> m_report;
 

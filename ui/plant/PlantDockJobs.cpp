@@ -7,10 +7,12 @@
 #include "bus/LinkFactory.h"
 #include "frame/DriveSession.h"
 #include "frame/FrameSupport.h"
+#include "frame/RunJournal.h"
 #include "frame/WindowFeature.h"
 
 #include <QAction>
 #include <QDir>
+#include <QFileInfo>
 #include <QLabel>
 #include <QLocale>
 #include <QTime>
@@ -35,6 +37,10 @@ void PlantDock::startJob(Job job, const Plant &plant, const QString &directory)
     run->setReading(reading);
     run->setLanguage(m_frame.language());
     run->setDownloadOptions(job == Job::DownloadLook, false);
+    if (job == Job::Download && m_journaled && m_journaled()) {
+        run->setJournal(RunJournal::attach(
+            run, tr("plant download of %1").arg(QFileInfo(m_path).fileName())));
+    }
     connect(run, &PlantRun::progress, this, &PlantDock::onProgress);
     connect(run, &PlantRun::driveDone, this, [this](const PlantDrive &done) {
         const PlantDrive drive = explained(done);

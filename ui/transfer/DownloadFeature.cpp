@@ -5,10 +5,12 @@
 #include "frame/DriveSession.h"
 #include "frame/FileProblem.h"
 #include "frame/FrameSupport.h"
+#include "frame/RunJournal.h"
 #include "parameters/ParameterDocument.h"
 
 #include <QAction>
 #include <QDir>
+#include <QFileInfo>
 #include <QMenu>
 
 namespace DriveDesk {
@@ -62,20 +64,21 @@ void DownloadFeature::downloadFile(const QString &path)
         showFileProblem(frame().frameWidget(), tr("Download File to Drive"), text);
         return;
     }
-    download(*file, {}, tr("the values of %1").arg(QDir::toNativeSeparators(path)));
+    download(*file, {}, tr("the values of %1").arg(QDir::toNativeSeparators(path)),
+             tr("download of %1").arg(QFileInfo(path).fileName()));
 }
 
 void DownloadFeature::downloadSelection(const DriveDescription &selection, const QString &source)
 {
     DownloadOptions options;
     options.selection = true;
-    download(selection, options,
-             source.isEmpty() ? tr("the values chosen in the compare window")
-                              : tr("the values chosen from %1").arg(source));
+    const QString what = source.isEmpty() ? tr("the values chosen in the compare window")
+                                          : tr("the values chosen from %1").arg(source);
+    download(selection, options, what, tr("download of %1").arg(what));
 }
 
 void DownloadFeature::download(const DriveDescription &file, const DownloadOptions &options,
-                               const QString &source)
+                               const QString &source, const QString &job)
 {
     DriveSession *session = frame().session();
     if (!frame().isReady() || !session || isBusy()) {
@@ -85,6 +88,8 @@ void DownloadFeature::download(const DriveDescription &file, const DownloadOptio
     }
     auto *run = new DownloadRun(session->client(), session->settings().protocol, file);
     run->setOptions(options);
+    if (m_journaled && m_journaled())
+        run->setJournal(RunJournal::attach(run, job));
     m_dialog = new DownloadDialog(run, source, frame().frameWidget());
     connect(m_dialog, &DownloadDialog::wrote, this, [this] {
         // The table shows what the drive holds now, read again.

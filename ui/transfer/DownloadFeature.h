@@ -6,6 +6,8 @@
 
 #include <QPointer>
 
+#include <functional>
+
 class QAction;
 
 namespace DriveDesk {
@@ -28,14 +30,19 @@ public:
     void downloadFile(const QString &path);
     void downloadSelection(const DriveDescription &selection, const QString &source = {});
     DownloadDialog *dialog() const;
+    // Asked at each download: journal its writes (Drive > Journal Every Write), into the
+    // window's journal. Unset: not journaled.
+    void setJournaled(std::function<bool()> journaled) { m_journaled = std::move(journaled); }
 
 private:
     bool isBusy() const; // a download dialog is open
+    // `job`: how the journal names it ("download of f5.json").
     void download(const DriveDescription &file, const DownloadOptions &options,
-                  const QString &source);
+                  const QString &source, const QString &job);
 
     QAction *m_action = nullptr;
     QPointer<DownloadDialog> m_dialog;
+    std::function<bool()> m_journaled;
 };
 
 } // namespace DriveDesk
