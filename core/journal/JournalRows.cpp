@@ -107,6 +107,18 @@ JournalSelect journalSelect(const JournalFilter &filter)
         conditions << QStringLiteral("e.time_utc_ms < ?");
         select.values << filter.until().toMSecsSinceEpoch();
     }
+    if (!filter.entries().isEmpty()) {
+        QStringList marks;
+        for (const qint64 id : filter.entries()) {
+            marks << QStringLiteral("?");
+            select.values << id;
+        }
+        conditions << QStringLiteral("e.id IN (%1)").arg(marks.join(QLatin1Char(',')));
+    }
+    if (filter.afterEntry() > 0) {
+        conditions << QStringLiteral("e.id > ?");
+        select.values << filter.afterEntry();
+    }
     if (!filter.user().isEmpty()) {
         conditions << QStringLiteral("e.user = ?");
         select.values << filter.user();
