@@ -65,12 +65,14 @@ std::optional<CliRequest> parseJournalCommand(const QCommandLineParser &parser,
                                               const ConnectionOptions &connection,
                                               const QStringList &positional, QString *error)
 {
+    if (positional.value(1).compare(QLatin1String("revert"), Qt::CaseInsensitive) == 0)
+        return parseJournalRevert(parser, connection, positional, error);
     if (!refuseDriveOptions(parser, connection, QStringLiteral("journal"),
                             QStringLiteral("reads the journal's file"), error))
         return std::nullopt;
     if (positional.size() != 1) {
-        *error = QStringLiteral("journal takes no arguments: filter with --drive, --parameter, "
-                                "--since, --until or --user");
+        *error = QStringLiteral("journal takes no arguments but revert: filter with --drive, "
+                                "--parameter, --since, --until or --user");
         return std::nullopt;
     }
     CliRequest request;

@@ -86,11 +86,16 @@ void CliRunner::runUpload()
 // The window's download runs the same DownloadRun: read the drive, plan, write, report.
 void CliRunner::runDownload()
 {
-    m_download = new DownloadRun(m_client.get(), m_request.connection.protocol,
-                                 m_files.constFirst(), this);
     DownloadOptions options;
     options.sets = m_request.setMask;
     options.force = m_request.force;
+    download(m_files.constFirst(), options);
+}
+
+// A journal revert downloads the values before as a selection (CliRevert.cpp).
+void CliRunner::download(const DriveDescription &file, const DownloadOptions &options)
+{
+    m_download = new DownloadRun(m_client.get(), m_request.connection.protocol, file, this);
     m_download->setOptions(options);
     connect(m_download, &DownloadRun::progress, this,
             [this](int done, int total, const QString &what) {
@@ -105,6 +110,8 @@ void CliRunner::runDownload()
         noteScan(m_download->drive(), {});
         for (const QString &problem : plan.problems)
             m_err << (plan.forced ? tr("warning: %1") : tr("refused: %1")).arg(problem) << '\n';
+        if (plan.isRefused() && m_request.command == CliRequest::Command::Revert)
+            return fail(2, tr("nothing was written"));
         if (plan.isRefused())
             return fail(2, tr("nothing was written; --force writes the file all the same"));
         if (!m_request.dryRun)
