@@ -119,6 +119,10 @@ JournalSelect journalSelect(const JournalFilter &filter)
         conditions << QStringLiteral("e.id > ?");
         select.values << filter.afterEntry();
     }
+    if (filter.beforeEntry() > 0) {
+        conditions << QStringLiteral("e.id < ?");
+        select.values << filter.beforeEntry();
+    }
     if (!filter.user().isEmpty()) {
         conditions << QStringLiteral("e.user = ?");
         select.values << filter.user();
@@ -128,7 +132,11 @@ JournalSelect journalSelect(const JournalFilter &filter)
               .arg(QLatin1String(kColumns));
     if (!conditions.isEmpty())
         select.statement += QStringLiteral(" WHERE ") + conditions.join(QStringLiteral(" AND "));
-    select.statement += QStringLiteral(" ORDER BY e.id");
+    // The newest page comes newest first; Journal::entries() turns it round.
+    if (filter.newest() > 0)
+        select.statement += QStringLiteral(" ORDER BY e.id DESC LIMIT %1").arg(filter.newest());
+    else
+        select.statement += QStringLiteral(" ORDER BY e.id");
     return select;
 }
 
