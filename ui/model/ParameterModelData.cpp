@@ -199,6 +199,10 @@ QVariant ParameterModel::toolTip(const ParameterRow &row, int column) const
         } else {
             text = tr("raw %1 = %2h").arg(*raw).arg(QString::number(quint32(*raw), 16).toUpper());
         }
+        // An entry of a parameter without sets names no set.
+        if (const JournalEntry *change = m_state->journalChanges().last(
+                row.address(), description.isSetProgrammable() ? set : -1))
+            text += QLatin1Char('\n') + change->changeText();
         if (isStale(row)) {
             const QString time = QDateTime::fromMSecsSinceEpoch(row.readAtMs())
                                      .toString(QStringLiteral("HH:mm:ss"));
