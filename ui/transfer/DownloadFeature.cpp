@@ -65,10 +65,12 @@ void DownloadFeature::downloadFile(const QString &path)
     download(*file, {}, tr("the values of %1").arg(QDir::toNativeSeparators(path)));
 }
 
-void DownloadFeature::downloadSelection(const DriveDescription &selection, const QString &source)
+void DownloadFeature::downloadSelection(const DriveDescription &selection, const QString &source,
+                                        const QString &journalJob)
 {
     DownloadOptions options;
     options.selection = true;
+    options.journalJob = journalJob;
     download(selection, options,
              source.isEmpty() ? tr("the values chosen in the compare window")
                               : tr("the values chosen from %1").arg(source));
