@@ -33,9 +33,11 @@ void addJournalOptions(QCommandLineParser &parser)
 bool parseJournalOptions(const QCommandLineParser &parser, CliRequest &request, QString *error)
 {
     const bool reading = request.command == CliRequest::Command::Journal;
+    // journal revert takes --since (its own check refuses the other filters).
+    const bool reverting = request.command == CliRequest::Command::Revert;
     if (!reading) {
         for (const char *name : kFilterOptions) {
-            if (parser.isSet(QLatin1String(name))) {
+            if (parser.isSet(QLatin1String(name)) && !(reverting && qstrcmp(name, "since") == 0)) {
                 *error = QStringLiteral("--%1 belongs to journal").arg(QLatin1String(name));
                 return false;
             }
