@@ -248,10 +248,12 @@ private slots:
         QCOMPARE(rows->index(0, JournalTableModel::WrittenColumn).data().toString(),
                  QStringLiteral("345 1/min"));
         // The cell's tooltip names the change.
-        QTRY_VERIFY_WITH_TIMEOUT(cell.data(Qt::ToolTipRole).toString().contains(
-                                     QStringLiteral("345 1/min since")),
-                                 kWaitMs);
-        QVERIFY(cell.data(Qt::ToolTipRole).toString().contains(QStringLiteral("was 100 1/min")));
+        const auto tooltip = [&window] {
+            return viewIndex(window, kFixedSpeed1, 2).data(Qt::ToolTipRole).toString();
+        };
+        QTRY_VERIFY2_WITH_TIMEOUT(tooltip().contains(QStringLiteral("345 1/min since")),
+                                  qPrintable(tooltip()), kWaitMs);
+        QVERIFY2(tooltip().contains(QStringLiteral("was 100 1/min")), qPrintable(tooltip()));
 
         // Revert: the download's last look lists the one value, then writes it.
         dock->view()->selectRow(0);
