@@ -33,12 +33,14 @@ void addJournalOptions(QCommandLineParser &parser)
 bool parseJournalOptions(const QCommandLineParser &parser, CliRequest &request, QString *error)
 {
     const bool reading = request.command == CliRequest::Command::Journal;
-    // plant history filters its revisions by drive and parameter as the journal its entries.
+    // plant history filters its revisions by drive and parameter as the journal its entries;
+    // journal revert takes --since (its own check refuses the other filters).
     const bool history = request.plant && request.plant->action == PlantRequest::Action::History;
+    const bool reverting = request.command == CliRequest::Command::Revert;
     if (!reading) {
         for (const char *name : kFilterOptions) {
             const bool historyFilter = qstrcmp(name, "drive") == 0 || qstrcmp(name, "parameter") == 0;
-            if (history && historyFilter)
+            if ((history && historyFilter) || (reverting && qstrcmp(name, "since") == 0))
                 continue;
             if (parser.isSet(QLatin1String(name))) {
                 *error = QStringLiteral("--%1 belongs to journal").arg(QLatin1String(name));
@@ -70,12 +72,14 @@ std::optional<CliRequest> parseJournalCommand(const QCommandLineParser &parser,
                                               const ConnectionOptions &connection,
                                               const QStringList &positional, QString *error)
 {
+    if (positional.value(1).compare(QLatin1String("revert"), Qt::CaseInsensitive) == 0)
+        return parseJournalRevert(parser, connection, positional, error);
     if (!refuseDriveOptions(parser, connection, QStringLiteral("journal"),
                             QStringLiteral("reads the journal's file"), error))
         return std::nullopt;
     if (positional.size() != 1) {
-        *error = QStringLiteral("journal takes no arguments: filter with --drive, --parameter, "
-                                "--since, --until or --user");
+        *error = QStringLiteral("journal takes no arguments but revert: filter with --drive, "
+                                "--parameter, --since, --until or --user");
         return std::nullopt;
     }
     CliRequest request;

@@ -23,6 +23,12 @@ std::optional<CliRequest> parseJournalCommand(const QCommandLineParser &parser,
                                               const ConnectionOptions &connection,
                                               const QStringList &positional, QString *error);
 
+// `journal revert ENTRY... | --since TIME [--dry-run]`, with --connect: the entries' values
+// before written back to the drive through the download (CliRevert.cpp).
+std::optional<CliRequest> parseJournalRevert(const QCommandLineParser &parser,
+                                             const ConnectionOptions &connection,
+                                             const QStringList &positional, QString *error);
+
 // Prints the entries of the request's journal that its filter lets through, in its format.
 // Returns the exit code: 0, or 2 with *error for a journal that cannot be read (missing where
 // --journal named it, damaged, not a journal). The default journal not made yet holds nothing.

@@ -115,6 +115,7 @@ void CliRunner::runCommand()
     case CliRequest::Command::Scope: runScope(); break;
     case CliRequest::Command::Journal: break; // no drive: start() printed it
     case CliRequest::Command::Spectrum: break; // start() runs it: no drive
+    case CliRequest::Command::Revert: runRevert(); break;
     }
 }
 

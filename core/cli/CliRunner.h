@@ -17,6 +17,7 @@ class Journal;
 
 class CliPlant;
 class DownloadRun;
+struct DownloadOptions;
 class ScopeRecorder;
 struct ScopePollEnd;
 struct ScopeRecording;
@@ -60,6 +61,9 @@ private:
     // Drive to file and file to drive (CliTransfer.cpp).
     void runUpload();
     void runDownload();
+    void download(const DriveDescription &file, const DownloadOptions &options);
+    // journal revert: the entries' values before, through the download (CliRevert.cpp).
+    void runRevert();
     // Records the drive's scope data and writes it as CSV (CliScope.cpp).
     void runScope();
     void record(const QList<ScopeChannel> &channels);

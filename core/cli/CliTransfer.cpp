@@ -90,11 +90,16 @@ void CliRunner::runUpload()
 // The window's download runs the same DownloadRun: read the drive, plan, write, report.
 void CliRunner::runDownload()
 {
-    m_download = new DownloadRun(m_client.get(), m_request.connection.protocol,
-                                 m_files.constFirst(), this);
     DownloadOptions options;
     options.sets = m_request.setMask;
     options.force = m_request.force;
+    download(m_files.constFirst(), options);
+}
+
+// A journal revert downloads the values before as a selection (CliRevert.cpp).
+void CliRunner::download(const DriveDescription &file, const DownloadOptions &options)
+{
+    m_download = new DownloadRun(m_client.get(), m_request.connection.protocol, file, this);
     m_download->setOptions(options);
     if (m_request.journalWrites && !m_request.dryRun) {
         // Before the drive is read: a journal that cannot be written stops the download
@@ -103,9 +108,10 @@ void CliRunner::runDownload()
         if (!openJournal(&error))
             return fail(1, tr("nothing was written: %1 (--no-journal downloads without it)")
                                .arg(error));
-        m_editJournal = std::make_unique<EditJournal>(
-            m_journal.get(), JournalDrive {},
-            tr("download of %1").arg(QFileInfo(m_request.files.constFirst()).fileName()));
+        // A revert names its entries; a download its file.
+        const QString job = !options.journalJob.isEmpty() ? options.journalJob
+            : tr("download of %1").arg(QFileInfo(m_request.files.value(0)).fileName());
+        m_editJournal = std::make_unique<EditJournal>(m_journal.get(), JournalDrive {}, job);
         m_editJournal->setRemedy(tr("--no-journal downloads without it"));
         m_download->setJournal(m_editJournal.get());
     }
@@ -122,6 +128,8 @@ void CliRunner::runDownload()
         noteScan(m_download->drive(), {});
         for (const QString &problem : plan.problems)
             m_err << (plan.forced ? tr("warning: %1") : tr("refused: %1")).arg(problem) << '\n';
+        if (plan.isRefused() && m_request.command == CliRequest::Command::Revert)
+            return fail(2, tr("nothing was written"));
         if (plan.isRefused())
             return fail(2, tr("nothing was written; --force writes the file all the same"));
         if (!m_request.dryRun)

@@ -45,7 +45,7 @@ struct SpectrumRequest {
 // What `drivedesk-cli` was asked to do, parsed and checked before anything is sent.
 struct CliRequest {
     enum class Command : quint8 { Info, Scan, Read, Write, Diff, Upload, Download, Scope, Journal,
-                                  Spectrum };
+                                  Spectrum, Revert };
     enum class Format : quint8 { Table, Json, Csv };
 
     ConnectionSettings connection;
@@ -79,7 +79,8 @@ struct CliRequest {
     // command writes are not journaled.
     QString journalPath;
     bool journalWrites = true;
-    JournalFilter journalFilter; // journal: which entries to print
+    JournalFilter journalFilter; // journal: which entries to print; revert --since: its time
+    QList<qint64> revertEntries; // journal revert ENTRY...: the entries named (else --since)
     SpectrumRequest spectrum;          // `spectrum`: the other command fields are unused
 };
 

@@ -17,6 +17,8 @@
 #include <QThread>
 #include <QUrl>
 
+#include <algorithm>
+
 #ifdef Q_OS_UNIX
 #include <pwd.h>
 #include <unistd.h>
@@ -381,6 +383,8 @@ std::optional<QList<JournalEntry>> Journal::entries(const JournalFilter &filter)
         fail(JournalProblem::of(m_path, query.lastError(), m_busyTimeoutMs));
         return std::nullopt;
     }
+    if (filter.newest() > 0)
+        std::reverse(entries.begin(), entries.end());
     return entries;
 }
 

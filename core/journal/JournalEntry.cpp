@@ -46,6 +46,26 @@ QString JournalDrive::name() const
     return link;
 }
 
+bool JournalDrive::isSameDrive(const JournalDrive &other) const
+{
+    if (kind != other.kind || softwareVersion != other.softwareVersion
+        || serialNumber != other.serialNumber)
+        return false;
+    return !serialNumber.isEmpty() || (link == other.link && address == other.address);
+}
+
+QString JournalEntry::changeText(const QDateTime &now) const
+{
+    const QDateTime local = time.toLocalTime();
+    const QString when = local.date() == now.toLocalTime().date()
+        ? local.toString(QStringLiteral("HH:mm"))
+        : local.toString(QStringLiteral("yyyy-MM-dd HH:mm"));
+    const QString value = readBack.text.isEmpty() ? written.text : readBack.text;
+    if (before.text.isEmpty())
+        return JournalEntryText::tr("%1 since %2 by %3").arg(value, when, user);
+    return JournalEntryText::tr("%1 since %2 by %3, was %4").arg(value, when, user, before.text);
+}
+
 QString JournalEntry::outcomeText() const
 {
     switch (outcome) {

@@ -40,6 +40,10 @@ struct JournalDrive
     // How the journal command names the drive: its serial number, else "LINK@ADDRESS" (or the
     // link alone without an address).
     QString name() const;
+    // Whether `other` is this drive: the same identification (kind, software, serial number);
+    // where there is no serial number to tell two drives of a kind apart, on the same link and
+    // bus address too.
+    bool isSameDrive(const JournalDrive &other) const;
     bool operator==(const JournalDrive &) const = default;
 };
 
@@ -72,6 +76,9 @@ struct JournalEntry
     // "written", "refused: <reason>", "unknown" (": <reason>" where one is known), in the
     // installed language: the one text the window, the reports and the command line show.
     QString outcomeText() const;
+    // The change as a value's tooltip names it: "7.50 s since 10:42 by anna, was 5.00 s" (the
+    // date too where the change was not on `now`'s day), in the installed language.
+    QString changeText(const QDateTime &now = QDateTime::currentDateTime()) const;
 };
 
 } // namespace DriveDesk

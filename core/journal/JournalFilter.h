@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QDateTime>
+#include <QList>
 #include <QString>
 #include <QStringList>
 
@@ -28,6 +29,14 @@ public:
     bool setSince(const QString &text, QString *error);
     bool setUntil(const QString &text, QString *error);
     void setUser(const QString &login) { m_user = login; }
+    // Only these entries, by id (a revert names them); empty: any.
+    void setEntries(const QList<qint64> &ids) { m_entries = ids; }
+    // Only entries begun after this one: what a view that has read up to it lacks.
+    void setAfterEntry(qint64 id) { m_afterEntry = id; }
+    // Only entries begun before this one: the page before those a view shows.
+    void setBeforeEntry(qint64 id) { m_beforeEntry = id; }
+    // Only the newest `count` entries that match (0: all): a page of a big journal.
+    void setNewest(int count) { m_newest = count; }
 
     // The moment a span of time text begins (end = false) or the moment after it ends (true).
     static std::optional<QDateTime> parseTime(const QString &text, bool end, QString *error);
@@ -41,6 +50,10 @@ public:
     const QDateTime &since() const { return m_since; } // UTC, inclusive
     const QDateTime &until() const { return m_until; } // UTC, exclusive
     const QString &user() const { return m_user; }
+    const QList<qint64> &entries() const { return m_entries; }
+    qint64 afterEntry() const { return m_afterEntry; }
+    qint64 beforeEntry() const { return m_beforeEntry; }
+    int newest() const { return m_newest; }
 
 private:
     QString m_serialNumber;
@@ -51,6 +64,10 @@ private:
     QDateTime m_since;
     QDateTime m_until;
     QString m_user;
+    QList<qint64> m_entries;
+    qint64 m_afterEntry = 0;
+    qint64 m_beforeEntry = 0;
+    int m_newest = 0;
 };
 
 } // namespace DriveDesk

@@ -107,6 +107,22 @@ JournalSelect journalSelect(const JournalFilter &filter)
         conditions << QStringLiteral("e.time_utc_ms < ?");
         select.values << filter.until().toMSecsSinceEpoch();
     }
+    if (!filter.entries().isEmpty()) {
+        QStringList marks;
+        for (const qint64 id : filter.entries()) {
+            marks << QStringLiteral("?");
+            select.values << id;
+        }
+        conditions << QStringLiteral("e.id IN (%1)").arg(marks.join(QLatin1Char(',')));
+    }
+    if (filter.afterEntry() > 0) {
+        conditions << QStringLiteral("e.id > ?");
+        select.values << filter.afterEntry();
+    }
+    if (filter.beforeEntry() > 0) {
+        conditions << QStringLiteral("e.id < ?");
+        select.values << filter.beforeEntry();
+    }
     if (!filter.user().isEmpty()) {
         conditions << QStringLiteral("e.user = ?");
         select.values << filter.user();
@@ -116,7 +132,11 @@ JournalSelect journalSelect(const JournalFilter &filter)
               .arg(QLatin1String(kColumns));
     if (!conditions.isEmpty())
         select.statement += QStringLiteral(" WHERE ") + conditions.join(QStringLiteral(" AND "));
-    select.statement += QStringLiteral(" ORDER BY e.id");
+    // The newest page comes newest first; Journal::entries() turns it round.
+    if (filter.newest() > 0)
+        select.statement += QStringLiteral(" ORDER BY e.id DESC LIMIT %1").arg(filter.newest());
+    else
+        select.statement += QStringLiteral(" ORDER BY e.id");
     return select;
 }
 

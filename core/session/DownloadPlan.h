@@ -21,6 +21,9 @@ struct DownloadOptions
     // The file holds only values chosen to be written (a compare view's selection): the
     // drive's parameters and values it lacks are left as they are, not missing.
     bool selection = false;
+    // The job the download's writes are journaled as; empty: the download of its file. A
+    // revert of journal entries names itself ("revert of entries 12..15", JournalRevertPlan).
+    QString journalJob;
 };
 
 // One parameter a download writes: its values, grouped into one step per value.

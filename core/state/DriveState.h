@@ -2,6 +2,7 @@
 
 #include "ParameterState.h"
 
+#include "journal/JournalChanges.h"
 #include "parameters/DriveDescription.h"
 #include "parameters/PasswordLevel.h"
 #include "state/EditText.h"
@@ -110,6 +111,11 @@ public:
     void setActiveSet(int set);
     int activeSet() const { return m_activeSet; }
 
+    // Each value's last change the journal holds for this drive, which its tooltip names. Set
+    // by what reads the journal; read when a tooltip is asked for, so no signal.
+    void setJournalChanges(JournalChanges changes) { m_journalChanges = std::move(changes); }
+    const JournalChanges &journalChanges() const { return m_journalChanges; }
+
 signals:
     void aboutToReset();
     void reset();
@@ -140,6 +146,7 @@ private:
     PasswordLevel m_level = PasswordLevel::Supervisor;
     int m_activeSet = -1;
     qint64 m_staleSinceMs = 0;
+    JournalChanges m_journalChanges;
 };
 
 } // namespace DriveDesk

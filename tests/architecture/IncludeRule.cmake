@@ -16,7 +16,7 @@ if(NOT UI_DIR OR NOT IS_DIRECTORY "${UI_DIR}")
     message(FATAL_ERROR "UI_DIR must name the ui/ folder of the sources")
 endif()
 
-set(features files edit monitor transfer compare scope plant)
+set(features files edit monitor transfer compare scope plant journal)
 set(allowed_model model)
 set(allowed_delegate model delegate)
 set(allowed_frame model delegate frame)

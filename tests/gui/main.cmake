@@ -12,3 +12,6 @@ drivedesk_add_test(NAME tst_offlineediting LABELS gui
     SOURCES gui/tst_offlineediting.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui)
 drivedesk_add_test(NAME tst_savedrive LABELS gui
     SOURCES gui/tst_savedrive.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui)
+# The journal view: filters, search, pages, a write appearing and its revert; the tooltip.
+drivedesk_add_test(NAME tst_journalview LABELS gui
+    SOURCES gui/tst_journalview.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui)

@@ -263,6 +263,12 @@ private slots:
         QCOMPARE(menu("&Edit"),
                  QStringLiteral("findAction | undoAction redoAction | resetAction "
                                 "writeSetsAction copySetAction | passwordAction"));
+        // The View menu's windows and docks, after the table's filters and before the language.
+        const QString view = menu("&View");
+        QVERIFY2(view.endsWith(QStringLiteral("| compareAction | monitorAction scopeViewAction "
+                                              "plantViewAction journalViewAction | Language (from "
+                                              "the next start)")),
+                 qPrintable(view));
         QCOMPARE(names(window.toolBar()->actions()),
                  QStringLiteral("connectAction disconnectAction openFileAction saveFileAction | "
                                 "refreshAction pollingAction  | undoAction redoAction resetAction "

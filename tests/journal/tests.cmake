@@ -5,6 +5,9 @@ drivedesk_add_test(NAME tst_journal LABELS unit SOURCES journal/tst_journal.cpp
     LIBS drivedesk_journal)
 drivedesk_add_test(NAME tst_journalfilter LABELS unit SOURCES journal/tst_journalfilter.cpp
     LIBS drivedesk_journal)
+# What a revert writes, the last change of each value and its text.
+drivedesk_add_test(NAME tst_journalrevert LABELS unit SOURCES journal/tst_journalrevert.cpp
+    LIBS drivedesk_journal)
 
 add_executable(journal_writer journal/journal_writer.cpp)
 target_link_libraries(journal_writer PRIVATE drivedesk_journal)
@@ -36,3 +39,7 @@ drivedesk_add_test(NAME tst_journaldownload LABELS integration
 drivedesk_add_test(NAME tst_clidownloadjournal LABELS integration
     SOURCES journal/tst_clidownloadjournal.cpp LIBS drivedesk_journal)
 add_dependencies(tst_clidownloadjournal drivedesk-cli drivedesk-sim)
+# drivedesk-cli journal revert against drivedesk-sim read again; bad entries write nothing.
+drivedesk_add_test(NAME tst_journalrevertcli LABELS integration
+    SOURCES journal/tst_journalrevertcli.cpp LIBS drivedesk_journal drivedesk_cli)
+add_dependencies(tst_journalrevertcli drivedesk-cli drivedesk-sim)

@@ -6,6 +6,7 @@
 #include "edit/PollingFeature.h"
 #include "edit/SetsFeature.h"
 #include "files/ParameterFileFeature.h"
+#include "journal/JournalFeature.h"
 #include "monitor/MonitorFeature.h"
 #include "plant/PlantDock.h"
 #include "plant/PlantFeature.h"
@@ -60,6 +61,14 @@ QList<WindowFeature *> makeWindowFeatures(WindowFrame &frame)
                      });
     plant->dock()->setJournaled([editing] { return editing->journalsWrites(); });
     features << plant;
+    auto *journal = new JournalFeature(frame);
+    // Journal entries reverted reach the drive as the compare window's chosen values do.
+    QObject::connect(journal, &JournalFeature::revertRequested, download,
+                     [download](const DriveDescription &selection, const QString &source,
+                                const QString &job) {
+                         download->downloadSelection(selection, source, job);
+                     });
+    features << journal;
     return features;
 }
 

@@ -175,10 +175,15 @@ QVariant ParameterModel::toolTip(const ParameterRow &row, int column) const
     const int set = setOfColumn(column);
     if (set >= 0 && row.hasCell(set)) {
         const QString shown = row.text(set, m_raw);
+        // An entry of a parameter without sets names no set.
+        const JournalEntry *change = m_state->journalChanges().last(
+            row.address(), description.isSetProgrammable() ? set : -1);
         switch (row.editState(set)) {
         case EditState::Pending:
             return tr("Writing %1 ...").arg(shown);
         case EditState::Written:
+            if (change)
+                return tr("Written: %1").arg(shown) + QLatin1Char('\n') + change->changeText();
             return tr("Written: %1").arg(shown);
         case EditState::Failed:
             return tr("Writing %1 failed: %2")
@@ -199,6 +204,8 @@ QVariant ParameterModel::toolTip(const ParameterRow &row, int column) const
         } else {
             text = tr("raw %1 = %2h").arg(*raw).arg(QString::number(quint32(*raw), 16).toUpper());
         }
+        if (change)
+            text += QLatin1Char('\n') + change->changeText();
         if (isStale(row)) {
             const QString time = QDateTime::fromMSecsSinceEpoch(row.readAtMs())
                                      .toString(QStringLiteral("HH:mm:ss"));

@@ -68,13 +68,16 @@ void DownloadFeature::downloadFile(const QString &path)
              tr("download of %1").arg(QFileInfo(path).fileName()));
 }
 
-void DownloadFeature::downloadSelection(const DriveDescription &selection, const QString &source)
+void DownloadFeature::downloadSelection(const DriveDescription &selection, const QString &source,
+                                        const QString &journalJob)
 {
     DownloadOptions options;
     options.selection = true;
+    options.journalJob = journalJob;
     const QString what = source.isEmpty() ? tr("the values chosen in the compare window")
                                           : tr("the values chosen from %1").arg(source);
-    download(selection, options, what, tr("download of %1").arg(what));
+    download(selection, options, what,
+             journalJob.isEmpty() ? tr("download of %1").arg(what) : journalJob);
 }
 
 void DownloadFeature::download(const DriveDescription &file, const DownloadOptions &options,

@@ -28,7 +28,9 @@ public:
 
     // The file at `path`, or the values a compare view chose (DownloadOptions::selection).
     void downloadFile(const QString &path);
-    void downloadSelection(const DriveDescription &selection, const QString &source = {});
+    // `journalJob`: what its writes are journaled as, where not the download (a revert).
+    void downloadSelection(const DriveDescription &selection, const QString &source = {},
+                           const QString &journalJob = {});
     DownloadDialog *dialog() const;
     // Asked at each download: journal its writes (Drive > Journal Every Write), into the
     // window's journal. Unset: not journaled.
