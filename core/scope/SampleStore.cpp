@@ -25,7 +25,7 @@ bool SampleStore::append(const ScopeSample &sample)
         return false;
     const qsizetype offset = m_count % kChunkSize;
     if (offset == 0)
-        m_chunks.push_back(std::make_unique_for_overwrite<Chunk>());
+        m_chunks.push_back(std::make_shared_for_overwrite<Chunk>());
     Chunk &chunk = *m_chunks.back();
     chunk.time[offset] = sample.time;
     chunk.wide[0][offset] = sample.wide[0];
@@ -41,6 +41,26 @@ void SampleStore::clear()
     m_chunks.clear();
     m_chunks.shrink_to_fit();
     m_count = 0;
+}
+
+SampleStore SampleStore::share(qsizetype count) const
+{
+    SampleStore copy;
+    copy.m_count = std::clamp<qsizetype>(count, 0, m_count);
+    const qsizetype full = copy.m_count / kChunkSize;
+    copy.m_chunks.assign(m_chunks.begin(), m_chunks.begin() + full);
+    if (const qsizetype rest = copy.m_count % kChunkSize) {
+        // This chunk may still be written to: its samples are copied, not shared.
+        auto last = std::make_shared_for_overwrite<Chunk>();
+        const Chunk &from = *m_chunks[full];
+        std::copy_n(from.time.begin(), rest, last->time.begin());
+        for (std::size_t column = 0; column < 2; ++column) {
+            std::copy_n(from.wide[column].begin(), rest, last->wide[column].begin());
+            std::copy_n(from.narrow[column].begin(), rest, last->narrow[column].begin());
+        }
+        copy.m_chunks.push_back(std::move(last));
+    }
+    return copy;
 }
 
 ScopeSample SampleStore::at(qsizetype index) const
@@ -145,7 +165,7 @@ SampleStore::IndexRange SampleStore::indexRange(qint64 fromMs, qint64 toMs) cons
 qsizetype SampleStore::bytesUsed() const
 {
     return qsizetype(m_chunks.size() * sizeof(Chunk)
-                     + m_chunks.capacity() * sizeof(std::unique_ptr<Chunk>));
+                     + m_chunks.capacity() * sizeof(std::shared_ptr<Chunk>));
 }
 
 } // namespace DriveDesk

@@ -13,7 +13,8 @@ namespace DriveDesk {
 // is full; samples already stored never move, so appending never copies them.
 //
 // Single-threaded: written and read from one thread. Whoever polls hands samples over to
-// that thread in batches.
+// that thread in batches. A store's share() may go to another thread: a full chunk is never
+// written again, so the copies share them.
 class SampleStore
 {
 public:
@@ -38,6 +39,10 @@ public:
     // time is kept.
     bool append(const ScopeSample &sample);
     void clear();
+    // The first `count` samples (at most count()) as a store of their own, for another thread
+    // to read while this one grows: the full chunks shared, the one still filling copied. A
+    // pointer a chunk and at most one chunk's samples: cheap for any number of samples.
+    SampleStore share(qsizetype count) const;
 
     qsizetype count() const { return m_count; }
     bool isEmpty() const { return m_count == 0; }
@@ -63,7 +68,7 @@ public:
 
 private:
     struct Chunk;
-    std::vector<std::unique_ptr<Chunk>> m_chunks;
+    std::vector<std::shared_ptr<Chunk>> m_chunks;
     qsizetype m_count = 0;
 };
 

@@ -1,6 +1,7 @@
 #include "ScopeCsv.h"
 
 #include "ScopeRecording.h"
+#include "ScopeSeries.h"
 #include "parameters/ParameterCsv.h"
 
 #include <QCoreApplication>
@@ -21,6 +22,8 @@ namespace {
 constexpr qsizetype kBlockSize = qsizetype(1) << 20;
 // Room for one field: a sign, 19 digits of a qint64, a point and four decimals, a comma.
 constexpr qsizetype kMaxFieldSize = 32;
+// A math channel's value: computed, not sent by the drive; six digits tell its shape.
+constexpr int kMathDigits = 6;
 
 constexpr std::array<quint64, DisplayScaling::kMaxDecimals + 1> kPow10 { 1, 10, 100, 1000, 10000 };
 
@@ -88,16 +91,15 @@ QList<ColumnFormat> columnFormats(const ScopeRecording &recording, const QList<i
     return columns;
 }
 
-QByteArray headerLine(const ScopeRecording &recording, const QList<int> &channels)
+QByteArray headerLine(const ScopeRecording &recording, const QList<int> &channels,
+                      const QList<const ScopeSeries *> &math)
 {
     // Not translated: tools read this column by name.
     QStringList fields { QStringLiteral("Time [ms]") };
-    for (int channel : channels) {
-        const ScopeChannel &described = recording.channels.at(channel);
-        const QString unit = described.unit();
-        fields << (unit.isEmpty() ? described.title(channel)
-                                  : QStringLiteral("%1 [%2]").arg(described.title(channel), unit));
-    }
+    for (int channel : channels)
+        fields << scopeCsvColumnHeader(recording.channels.at(channel), channel);
+    for (const ScopeSeries *series : math)
+        fields << series->label();
     return csvRecord(fields).toUtf8() + "\r\n";
 }
 
@@ -109,7 +111,7 @@ bool writeAll(QIODevice &out, const char *data, qsizetype size)
 // The header and the rows; a channel index is known to be valid.
 Outcome writeCsv(QIODevice &out, const ScopeRecording &recording, const ScopeCsvOptions &options)
 {
-    const QByteArray header = headerLine(recording, options.channels);
+    const QByteArray header = headerLine(recording, options.channels, options.math);
     if (!writeAll(out, header.constData(), header.size()))
         return Outcome::WriteFailed;
 
@@ -117,7 +119,7 @@ Outcome writeCsv(QIODevice &out, const ScopeRecording &recording, const ScopeCsv
     const SampleStore &store = recording.buffer.samples();
     const SampleStore::IndexRange range = store.indexRange(options.fromMs, options.toMs);
     const qint64 origin = recording.firstTime();
-    const qsizetype maxRowSize = kMaxFieldSize * (columns.size() + 1) + 2;
+    const qsizetype maxRowSize = kMaxFieldSize * (columns.size() + options.math.size() + 1) + 2;
     QByteArray block(kBlockSize + maxRowSize, Qt::Uninitialized);
     char *const begin = block.data();
     char *at = begin;
@@ -133,6 +135,14 @@ Outcome writeCsv(QIODevice &out, const ScopeRecording &recording, const ScopeCsv
             } else if (const std::optional<qint64> scaled = column.scaling->toFixedPoint(raw)) {
                 at = writeFixedPoint(at, *scaled, column.decimals, column.trimZeros);
             } // else: no number (mode 1 at its pole), an empty field
+        }
+        for (const ScopeSeries *series : options.math) {
+            *at++ = ',';
+            if (index < series->count()) {
+                at = std::to_chars(at, at + kMaxFieldSize, series->values[std::size_t(index)],
+                                   std::chars_format::general, kMathDigits)
+                         .ptr;
+            }
         }
         *at++ = '\r';
         *at++ = '\n';
@@ -150,6 +160,14 @@ Outcome writeCsv(QIODevice &out, const ScopeRecording &recording, const ScopeCsv
         return Outcome::WriteFailed;
     if (options.progress && !options.progress(range.count(), range.count()))
         return Outcome::Cancelled;
+    if (options.measureBetweenMs) {
+        const QByteArray section
+            = "\r\n"
+            + scopeCsvMeasurements(recording, options.channels, options.measureBetweenMs->first,
+                                   options.measureBetweenMs->second, options.math);
+        if (!writeAll(out, section.constData(), section.size()))
+            return Outcome::WriteFailed;
+    }
     return Outcome::Written;
 }
 

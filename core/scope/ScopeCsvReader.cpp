@@ -131,10 +131,9 @@ bool readScopeCsv(const QString &path, QList<ScopeSeries> &columns, QString *err
         qsizetype last = end;
         if (last > at && data[last - 1] == '\r')
             --last;
-        if (last == at) { // an empty line: only at the end of the file
-            at = end + 1;
-            continue;
-        }
+        // An empty line ends the samples: what follows (the measurements) is no sample.
+        if (last == at)
+            break;
         const qsizetype fields = 1 + std::count(data + at, data + last, ',');
         if (fields != fieldCount) {
             return fail(ScopeCsvReader::tr("'%1', line %2 has %3 fields, the header %4")

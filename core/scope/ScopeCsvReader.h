@@ -12,7 +12,8 @@ namespace DriveDesk {
 // [Hz]": title "ru.03 Actual frequency", unit "Hz"), its times the file's "Time [ms]" (ms since
 // the recording's first sample). An empty field (a value the scaling could not show) leaves
 // that sample out of its column. Comma-separated, '.' as decimal point, header fields quoted
-// as RFC 4180 asks; CRLF or LF line ends; a UTF-8 byte-order mark is passed over.
+// as RFC 4180 asks; CRLF or LF line ends; a UTF-8 byte-order mark is passed over. The samples
+// end at the first empty line (the measurements section follows it, scopeCsvMeasurements()).
 //
 // False, with `error` naming the file and the fault (cannot be read, not a scope CSV export,
 // a line with another number of fields than the header, a field that is no number and where,

@@ -64,7 +64,7 @@ ScopeChannel readChannel(JsonObjectReader &reader)
 
 ScopeFileHeader ScopeFileHeader::of(const ScopeRecording &recording)
 {
-    return { recording.started, recording.source, recording.channels };
+    return { recording.started, recording.source, recording.channels, recording.math };
 }
 
 QByteArray ScopeFileFormat::start(const ScopeFileHeader &header)
@@ -76,12 +76,20 @@ QByteArray ScopeFileFormat::start(const ScopeFileHeader &header)
     const QJsonValue started = header.started.isValid()
         ? QJsonValue(header.started.toUTC().toString(Qt::ISODateWithMs))
         : QJsonValue();
-    const QByteArray json = QJsonDocument(QJsonObject {
-                                              { QStringLiteral("started"), started },
-                                              { QStringLiteral("source"), header.source },
-                                              { QStringLiteral("channels"), channels },
-                                          })
-                                .toJson(QJsonDocument::Compact);
+    QJsonObject object {
+        { QStringLiteral("started"), started },
+        { QStringLiteral("source"), header.source },
+        { QStringLiteral("channels"), channels },
+    };
+    // Only where there are some: a file without math channels stays one that earlier versions
+    // of DriveDesk read.
+    if (!header.math.isEmpty()) {
+        QJsonArray math;
+        for (const ScopeMathDefinition &definition : header.math)
+            math.append(definition.toJson());
+        object.insert(QStringLiteral("math"), math);
+    }
+    const QByteArray json = QJsonDocument(object).toJson(QJsonDocument::Compact);
 
     QByteArray bytes = kMagic + QByteArray::number(kVersion) + '\n';
     const qsizetype lengthAt = bytes.size();
@@ -124,6 +132,24 @@ bool ScopeFileFormat::parseHeader(const QByteArray &json, ScopeFileHeader &heade
     for (qsizetype i = 0; reader.ok() && i < channels.size(); ++i) {
         JsonObjectReader channel = reader.element(channelsKey, channels, i);
         header.channels[i] = readChannel(channel);
+    }
+    const QString mathKey = QStringLiteral("math");
+    if (reader.ok() && reader.has(mathKey)) {
+        const QJsonArray math = reader.array(mathKey);
+        for (qsizetype i = 0; reader.ok() && i < math.size(); ++i) {
+            const QString place = JsonObjectReader::indexed(reader.place(mathKey), i);
+            QString wrong;
+            const std::optional<ScopeMathDefinition> definition
+                = math.at(i).isObject()
+                ? ScopeMathDefinition::fromJson(math.at(i).toObject(), &wrong)
+                : std::nullopt;
+            if (!math.at(i).isObject())
+                wrong = tr("expected an object");
+            if (definition)
+                header.math << *definition;
+            else
+                reader.fail(place, wrong);
+        }
     }
     reader.finish();
     if (!fault.isEmpty() && error)

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ScopeChannel.h"
+#include "ScopeMathDefinition.h"
 #include "ScopeSample.h"
 
 #include <QByteArray>
@@ -18,6 +19,7 @@ struct ScopeFileHeader
     QDateTime started; // UTC, may be invalid (not known when the file was opened)
     QString source;
     ScopeChannels channels = ScopeChannels(ScopeSample::kChannelCount);
+    QList<ScopeMathDefinition> math; // "math" in the file; absent where there are none
 
     static ScopeFileHeader of(const ScopeRecording &recording);
 };

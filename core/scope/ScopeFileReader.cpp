@@ -147,6 +147,7 @@ bool readScopeFile(const QString &path, ScopeRecording &out, QString *error, QSt
     loaded.started = header.started;
     loaded.source = header.source;
     loaded.channels = header.channels;
+    loaded.math = header.math;
     qsizetype incomplete = 0;
     if (!readSamples(file, loaded, incomplete, error))
         return false;

@@ -1,6 +1,7 @@
 #include "ScopeMath.h"
 
 #include "ScopeRecording.h"
+#include "ScopeSnapshot.h"
 
 #include <cmath>
 
@@ -172,8 +173,10 @@ ScopeMathResult computeScopeMath(const ScopeMathDefinition &definition, const Sc
     return result;
 }
 
-ScopeMathResult computeScopeMath(const ScopeMathDefinition &definition,
-                                 const ScopeRecording &recording)
+namespace {
+
+template<typename Recording>
+ScopeMathResult computeOf(const ScopeMathDefinition &definition, const Recording &recording)
 {
     const QString wrong = definition.check(int(recording.channels.size()));
     if (!wrong.isEmpty()) {
@@ -186,6 +189,20 @@ ScopeMathResult computeScopeMath(const ScopeMathDefinition &definition,
         return computeScopeMath(definition, first);
     const ScopeSeries second = scopeSeries(recording, definition.sources.at(1));
     return computeScopeMath(definition, first, &second);
+}
+
+} // namespace
+
+ScopeMathResult computeScopeMath(const ScopeMathDefinition &definition,
+                                 const ScopeRecording &recording)
+{
+    return computeOf(definition, recording);
+}
+
+ScopeMathResult computeScopeMath(const ScopeMathDefinition &definition,
+                                 const ScopeSnapshot &snapshot)
+{
+    return computeOf(definition, snapshot);
 }
 
 } // namespace DriveDesk

@@ -6,6 +6,7 @@
 namespace DriveDesk {
 
 struct ScopeRecording;
+struct ScopeSnapshot;
 
 // A math channel's trace, or why there is none.
 struct ScopeMathResult
@@ -36,6 +37,9 @@ struct ScopeMathResult
 //   even count of samples one more before than after), fewer at either end.
 ScopeMathResult computeScopeMath(const ScopeMathDefinition &definition,
                                  const ScopeRecording &recording);
+// The same from a snapshot of a recording, in any thread.
+ScopeMathResult computeScopeMath(const ScopeMathDefinition &definition,
+                                 const ScopeSnapshot &snapshot);
 // The same from traces of any origin (a CSV export's columns, another math channel): `second`
 // for Difference and Sum.
 ScopeMathResult computeScopeMath(const ScopeMathDefinition &definition, const ScopeSeries &first,

@@ -119,6 +119,15 @@ ScopeMeasurements measureScope(const ScopeRecording &recording, int channel, dou
     return measure(ScopeSampleWindow::OfRecording(recording, channel, fromMs, toMs), options);
 }
 
+ScopeMeasurements measureScope(const ScopeSnapshot &snapshot, int channel, double fromMs,
+                               double toMs, const ScopeMeasureOptions &options)
+{
+    Q_ASSERT(channel >= 0 && channel < snapshot.channels.size());
+    if (toMs < fromMs)
+        std::swap(fromMs, toMs);
+    return measure(ScopeSampleWindow::OfRecording(snapshot, channel, fromMs, toMs), options);
+}
+
 ScopeMeasurements measureScope(const ScopeSeries &series, double fromMs, double toMs,
                                const ScopeMeasureOptions &options)
 {

@@ -7,6 +7,7 @@
 namespace DriveDesk {
 
 struct ScopeRecording;
+struct ScopeSnapshot;
 struct ScopeSeries;
 
 // Where the transitions are measured: between two levels, by default 10 % and 90 % of the span
@@ -60,6 +61,9 @@ struct ScopeMeasurements
 // The measurements of `channel` between fromMs and toMs (in either order), read from the
 // recording's samples in place (the display values, ScopeChannel::toDisplay()).
 ScopeMeasurements measureScope(const ScopeRecording &recording, int channel, double fromMs,
+                               double toMs, const ScopeMeasureOptions &options = {});
+// The same on a snapshot of a recording, in any thread.
+ScopeMeasurements measureScope(const ScopeSnapshot &snapshot, int channel, double fromMs,
                                double toMs, const ScopeMeasureOptions &options = {});
 // The same on any trace: a math channel's, a CSV column's.
 ScopeMeasurements measureScope(const ScopeSeries &series, double fromMs, double toMs,

@@ -22,6 +22,7 @@ std::unique_ptr<ScopeRecording> ScopeRecording::excerpt(qint64 fromMs, qint64 to
     auto part = std::make_unique<ScopeRecording>();
     part->channels = channels;
     part->source = source;
+    part->math = math;
     const SampleStore &samples = buffer.samples();
     const SampleStore::IndexRange range = samples.indexRange(fromMs, toMs);
     for (qsizetype index = range.begin; index < range.end; ++index)

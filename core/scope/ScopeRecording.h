@@ -2,6 +2,7 @@
 
 #include "ScopeBuffer.h"
 #include "ScopeChannel.h"
+#include "ScopeMathDefinition.h"
 
 #include <QDateTime>
 #include <QString>
@@ -21,6 +22,9 @@ struct ScopeRecording
     ScopeChannels channels; // ScopeSample::kChannelCount entries
     QDateTime started;      // the host's clock at the first sample, UTC
     QString source;         // the connection ("HSP5 on /dev/ttyUSB0"), or the file it came from
+    // The math channels the user added: definitions only, their values follow from the samples
+    // (computeScopeMath()). Kept with the recording in its file; never sent to a drive.
+    QList<ScopeMathDefinition> math;
 
     // The samples' first and last time in ms; 0 and 0 when there are none.
     qint64 firstTime() const;

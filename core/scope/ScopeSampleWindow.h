@@ -2,20 +2,29 @@
 
 #include "ScopeRecording.h"
 #include "ScopeSeries.h"
+#include "ScopeSnapshot.h"
 
 #include <algorithm>
 #include <cmath>
 
 // Inside core/scope: the samples between two times, read alike from a recording's store in
-// place or from a series, by the measurements and the spectrum (time(i) and value(i) for
+// place (or a snapshot's) or from a series, by the measurements and the spectrum (time(i) and value(i) for
 // begin <= i < end).
 namespace DriveDesk::ScopeSampleWindow {
 
 struct OfRecording
 {
     OfRecording(const ScopeRecording &recording, int channel, double fromMs, double toMs)
-        : recording(recording)
-        , samples(recording.buffer.samples())
+        : OfRecording(recording.buffer.samples(), recording.channels.at(channel), channel, fromMs,
+                      toMs)
+    { }
+    OfRecording(const ScopeSnapshot &snapshot, int channel, double fromMs, double toMs)
+        : OfRecording(snapshot.samples, snapshot.channels.at(channel), channel, fromMs, toMs)
+    { }
+    OfRecording(const SampleStore &samples, const ScopeChannel &source, int channel,
+                double fromMs, double toMs)
+        : samples(samples)
+        , source(source)
         , channel(channel)
     {
         // Whole ms: the first sample at or after `from`, the last at or before `to`.
@@ -29,10 +38,10 @@ struct OfRecording
         end = range.end;
     }
     double time(qsizetype i) const { return double(samples.time(i)); }
-    double value(qsizetype i) const { return recording.displayValue(i, channel); }
+    double value(qsizetype i) const { return source.toDisplay(samples.value(i, channel)); }
 
-    const ScopeRecording &recording;
     const SampleStore &samples;
+    const ScopeChannel &source;
     int channel = 0;
     qsizetype begin = 0;
     qsizetype end = 0;

@@ -1,6 +1,7 @@
 #include "ScopeSeries.h"
 
 #include "ScopeRecording.h"
+#include "ScopeSnapshot.h"
 
 #include <algorithm>
 
@@ -21,13 +22,16 @@ QString ScopeSeries::label() const
     return unit.isEmpty() ? title : QStringLiteral("%1 [%2]").arg(title, unit);
 }
 
-ScopeSeries scopeSeries(const ScopeRecording &recording, int channel, qint64 fromMs, qint64 toMs)
+namespace {
+
+template<typename Recording>
+ScopeSeries seriesOf(const Recording &recording, const SampleStore &samples, int channel,
+                     qint64 fromMs, qint64 toMs)
 {
     Q_ASSERT(channel >= 0 && channel < recording.channels.size());
     ScopeSeries series;
     series.title = recording.channels.at(channel).title(channel);
     series.unit = recording.channels.at(channel).unit();
-    const SampleStore &samples = recording.buffer.samples();
     const SampleStore::IndexRange range = samples.indexRange(fromMs, toMs);
     series.timeMs.reserve(std::size_t(range.count()));
     series.values.reserve(std::size_t(range.count()));
@@ -36,6 +40,18 @@ ScopeSeries scopeSeries(const ScopeRecording &recording, int channel, qint64 fro
         series.values.push_back(recording.displayValue(index, channel));
     }
     return series;
+}
+
+} // namespace
+
+ScopeSeries scopeSeries(const ScopeRecording &recording, int channel, qint64 fromMs, qint64 toMs)
+{
+    return seriesOf(recording, recording.buffer.samples(), channel, fromMs, toMs);
+}
+
+ScopeSeries scopeSeries(const ScopeSnapshot &snapshot, int channel, qint64 fromMs, qint64 toMs)
+{
+    return seriesOf(snapshot, snapshot.samples, channel, fromMs, toMs);
 }
 
 } // namespace DriveDesk

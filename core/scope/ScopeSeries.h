@@ -9,6 +9,7 @@
 namespace DriveDesk {
 
 struct ScopeRecording;
+struct ScopeSnapshot;
 
 // One trace as numbers in its unit, with their times: what the measurements, the math channels
 // and the spectrum read. A channel of a recording (scopeSeries()), a column of a CSV export
@@ -33,6 +34,10 @@ struct ScopeSeries
 // recording's own ms (SampleStore::time(), as the chart's cursors give them), titled and unit
 // as the channel. The defaults take the whole recording.
 ScopeSeries scopeSeries(const ScopeRecording &recording, int channel,
+                        qint64 fromMs = std::numeric_limits<qint64>::min(),
+                        qint64 toMs = std::numeric_limits<qint64>::max());
+// The same from a snapshot, in any thread.
+ScopeSeries scopeSeries(const ScopeSnapshot &snapshot, int channel,
                         qint64 fromMs = std::numeric_limits<qint64>::min(),
                         qint64 toMs = std::numeric_limits<qint64>::max());
 

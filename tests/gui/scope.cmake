@@ -7,3 +7,7 @@ drivedesk_add_test(NAME tst_scopechart LABELS gui
 drivedesk_add_test(NAME tst_scopedock LABELS gui
     SOURCES gui/tst_scopedock.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui
     drivedesk_translations)
+# Reading a recording in the dock (no drive): the measurements between the cursors.
+drivedesk_add_test(NAME tst_scopeanalysis LABELS gui
+    SOURCES gui/tst_scopeanalysis.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui
+    drivedesk_translations)

@@ -58,14 +58,17 @@ QString status(ScopeDock &dock)
     return dock.findChild<QLabel *>(QStringLiteral("scopeStatus"))->text();
 }
 
+// The header and the samples' rows: up to the empty line before the measurements between the
+// cursors, which follow where both are placed.
 QStringList csvLines(const QString &path)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
         return {};
     QStringList lines = QString::fromUtf8(file.readAll()).split(QStringLiteral("\r\n"));
-    if (!lines.isEmpty() && lines.constLast().isEmpty())
-        lines.removeLast();
+    const qsizetype end = lines.indexOf(QString());
+    if (end >= 0)
+        lines = lines.mid(0, end);
     return lines;
 }
 

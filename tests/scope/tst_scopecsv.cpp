@@ -1,4 +1,5 @@
 #include "scope/ScopeCsv.h"
+#include "scope/ScopeMath.h"
 #include "scope/ScopeRecording.h"
 
 #include <QBuffer>
@@ -6,6 +7,9 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <QMap>
+
+#include <cmath>
 #include <limits>
 
 using namespace DriveDesk;
@@ -125,6 +129,68 @@ private slots:
         options.fromMs = 1010;
         options.toMs = 5000;
         QCOMPARE(csvOf(recording, options), kHeader + "10,-0.1,7,-32768,0\r\n");
+    }
+
+    // The cursors' measurements after the samples: a ramp of 1 Hz a ms from 0 Hz at t = 1000,
+    // cursors at 1008 and 1002 (either order), so the samples from 2 to 8 Hz count.
+    void measurementsFollowTheSamples()
+    {
+        ScopeRecording recording;
+        recording.channels[0] = channel(0x0203, QStringLiteral("ru.03"),
+                                        QStringLiteral("Actual frequency"),
+                                        { 0, 10, 1, 0, flags(kHz, 1) });
+        for (qint64 t = 1000; t <= 1010; ++t)
+            QVERIFY(recording.buffer.append(sample(t, qint32(10 * (t - 1000)), 0, 0, 0)));
+        // A math channel goes along as a column of its own: the ramp's slope, 1000 Hz/s.
+        const ScopeMathResult slope = computeScopeMath(ScopeMathDefinition(), recording);
+        QVERIFY(slope.ok());
+        ScopeCsvOptions options;
+        options.channels = { 0, 1 };
+        options.math = { &slope.series };
+        options.fromMs = 1009;
+        options.measureBetweenMs = std::pair(1008.0, 1002.0);
+        const QList<QByteArray> lines = csvOf(recording, options).split('\n');
+        // The samples asked for, an empty line, then the section: header and twelve rows.
+        QCOMPARE(lines.at(0),
+                 QByteArray("Time [ms],ru.03 Actual frequency [Hz],Channel 2,"
+                            "d/dt ru.03 Actual frequency [Hz/s]\r"));
+        QCOMPARE(lines.at(1), QByteArray("9,9.0,0,1000\r"));
+        QCOMPARE(lines.at(3), QByteArray("\r"));
+        QCOMPARE(lines.at(4), QByteArray("Measurement,ru.03 Actual frequency [Hz],Channel 2,"
+                                         "d/dt ru.03 Actual frequency [Hz/s]\r"));
+        QCOMPARE(lines.size(), 4 + 1 + 12 + 1);
+        QMap<QByteArray, double> first;
+        QMap<QByteArray, QByteArray> second;
+        QMap<QByteArray, QByteArray> math;
+        for (qsizetype i = 5; i < lines.size() - 1; ++i) {
+            const QList<QByteArray> fields = lines.at(i).chopped(1).split(',');
+            QCOMPARE(fields.size(), 4);
+            math[fields.at(0)] = fields.at(3);
+            bool ok = fields.at(1).isEmpty();
+            first[fields.at(0)] = ok ? qQNaN() : fields.at(1).toDouble(&ok);
+            QVERIFY2(ok, lines.at(i).constData());
+            second[fields.at(0)] = fields.at(2);
+        }
+        const auto near = [](double a, double b) { return std::abs(a - b) < 1e-9; };
+        QCOMPARE(first.value("From [ms]"), 2.0); // the file's time, from the first sample
+        QCOMPARE(first.value("To [ms]"), 8.0);
+        QCOMPARE(first.value("Samples"), 7.0);
+        QCOMPARE(first.value("Minimum"), 2.0);
+        QCOMPARE(first.value("Maximum"), 8.0);
+        QCOMPARE(first.value("Peak to peak"), 6.0);
+        QVERIFY(near(first.value("Mean"), 5.0));
+        QVERIFY(near(first.value("RMS"), std::sqrt((2.0 * 2 + 2.0 * 8 + 8.0 * 8) / 3)));
+        QVERIFY(near(first.value("Rise time [ms]"), 4.8)); // from 2.6 Hz to 7.4 Hz
+        QVERIFY(near(first.value("Rise rate [unit/s]"), 1000.0));
+        QVERIFY(qIsNaN(first.value("Fall time [ms]")));
+        QVERIFY(qIsNaN(first.value("Fall rate [unit/s]")));
+        // Channel 2 is flat (0): its levels meet, so no rise.
+        QCOMPARE(second.value("Samples"), QByteArray("7"));
+        QCOMPARE(second.value("Peak to peak"), QByteArray("0"));
+        QCOMPARE(second.value("Rise time [ms]"), QByteArray());
+        QCOMPARE(math.value("Samples"), QByteArray("7"));
+        QCOMPARE(math.value("Mean"), QByteArray("1000"));
+        QCOMPARE(math.value("Peak to peak"), QByteArray("0"));
     }
 
     void emptyRangeGivesTheHeaderOnly()

@@ -67,6 +67,28 @@ private slots:
         }
     }
 
+    // The measurements after the samples are no samples.
+    void theMeasurementsSectionIsNotRead()
+    {
+        ScopeRecording recording;
+        recording.channels[0] = scaledChannel(0x0203, QStringLiteral("ru.03"),
+                                              QStringLiteral("Actual frequency"), 10, kHz);
+        for (int i = 0; i < 50; ++i)
+            append(recording, i, 10 * i);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("measured.csv"));
+        ScopeCsvOptions options;
+        options.channels = { 0 };
+        options.measureBetweenMs = std::pair(10.0, 20.0);
+        QString error;
+        QVERIFY2(saveScopeCsv(path, recording, options, &error), qPrintable(error));
+        QList<ScopeSeries> columns;
+        QVERIFY2(readScopeCsv(path, columns, &error), qPrintable(error));
+        QCOMPARE(columns.size(), 1);
+        QCOMPARE(columns[0].count(), qsizetype(50));
+        QCOMPARE(columns[0].values.back(), 49.0);
+    }
+
     // Written by another tool: LF line ends, a byte-order mark, a value left empty.
     void emptyFieldsLeaveTheSampleOut()
     {

@@ -139,6 +139,44 @@ private slots:
         QCOMPARE(loaded.buffer.pyramid().count(), count);
     }
 
+    // The math channels go with the recording: their definitions, not their values. A file
+    // without them (as every file before them) has no "math" field and opens with none.
+    void mathChannelsAreKeptWithTheRecording()
+    {
+        ScopeRecording recorded;
+        recorded.channels = header().channels;
+        for (qsizetype i = 0; i < 10; ++i)
+            QVERIFY(recorded.buffer.append(sampleAt(i)));
+        ScopeMathDefinition difference;
+        difference.kind = ScopeMathDefinition::Kind::Difference;
+        difference.sources = { 0, 2 };
+        ScopeMathDefinition average;
+        average.kind = ScopeMathDefinition::Kind::MovingAverage;
+        average.window = 2.5;
+        average.windowUnit = ScopeMathDefinition::WindowUnit::Milliseconds;
+        recorded.math = { ScopeMathDefinition(), difference, average };
+
+        ScopeFileWriter writer;
+        QString error;
+        QVERIFY2(writer.open(m_path, ScopeFileHeader::of(recorded), &error), qPrintable(error));
+        QVERIFY(writer.append(recorded.buffer.samples(), 0, 10, &error));
+        QVERIFY(writer.close(&error));
+        QVERIFY(FileParts::of(readAll(m_path)).json.contains(
+            "\"math\":[{\"kind\":\"derivative\",\"sources\":[0]},"));
+        ScopeRecording loaded;
+        QVERIFY2(readScopeFile(m_path, loaded, &error), qPrintable(error));
+        QCOMPARE(loaded.math, recorded.math);
+        QCOMPARE(loaded.buffer.count(), 10);
+
+        recorded.math.clear();
+        QVERIFY(writer.open(m_path, ScopeFileHeader::of(recorded), &error));
+        QVERIFY(writer.close(&error));
+        QVERIFY(!FileParts::of(readAll(m_path)).json.contains("math"));
+        loaded.math = { difference };
+        QVERIFY2(readScopeFile(m_path, loaded, &error), qPrintable(error));
+        QCOMPARE(loaded.math, QList<ScopeMathDefinition>());
+    }
+
     void layoutIsAsDocumented()
     {
         ScopeFileHeader start;
@@ -282,6 +320,14 @@ private slots:
         QTest::newRow("three channels")
             << withJson("},{\"enabled\":false", "}],\"x\":[{\"enabled\":false")
             << QStringLiteral("'%1' has a damaged header: channels: expected 4 channels, found 3");
+
+        QTest::newRow("math kind")
+            << withJson("\"source\":\"HSP5",
+                        "\"math\":[{\"kind\":\"square\",\"sources\":[0]}],\"source\":\"HSP5")
+            << QStringLiteral("'%1' has a damaged header: math[0]: kind: unknown kind \"square\"");
+        QTest::newRow("math not a list")
+            << withJson("\"source\":\"HSP5", "\"math\":7,\"source\":\"HSP5")
+            << QStringLiteral("'%1' has a damaged header: math: expected an array");
 
         FileParts backwards = good;
         backwards.records += record(sampleAt(0));

@@ -3,6 +3,7 @@
 #include "ScopeTestRecording.h"
 #include "scope/ScopeMeasurements.h"
 #include "scope/ScopeSeries.h"
+#include "scope/ScopeSnapshot.h"
 
 #include <QTest>
 
@@ -95,6 +96,19 @@ private slots:
         QCOMPARE(fromSeries.mean, m.mean);
         QCOMPARE(fromSeries.rms, m.rms);
         QCOMPARE(fromSeries.rise->endMs, m.rise->endMs);
+
+        // A snapshot (what the window measures in a worker) reads the samples it was taken
+        // with, whatever comes after.
+        const ScopeSnapshot snapshot = scopeSnapshot(recording, recording.buffer.count());
+        for (int i = 600; i < 700; ++i)
+            append(recording, unevenTime(i), 0);
+        const ScopeMeasurements fromSnapshot = measureScope(snapshot, 0, 100.5, 5000);
+        const ScopeMeasurements before
+            = measureScope(scopeSeries(recording, 0, 0, unevenTime(599)), 100.5, 5000);
+        QCOMPARE(fromSnapshot.samples, before.samples);
+        QCOMPARE(fromSnapshot.minimum, before.minimum);
+        QCOMPARE(fromSnapshot.mean, before.mean);
+        QCOMPARE(measureScope(recording, 0, 100.5, 5000).minimum, 0.0); // the zeros came after
     }
 
     void squareWave()

@@ -132,6 +132,34 @@ private slots:
         QCOMPARE(store.time(0), 5);
     }
 
+    // A share read in another thread must not see the store grow, nor lose its samples when
+    // the store is cleared: its own chunk where the store's was still filling.
+    void aShareKeepsItsSamplesWhileTheStoreGrows()
+    {
+        SampleStore store;
+        const qsizetype count = 2 * SampleStore::kChunkSize + 10;
+        fill(store, count);
+        const SampleStore whole = store.share(count);
+        const SampleStore fewer = store.share(SampleStore::kChunkSize + 3);
+        const SampleStore tooMany = store.share(count + 100);
+        for (qsizetype i = count; i < count + SampleStore::kChunkSize; ++i)
+            QVERIFY(store.append(sampleAt(i)));
+        store.clear();
+        QCOMPARE(whole.count(), count);
+        QCOMPARE(fewer.count(), SampleStore::kChunkSize + 3);
+        QCOMPARE(tooMany.count(), count);
+        for (qsizetype i = 0; i < count; ++i) {
+            const ScopeSample expected = sampleAt(i);
+            QCOMPARE(whole.time(i), expected.time);
+            QCOMPARE(whole.value(i, 0), expected.wide[0]);
+            QCOMPARE(whole.value(i, 3), qint32(expected.narrow[1]));
+        }
+        QCOMPARE(fewer.value(SampleStore::kChunkSize + 2, 2),
+                 qint32(sampleAt(SampleStore::kChunkSize + 2).narrow[0]));
+        QCOMPARE(fewer.upperBound(std::numeric_limits<qint64>::max()), fewer.count());
+        QCOMPARE(store.share(5).count(), 0);
+    }
+
     void atMost24BytesASample()
     {
         SampleStore store;

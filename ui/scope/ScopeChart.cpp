@@ -5,6 +5,7 @@
 
 #include "ScopeCursorTable.h"
 #include "ScopeCursors.h"
+#include "ScopeMathTraces.h"
 #include "ScopeTraces.h"
 
 #include "QCustomPlotInclude.h"
@@ -48,6 +49,7 @@ ScopeChart::ScopeChart(QWidget *parent)
     setFocusProxy(m_plot);
 
     m_traces = std::make_unique<ScopeTraces>(m_plot);
+    m_math = std::make_unique<ScopeMathTraces>(m_plot);
     m_cursors = new ScopeCursors(m_plot);
     m_triggerLine = new QCPItemStraightLine(m_plot);
     m_triggerLine->setPen(QPen(Qt::darkRed, 1, Qt::DashLine));
@@ -90,6 +92,19 @@ ScopeChart::ScopeChart(QWidget *parent)
 }
 
 ScopeChart::~ScopeChart() = default;
+
+void ScopeChart::setMathSeries(const QList<std::shared_ptr<const ScopeSeries>> &series)
+{
+    m_math->setSeries(series);
+    showCursorTable();
+    m_dataStale = true;
+    replotSoon();
+}
+
+QList<std::shared_ptr<const ScopeSeries>> ScopeChart::mathSeries() const
+{
+    return m_math->series();
+}
 
 void ScopeChart::setRecording(const ScopeRecording *recording)
 {
@@ -277,6 +292,7 @@ void ScopeChart::refreshData()
 {
     if (!m_recording) {
         m_traces->clear();
+        m_math->clear();
         m_dataStale = false;
         return;
     }
@@ -294,6 +310,7 @@ void ScopeChart::refreshData()
     window.columns = columns;
     window.sampleCount = shownSampleCount();
     m_traces->fill(*m_recording, window);
+    m_math->fill(window);
     m_dataStale = false;
     m_filledColumns = columns;
     m_filledCount = m_recording->buffer.count();
@@ -353,9 +370,15 @@ void ScopeChart::updateReadout()
     if (readout == m_readout)
         return;
     m_readout = readout;
-    m_cursorTable->showReadout(m_readout,
-                               m_recording ? m_recording->channels : ScopeChannels(kChannels));
+    showCursorTable();
     emit cursorsChanged(m_readout);
+}
+
+void ScopeChart::showCursorTable()
+{
+    m_cursorTable->showReadout(m_readout,
+                               m_recording ? m_recording->channels : ScopeChannels(kChannels),
+                               m_math->series());
 }
 
 qsizetype ScopeChart::shownSampleCount() const

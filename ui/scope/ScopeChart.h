@@ -22,6 +22,8 @@ namespace DriveDesk {
 
 class ScopeCursorTable;
 class ScopeCursors;
+class ScopeMathTraces;
+struct ScopeSeries;
 class ScopeTraces;
 
 // A span of recording time in ms, both ends included.
@@ -114,11 +116,20 @@ public:
     void setChannelOwnAxis(int channel, bool own);
     bool hasChannelOwnAxis(int channel) const;
 
+    // The math channels' traces (computed elsewhere from the recording), each drawn on a value
+    // axis of its own; none: no math channels.
+    void setMathSeries(const QList<std::shared_ptr<const ScopeSeries>> &series);
+    QList<std::shared_ptr<const ScopeSeries>> mathSeries() const;
+    ScopeMathTraces *mathTraces() const { return m_math.get(); }
+
     // Cursor 0 or 1 at a recording time (nullopt removes it). Named so as not to hide
     // QWidget::setCursor().
     void setCursorTime(int which, std::optional<double> timeMs);
     std::optional<double> cursorTime(int which) const;
     ScopeCursorReadout cursorReadout() const { return m_readout; }
+    // The samples the chart shows and its cursors read: all of the recording's, or those
+    // there were when the view froze.
+    qsizetype shownSampleCount() const;
     // Where a single shot fired, marked on the chart (nullopt: no mark). A new recording
     // clears it.
     void setTriggerTime(std::optional<qint64> timeMs);
@@ -169,14 +180,15 @@ private:
     void replotSoon(); // with the next pass of the event loop
     void fitValueAxes();
     void updateReadout();
+    void showCursorTable();
     void placeTriggerMark();
     void fitLegend();
-    qsizetype shownSampleCount() const;
     bool checkWritable(const QString &path, QString *error) const;
 
     const ScopeRecording *m_recording = nullptr;
     QCustomPlot *m_plot = nullptr;
     std::unique_ptr<ScopeTraces> m_traces;
+    std::unique_ptr<ScopeMathTraces> m_math;
     ScopeCursors *m_cursors = nullptr;
     ScopeCursorTable *m_cursorTable = nullptr;
     QCPItemStraightLine *m_triggerLine = nullptr;

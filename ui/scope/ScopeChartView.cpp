@@ -2,6 +2,7 @@
 // value axes' fitting.
 #include "ScopeChart.h"
 
+#include "ScopeMathTraces.h"
 #include "ScopeTraces.h"
 
 #include "QCustomPlotInclude.h"
@@ -177,6 +178,7 @@ void ScopeChart::fitValueAxes()
             : std::max(std::abs(span->high) * kFitMargin, 0.5);
         axis->setRange(span->low - margin, span->high + margin);
     }
+    m_math->fitAxes(kFitMargin);
 }
 
 } // namespace DriveDesk

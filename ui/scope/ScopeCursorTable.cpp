@@ -3,6 +3,8 @@
 #include <QHeaderView>
 #include <QLocale>
 
+#include <cmath>
+
 namespace DriveDesk {
 
 namespace {
@@ -10,6 +12,12 @@ namespace {
 QString number(std::optional<double> value, int decimals)
 {
     return value ? QLocale().toString(*value, 'f', decimals) : QString();
+}
+
+// A math channel's value: no scaling says its decimals.
+QString significant(std::optional<double> value)
+{
+    return value ? QLocale().toString(*value, 'g', 5) : QString();
 }
 
 } // namespace
@@ -31,12 +39,13 @@ ScopeCursorTable::ScopeCursorTable(QWidget *parent)
     setVisible(false);
 }
 
-void ScopeCursorTable::showReadout(const ScopeCursorReadout &readout, const ScopeChannels &channels)
+void ScopeCursorTable::showReadout(const ScopeCursorReadout &readout, const ScopeChannels &channels,
+                                   const QList<std::shared_ptr<const ScopeSeries>> &math)
 {
     setVisible(readout.hasCursor());
     if (!readout.hasCursor())
         return;
-    const int rows = 1 + int(readout.channels.size());
+    const int rows = 1 + int(readout.channels.size() + math.size());
     if (rowCount() != rows) {
         setRowCount(rows);
         fitHeight();
@@ -58,6 +67,24 @@ void ScopeCursorTable::showReadout(const ScopeCursorReadout &readout, const Scop
                     row.raw[cursor] ? scaling.format(*row.raw[cursor], false) : QString());
         }
         setCell(i + 1, DifferenceColumn, number(row.difference(), scaling.decimals()));
+    }
+    for (qsizetype m = 0; m < math.size(); ++m) {
+        const ScopeSeries &series = *math.at(m);
+        const int row = int(1 + readout.channels.size() + m);
+        setCell(row, NameColumn, series.label());
+        std::array<std::optional<double>, ScopeCursorReadout::kCursors> values;
+        for (int cursor = 0; cursor < ScopeCursorReadout::kCursors; ++cursor) {
+            // Whole ms, as the channels' samples are read.
+            const qsizetype at = readout.timeMs[cursor]
+                ? series.upperBound(std::floor(*readout.timeMs[cursor])) - 1
+                : -1;
+            if (at >= 0)
+                values[std::size_t(cursor)] = series.values[std::size_t(at)];
+            setCell(row, FirstColumn + cursor, significant(values[std::size_t(cursor)]));
+        }
+        setCell(row, DifferenceColumn,
+                significant(values[0] && values[1] ? std::optional(*values[1] - *values[0])
+                                                   : std::nullopt));
     }
 }
 

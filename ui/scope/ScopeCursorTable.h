@@ -2,12 +2,17 @@
 
 #include "ScopeCursorReadout.h"
 
+#include "scope/ScopeSeries.h"
+
 #include <QTableWidget>
+
+#include <memory>
 
 namespace DriveDesk {
 
 // The cursors' read-out under the chart: a row for the time (seconds from the first sample)
-// and one per drawn channel, each with its value at cursor 1, at cursor 2 and the difference.
+// and one per drawn channel and math channel, each with its value at cursor 1, at cursor 2 and
+// the difference.
 // Hidden while no cursor is placed.
 class ScopeCursorTable : public QTableWidget
 {
@@ -19,7 +24,9 @@ public:
 
     // Values shown as the channels' scalings format them; the difference with as many
     // decimals.
-    void showReadout(const ScopeCursorReadout &readout, const ScopeChannels &channels);
+    // A math channel's value is its trace's at or before the cursor's time, as a channel's.
+    void showReadout(const ScopeCursorReadout &readout, const ScopeChannels &channels,
+                     const QList<std::shared_ptr<const ScopeSeries>> &math = {});
     // The text of a cell ("" for an empty one).
     QString cellText(int row, int column) const;
 

@@ -3,6 +3,9 @@
 #include "ScopeChannelPanel.h"
 #include "ScopeChart.h"
 #include "ScopeCursorTable.h"
+#include "ScopeMathChannels.h"
+#include "ScopeMathDialog.h"
+#include "ScopeMeasurementTable.h"
 
 #include "client/DriveClient.h"
 #include "frame/WindowFeature.h"
@@ -37,6 +40,7 @@ ScopeDock::ScopeDock(WindowFrame &frame, QWidget *parent)
     : QDockWidget(tr("Scope"), parent)
     , m_frame(frame)
     , m_recording(std::make_unique<ScopeRecording>())
+    , m_math(new ScopeMathChannels(this))
 {
     setObjectName(QStringLiteral("scopeDock"));
     auto *content = new QWidget(this);
@@ -71,6 +75,9 @@ ScopeDock::ScopeDock(WindowFrame &frame, QWidget *parent)
     sideLayout->addWidget(m_panel);
     // The cursors' read-out beside the chart, not under it: the chart keeps its height.
     sideLayout->addWidget(m_chart->cursorTable());
+    m_measurements = new ScopeMeasurementTable(side);
+    m_measurements->setObjectName(QStringLiteral("scopeMeasurements"));
+    sideLayout->addWidget(m_measurements);
     sideLayout->addStretch(1);
     splitter->addWidget(side);
     splitter->addWidget(m_chart);
@@ -98,6 +105,8 @@ ScopeDock::ScopeDock(WindowFrame &frame, QWidget *parent)
     connect(m_chart, &ScopeChart::followChanged, m_rollAction, &QAction::setChecked);
     connect(m_chart, &ScopeChart::autoScaleChanged, m_autoScaleAction, &QAction::setChecked);
     connect(m_chart, &ScopeChart::frozenChanged, m_freezeAction, &QAction::setChecked);
+    connect(m_chart, &ScopeChart::cursorsChanged, this, &ScopeDock::measureBetweenCursors);
+    connect(m_math, &ScopeMathChannels::seriesChanged, this, &ScopeDock::mathComputed);
 
     restoreSettings();
     for (int channel = 0; channel < ScopeChart::kChannels; ++channel) {
@@ -151,6 +160,51 @@ void ScopeDock::previewChannels()
     m_panel->setChannels(m_recording->channels);
     m_chart->recordingChanged();
     triggerChannelChanged();
+}
+
+void ScopeDock::measureBetweenCursors()
+{
+    QList<ScopeMeasuredSeries> math;
+    for (const std::shared_ptr<const ScopeSeries> &series : m_math->series())
+        math << ScopeMeasuredSeries { series->title, series };
+    m_measurements->measure(*m_recording, m_chart->shownSampleCount(), m_chart->cursorReadout(),
+                            math);
+}
+
+void ScopeDock::addMathChannel()
+{
+    QStringList channels;
+    for (int channel = 0; channel < m_recording->channels.size(); ++channel)
+        channels << m_recording->channels.at(channel).title(channel);
+    auto *dialog = new ScopeMathDialog(channels, this);
+    connect(dialog, &QDialog::finished, dialog, &QObject::deleteLater);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] {
+        m_recording->math << dialog->definition();
+        computeMath();
+    });
+    dialog->open();
+}
+
+void ScopeDock::removeMathChannels()
+{
+    m_recording->math.clear();
+    computeMath();
+}
+
+void ScopeDock::computeMath()
+{
+    m_removeMathAction->setEnabled(!m_recording->math.isEmpty());
+    m_math->compute(*m_recording, m_chart->shownSampleCount());
+}
+
+void ScopeDock::mathComputed()
+{
+    m_chart->setMathSeries(m_math->series());
+    measureBetweenCursors();
+    if (!m_math->errors().isEmpty())
+        showStatus(tr("A math channel cannot be computed: %1")
+                       .arg(m_math->errors().join(QStringLiteral("; "))),
+                   true);
 }
 
 bool ScopeDock::isRecording() const
@@ -210,6 +264,12 @@ bool ScopeDock::exportCsv(const QString &path, bool visibleOnly, QString *error)
         options.toMs = range.toMs;
     }
     options.channels = m_recording->recordedChannels();
+    for (const std::shared_ptr<const ScopeSeries> &series : m_math->series())
+        options.math << series.get();
+    const std::optional<double> first = m_chart->cursorTime(0);
+    const std::optional<double> second = m_chart->cursorTime(1);
+    if (first && second)
+        options.measureBetweenMs = std::pair(*first, *second);
     return saveScopeCsv(path, *m_recording, options, error);
 }
 

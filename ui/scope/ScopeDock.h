@@ -24,6 +24,8 @@ namespace DriveDesk {
 class DriveClient;
 class ScopeChannelPanel;
 class ScopeChart;
+class ScopeMathChannels;
+class ScopeMeasurementTable;
 class WindowFrame;
 struct ScopeChannelsOutcome;
 struct ScopeOfflineRecords;
@@ -48,6 +50,8 @@ public:
 
     ScopeChart *chart() const { return m_chart; }
     ScopeChannelPanel *channelPanel() const { return m_panel; }
+    ScopeMeasurementTable *measurementTable() const { return m_measurements; }
+    ScopeMathChannels *mathChannels() const { return m_math; }
     const ScopeRecording *recording() const { return m_recording.get(); }
     bool isRecording() const;
 
@@ -59,7 +63,8 @@ public:
     // The recording shown, whole, as a recording file (.ddscope); false with the reason, and
     // no file at `path`.
     bool saveRecording(const QString &path, QString *error = nullptr);
-    // The recording as CSV: everything, or only the visible time range.
+    // The recording as CSV: everything, or only the visible time range; with both cursors
+    // placed, their measurements after the samples.
     bool exportCsv(const QString &path, bool visibleOnly, QString *error = nullptr);
 
     void saveSettings() const;
@@ -79,6 +84,12 @@ private:
     void showStatus(const QString &text, bool problem = false);
     // Before anything is recorded, the chart's legend and axes name the sources chosen.
     void previewChannels();
+    void measureBetweenCursors();
+    // Math channels: the recording's definitions, computed and drawn.
+    void addMathChannel();
+    void removeMathChannels();
+    void computeMath();
+    void mathComputed();
 
     // ScopeDockRecording.cpp
     void toggleRecording(bool on);
@@ -128,6 +139,9 @@ private:
 
     ScopeChart *m_chart = nullptr;
     ScopeChannelPanel *m_panel = nullptr;
+    ScopeMeasurementTable *m_measurements = nullptr;
+    ScopeMathChannels *m_math = nullptr;
+    QAction *m_removeMathAction = nullptr;
     QLabel *m_status = nullptr;
     QProgressBar *m_progress = nullptr;
     QAction *m_recordAction = nullptr;

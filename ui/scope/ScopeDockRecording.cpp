@@ -3,6 +3,7 @@
 
 #include "ScopeChannelPanel.h"
 #include "ScopeChart.h"
+#include "ScopeMathChannels.h"
 
 #include "client/DriveClient.h"
 #include "client/WhenFinished.h"
@@ -99,6 +100,8 @@ void ScopeDock::channelsAssigned(const ScopeChannelsOutcome &outcome)
     auto recording = std::make_unique<ScopeRecording>();
     recording->channels = scopeChannels(m_drive, outcome.assignment);
     recording->source = m_client ? m_client->settings().displayName() : QString();
+    // The math channels go on with the next recording: they are the user's way to read one.
+    recording->math = m_recording->math;
     replaceRecording(std::move(recording));
     if (m_triggerAction->isChecked()) {
         m_trigger.setSettings(triggerSettings());
@@ -128,11 +131,15 @@ void ScopeDock::replaceRecording(std::unique_ptr<ScopeRecording> recording)
     m_recording = std::move(recording);
     m_panel->setChannels(m_recording->channels);
     triggerChannelChanged();
+    computeMath();
 }
 
 void ScopeDock::samplesAppended()
 {
     m_chart->samplesAppended();
+    // Computed again as the recording grows, but never queued behind a computing that runs.
+    if (!m_recording->math.isEmpty() && !m_math->isComputing())
+        computeMath();
     if (!m_triggerAction->isChecked() || m_trigger.state() == ScopeTrigger::State::Idle)
         return;
     const ScopeTrigger::State before = m_trigger.state();
@@ -191,6 +198,7 @@ void ScopeDock::recordingFinished(const ScopePollEnd &end)
                        .arg(end.counts.lost)
                        .arg(end.counts.failed));
     }
+    computeMath(); // with every sample, whatever was computed on the way
     updateActions();
 }
 

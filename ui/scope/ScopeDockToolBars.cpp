@@ -90,6 +90,13 @@ void ScopeDock::buildToolBars()
                                           &ScopeDock::readOfflineRecords);
     m_offlineAction->setObjectName(QStringLiteral("scopeOfflineAction"));
     fileMenu->addSeparator();
+    fileMenu->addAction(tr("Add Math Channel..."), this, &ScopeDock::addMathChannel)
+        ->setObjectName(QStringLiteral("scopeAddMathAction"));
+    m_removeMathAction = fileMenu->addAction(tr("Remove Math Channels"), this,
+                                             &ScopeDock::removeMathChannels);
+    m_removeMathAction->setObjectName(QStringLiteral("scopeRemoveMathAction"));
+    m_removeMathAction->setEnabled(false);
+    fileMenu->addSeparator();
     fileMenu->addAction(tr("Export All as CSV..."), this, [this] { chooseCsv(false); })
         ->setObjectName(QStringLiteral("scopeCsvAllAction"));
     fileMenu->addAction(tr("Export Visible Range as CSV..."), this, [this] { chooseCsv(true); })

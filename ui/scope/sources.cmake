@@ -7,6 +7,10 @@ target_sources(drivedesk_ui PRIVATE
     scope/ScopeCursorReadout.cpp scope/ScopeCursorReadout.h
     scope/ScopeCursors.cpp scope/ScopeCursors.h
     scope/ScopeCursorTable.cpp scope/ScopeCursorTable.h
+    scope/ScopeMeasurementTable.cpp scope/ScopeMeasurementTable.h
+    scope/ScopeMathChannels.cpp scope/ScopeMathChannels.h
+    scope/ScopeMathDialog.cpp scope/ScopeMathDialog.h
+    scope/ScopeMathTraces.cpp scope/ScopeMathTraces.h
     scope/ScopeTraces.cpp scope/ScopeTraces.h
     scope/QCustomPlotInclude.h
     scope/ScopeChannelPanel.cpp scope/ScopeChannelPanel.h

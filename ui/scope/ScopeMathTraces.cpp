@@ -1,0 +1,125 @@
+#include "ScopeMathTraces.h"
+
+#include "QCustomPlotInclude.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace DriveDesk {
+
+ScopeMathTraces::ScopeMathTraces(QCustomPlot *plot)
+    : m_plot(plot)
+{ }
+
+QColor ScopeMathTraces::defaultColor(int index)
+{
+    static const QColor colors[] = { QColor(0xE6, 0x9F, 0x00), QColor(0x56, 0xB4, 0xE9),
+                                     QColor(0x00, 0x00, 0x00) };
+    return colors[index % 3];
+}
+
+void ScopeMathTraces::setSeries(const QList<std::shared_ptr<const ScopeSeries>> &series)
+{
+    // The graphs are kept where the traces only got new values (a growing recording).
+    while (m_traces.size() > series.size()) {
+        const Trace trace = m_traces.takeLast();
+        m_plot->removeGraph(trace.graph); // before the axis it is drawn against
+        m_plot->axisRect()->removeAxis(trace.axis);
+    }
+    while (m_traces.size() < series.size()) {
+        Trace trace;
+        trace.axis = m_plot->axisRect()->addAxis(QCPAxis::atRight);
+        trace.graph = m_plot->addGraph(m_plot->xAxis, trace.axis);
+        trace.graph->setAdaptiveSampling(false);
+        const QColor color = defaultColor(int(m_traces.size()));
+        trace.graph->setPen(QPen(color, 1.0, Qt::DashLine));
+        trace.axis->setBasePen(QPen(color));
+        trace.axis->setTickPen(QPen(color));
+        trace.axis->setSubTickPen(QPen(color));
+        trace.axis->setLabelColor(color);
+        trace.axis->setTickLabelColor(color);
+        m_traces.append(trace);
+    }
+    m_series = series;
+    for (qsizetype i = 0; i < m_traces.size(); ++i) {
+        const QString label = m_series.at(i)->label();
+        m_traces[i].graph->setName(label);
+        m_traces[i].axis->setLabel(label);
+    }
+}
+
+void ScopeMathTraces::fill(const ScopeTraceWindow &window)
+{
+    const double from = double(window.fromMs);
+    const double width = std::max(1.0, double(window.toMs - window.fromMs)) / window.columns;
+    for (qsizetype i = 0; i < m_traces.size(); ++i) {
+        const ScopeSeries &series = *m_series.at(i);
+        Trace &trace = m_traces[i];
+        trace.extent.reset();
+        QVector<QCPGraphData> points;
+        const auto add = [&](double timeMs, double value, bool inView) {
+            points.append(QCPGraphData((timeMs - double(window.originMs)) / 1000.0, value));
+            if (!inView)
+                return;
+            trace.extent = trace.extent
+                ? ScopeValueSpan { std::min(trace.extent->low, value),
+                                   std::max(trace.extent->high, value) }
+                : ScopeValueSpan { value, value };
+        };
+        // The values just outside the view too, so that the line reaches its edges.
+        const qsizetype begin = series.lowerBound(from);
+        const qsizetype end = series.upperBound(double(window.toMs));
+        if (begin > 0)
+            add(series.timeMs[std::size_t(begin - 1)], series.values[std::size_t(begin - 1)], false);
+        qsizetype at = begin;
+        while (at < end) {
+            const qint64 column = qint64((series.timeMs[std::size_t(at)] - from) / width);
+            const double columnEnd = from + double(column + 1) * width;
+            qsizetype last = at;
+            double low = series.values[std::size_t(at)];
+            double high = low;
+            while (last + 1 < end && series.timeMs[std::size_t(last + 1)] < columnEnd) {
+                ++last;
+                low = std::min(low, series.values[std::size_t(last)]);
+                high = std::max(high, series.values[std::size_t(last)]);
+            }
+            if (last - at < 2) {
+                for (qsizetype k = at; k <= last; ++k)
+                    add(series.timeMs[std::size_t(k)], series.values[std::size_t(k)], true);
+            } else {
+                const double time = (series.timeMs[std::size_t(at)]
+                                     + series.timeMs[std::size_t(last)]) / 2;
+                const bool fromHigh = !points.isEmpty()
+                    && std::abs(points.last().value - high) < std::abs(points.last().value - low);
+                add(time, fromHigh ? high : low, true);
+                add(time, fromHigh ? low : high, true);
+            }
+            at = last + 1;
+        }
+        if (end < series.count())
+            add(series.timeMs[std::size_t(end)], series.values[std::size_t(end)], false);
+        trace.graph->data()->set(points, true);
+    }
+}
+
+void ScopeMathTraces::clear()
+{
+    for (Trace &trace : m_traces) {
+        trace.graph->data()->clear();
+        trace.extent.reset();
+    }
+}
+
+void ScopeMathTraces::fitAxes(double margin)
+{
+    for (const Trace &trace : std::as_const(m_traces)) {
+        if (!trace.extent)
+            continue;
+        const ScopeValueSpan &span = *trace.extent;
+        const double room = span.high > span.low ? (span.high - span.low) * margin
+                                                 : std::max(std::abs(span.high) * margin, 0.5);
+        trace.axis->setRange(span.low - room, span.high + room);
+    }
+}
+
+} // namespace DriveDesk
