@@ -69,6 +69,44 @@
     </message>
 </context>
 <context>
+    <name>BackupCommit</name>
+    <message>
+        <source>%1: backup, %2 changed</source>
+        <translation>%1: Sicherung, %2 geändert</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>%1 kann nicht gelesen werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>BackupRepository</name>
+    <message>
+        <source>cannot make the directory %1</source>
+        <translation>das Verzeichnis %1 kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>the directory %1 does not exist</source>
+        <translation>das Verzeichnis %1 gibt es nicht</translation>
+    </message>
+    <message>
+        <source>%1 is not a git repository of backups: make it one with plant backup --commit</source>
+        <translation>%1 ist kein Git-Repository mit Sicherungen: plant backup --commit macht es zu einem</translation>
+    </message>
+    <message>
+        <source>there is no revision on or before %1 in %2</source>
+        <translation>in %2 gibt es keine Revision bis einschließlich %1</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is no revision of %2: give a commit id, a tag or a date like 2026-11-24</source>
+        <translation>„%1“ ist keine Revision von %2: eine Commit-ID, ein Tag oder ein Datum wie 2026-11-24 angeben</translation>
+    </message>
+    <message>
+        <source>git cat-file: no object %1</source>
+        <translation>git cat-file: kein Objekt %1</translation>
+    </message>
+</context>
+<context>
     <name>ChosenValues</name>
     <message>
         <source>%1: the target has no such parameter</source>
@@ -84,6 +122,29 @@
     <message>
         <source>no journal yet at %1: nothing was written</source>
         <translation>noch kein Journal unter %1: nichts wurde geschrieben</translation>
+    </message>
+</context>
+<context>
+    <name>CliPlantHistory</name>
+    <message>
+        <source>no revision</source>
+        <translation>keine Revision</translation>
+    </message>
+    <message>
+        <source>cannot make a temporary folder: %1</source>
+        <translation>ein temporärer Ordner kann nicht angelegt werden: %1</translation>
+    </message>
+    <message>
+        <source>no drive saved: nothing committed</source>
+        <translation>kein Umrichter gesichert: kein Commit angelegt</translation>
+    </message>
+    <message>
+        <source>no setting changed since the last commit: nothing committed</source>
+        <translation>seit dem letzten Commit keine Einstellung geändert: kein Commit angelegt</translation>
+    </message>
+    <message>
+        <source>committed %1: %2</source>
+        <translation>Commit %1 angelegt: %2</translation>
     </message>
 </context>
 <context>
@@ -548,6 +609,37 @@
     </message>
 </context>
 <context>
+    <name>DriveChange</name>
+    <message>
+        <source>%1 %2: no longer on the drive (was %3)</source>
+        <translation>%1 %2: nicht mehr im Umrichter (war %3)</translation>
+    </message>
+    <message>
+        <source>%1 %2: new on the drive, %3</source>
+        <translation>%1 %2: neu im Umrichter, %3</translation>
+    </message>
+    <message>
+        <source>%1 %2: %3 -&gt; %4</source>
+        <translation>%1 %2: %3 -&gt; %4</translation>
+    </message>
+    <message>
+        <source>%1 %2 set %3: %4 -&gt; %5</source>
+        <translation>%1 %2 Satz %3: %4 -&gt; %5</translation>
+    </message>
+    <message>
+        <source>%1 added</source>
+        <translation>%1 hinzugekommen</translation>
+    </message>
+    <message>
+        <source>%1 gone</source>
+        <translation>%1 entfallen</translation>
+    </message>
+    <message>
+        <source>%1: the file cannot be read: %2</source>
+        <translation>%1: die Datei kann nicht gelesen werden: %2</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk</name>
     <message>
         <source>offline records of %1, one a millisecond assumed</source>
@@ -709,6 +801,18 @@
     <message>
         <source>downloaded or already equal</source>
         <translation>geladen oder schon gleich</translation>
+    </message>
+    <message>
+        <source>nothing was written: %1 (--no-journal downloads without it)</source>
+        <translation>es wurde nichts geschrieben: %1 (--no-journal lädt ohne Journal)</translation>
+    </message>
+    <message>
+        <source>plant download of %1</source>
+        <translation>Anlagen-Download: %1</translation>
+    </message>
+    <message>
+        <source>--no-journal downloads without it</source>
+        <translation>--no-journal lädt ohne Journal</translation>
     </message>
 </context>
 <context>
@@ -933,6 +1037,38 @@
     <message>
         <source>write %1</source>
         <translation>%1 schreiben</translation>
+    </message>
+    <message>
+        <source>no journal yet at %1: there is nothing to revert</source>
+        <translation>noch kein Journal unter %1: es gibt nichts zurückzusetzen</translation>
+    </message>
+    <message>
+        <source>left out: %1</source>
+        <translation>ausgelassen: %1</translation>
+    </message>
+    <message>
+        <source>nothing was written</source>
+        <translation>es wurde nichts geschrieben</translation>
+    </message>
+    <message>
+        <source>no entry of this drive to revert; nothing was written</source>
+        <translation>kein Eintrag dieses Umrichters zum Zurücksetzen; es wurde nichts geschrieben</translation>
+    </message>
+    <message>
+        <source>%1: the values before, back to the drive</source>
+        <translation>%1: die Werte von vorher zurück in den Umrichter</translation>
+    </message>
+    <message>
+        <source>nothing was written: %1 (--no-journal downloads without it)</source>
+        <translation>es wurde nichts geschrieben: %1 (--no-journal lädt ohne Journal)</translation>
+    </message>
+    <message>
+        <source>download of %1</source>
+        <translation>Download: %1</translation>
+    </message>
+    <message>
+        <source>--no-journal downloads without it</source>
+        <translation>--no-journal lädt ohne Journal</translation>
     </message>
 </context>
 <context>
@@ -1890,6 +2026,10 @@
         <source>the values chosen from %1</source>
         <translation>die aus %1 gewählten Werte</translation>
     </message>
+    <message>
+        <source>download of %1</source>
+        <translation>Download: %1</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::DownloadRun</name>
@@ -1920,6 +2060,18 @@
     <message>
         <source>stopped by the user</source>
         <translation>vom Benutzer abgebrochen</translation>
+    </message>
+    <message>
+        <source>the journal cannot record the download: %1; nothing was written</source>
+        <translation>das Journal kann den Download nicht festhalten: %1; es wurde nichts geschrieben</translation>
+    </message>
+    <message>
+        <source>%1 is not described</source>
+        <translation>%1 ist nicht beschrieben</translation>
+    </message>
+    <message>
+        <source>the download ended first</source>
+        <translation>der Download endete vorher</translation>
     </message>
 </context>
 <context>
@@ -2579,6 +2731,218 @@
     <message>
         <source>Hexadecimal, %1 .. %2</source>
         <translation>Hexadezimal, %1 .. %2</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::JournalDock</name>
+    <message>
+        <source>Journal</source>
+        <translation>Journal</translation>
+    </message>
+    <message>
+        <source>Drive:</source>
+        <translation>Umrichter:</translation>
+    </message>
+    <message>
+        <source>serial number, link or link@address</source>
+        <translation>Seriennummer, Verbindung oder Verbindung@Adresse</translation>
+    </message>
+    <message>
+        <source>Parameter:</source>
+        <translation>Parameter:</translation>
+    </message>
+    <message>
+        <source>op.28 or 0x0A1C</source>
+        <translation>op.28 oder 0x0A1C</translation>
+    </message>
+    <message>
+        <source>User:</source>
+        <translation>Benutzer:</translation>
+    </message>
+    <message>
+        <source>login name</source>
+        <translation>Anmeldename</translation>
+    </message>
+    <message>
+        <source>Since:</source>
+        <translation>Von:</translation>
+    </message>
+    <message>
+        <source>2026-11-24 or 2026-11-24 10:42</source>
+        <translation>2026-11-24 oder 2026-11-24 10:42</translation>
+    </message>
+    <message>
+        <source>Until:</source>
+        <translation>Bis:</translation>
+    </message>
+    <message>
+        <source>Search:</source>
+        <translation>Suche:</translation>
+    </message>
+    <message>
+        <source>any field of the entries shown</source>
+        <translation>beliebiges Feld der gezeigten Einträge</translation>
+    </message>
+    <message>
+        <source>This Drive</source>
+        <translation>Dieser Umrichter</translation>
+    </message>
+    <message>
+        <source>Show the entries of the connected drive</source>
+        <translation>Die Einträge des verbundenen Umrichters zeigen</translation>
+    </message>
+    <message>
+        <source>Load Older</source>
+        <translation>Ältere laden</translation>
+    </message>
+    <message numerus="yes">
+        <source>Read the %n entries before the oldest shown</source>
+        <translation>
+            <numerusform>%n Eintrag vor dem ältesten gezeigten lesen</numerusform>
+            <numerusform>%n Einträge vor dem ältesten gezeigten lesen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Refresh</source>
+        <translation>Aktualisieren</translation>
+    </message>
+    <message>
+        <source>Revert...</source>
+        <translation>Zurücksetzen...</translation>
+    </message>
+    <message>
+        <source>Write the values before the selected entries back to the drive, after a last look at what will change</source>
+        <translation>Die Werte von vor den gewählten Einträgen zurück in den Umrichter schreiben, nach einem letzten Blick auf das, was sich ändert</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not after &apos;%2&apos;</source>
+        <translation>„%1“ liegt nicht nach „%2“</translation>
+    </message>
+    <message>
+        <source>Reading the journal...</source>
+        <translation>Journal wird gelesen...</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n entries</source>
+        <translation>
+            <numerusform>%n Eintrag</numerusform>
+            <numerusform>%n Einträge</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n entries match the search</source>
+        <translation>
+            <numerusform>Suchtreffer: %1 von %n Eintrag</numerusform>
+            <numerusform>Suchtreffer: %1 von %n Einträgen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>older ones not read yet</source>
+        <translation>ältere noch nicht gelesen</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::JournalFeature</name>
+    <message>
+        <source>&amp;Journal</source>
+        <translation>&amp;Journal</translation>
+    </message>
+    <message>
+        <source>The values written to drives: who, when, before and after</source>
+        <translation>Die in Umrichter geschriebenen Werte: wer, wann, vorher und nachher</translation>
+    </message>
+    <message>
+        <source>Revert</source>
+        <translation>Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Nothing was written: no drive is connected.</source>
+        <translation>Es wurde nichts geschrieben: kein Umrichter verbunden.</translation>
+    </message>
+    <message>
+        <source>Nothing was written:
+%1</source>
+        <translation>Es wurde nichts geschrieben:
+%1</translation>
+    </message>
+    <message>
+        <source>the values before %1</source>
+        <translation>die Werte von vorher (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::JournalTableModel</name>
+    <message>
+        <source>active</source>
+        <translation>aktiv</translation>
+    </message>
+    <message>
+        <source>(password)</source>
+        <translation>(Passwort)</translation>
+    </message>
+    <message>
+        <source>%1 on %2, software %3, serial number %4</source>
+        <translation>%1 an %2, Software %3, Seriennummer %4</translation>
+    </message>
+    <message>
+        <source>Answered %1</source>
+        <translation>Beantwortet %1</translation>
+    </message>
+    <message>
+        <source>Entry</source>
+        <translation>Eintrag</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>User</source>
+        <translation>Benutzer</translation>
+    </message>
+    <message>
+        <source>Host</source>
+        <translation>Rechner</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Programm</translation>
+    </message>
+    <message>
+        <source>Job</source>
+        <translation>Auftrag</translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation>Umrichter</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Set</source>
+        <translation>Satz</translation>
+    </message>
+    <message>
+        <source>Before</source>
+        <translation>Vorher</translation>
+    </message>
+    <message>
+        <source>Written</source>
+        <translation>Geschrieben</translation>
+    </message>
+    <message>
+        <source>Read back</source>
+        <translation>Zurückgelesen</translation>
+    </message>
+    <message>
+        <source>Outcome</source>
+        <translation>Ergebnis</translation>
     </message>
 </context>
 <context>
@@ -3371,6 +3735,10 @@
         <source>the editor is connected to this line (%1): disconnect it (Drive &gt; Disconnect) and start again; %2</source>
         <translation>der Editor ist mit dieser Leitung verbunden (%1): trennen Sie ihn (Umrichter &gt; Trennen) und starten Sie erneut; %2</translation>
     </message>
+    <message>
+        <source>plant download of %1</source>
+        <translation>Anlagen-Download: %1</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::PlantFeature</name>
@@ -3487,6 +3855,61 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::PlantLinkRun</name>
+    <message>
+        <source>refused, nothing written: %1</source>
+        <translation>abgelehnt, nichts geschrieben: %1</translation>
+    </message>
+    <message>
+        <source>not everything was written; the report says what the drive holds</source>
+        <translation>nicht alles wurde geschrieben; der Bericht sagt, was der Umrichter enthält</translation>
+    </message>
+    <message>
+        <source>%1 does not exist</source>
+        <translation>%1 gibt es nicht</translation>
+    </message>
+    <message>
+        <source>cannot connect: %1</source>
+        <translation>keine Verbindung möglich: %1</translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation>verbinde</translation>
+    </message>
+    <message>
+        <source>searching</source>
+        <translation>suche</translation>
+    </message>
+    <message>
+        <source>no drive answered</source>
+        <translation>kein Umrichter hat geantwortet</translation>
+    </message>
+    <message>
+        <source>the search stopped: %1</source>
+        <translation>die Suche wurde beendet: %1</translation>
+    </message>
+    <message>
+        <source>the search was stopped after %1 of %2 addresses</source>
+        <translation>die Suche wurde nach %1 von %2 Adressen angehalten</translation>
+    </message>
+    <message>
+        <source>stopped before it was read</source>
+        <translation>angehalten, bevor er gelesen wurde</translation>
+    </message>
+    <message>
+        <source>the connection was lost: %1</source>
+        <translation>die Verbindung ging verloren: %1</translation>
+    </message>
+    <message>
+        <source>DIN66019 carries parameter values only: the drive has no parameter list to read or write; use din66019ii</source>
+        <translation>DIN66019 überträgt nur Parameterwerte: es gibt keine Parameterliste zu lesen oder zu schreiben; din66019ii verwenden</translation>
+    </message>
+    <message>
+        <source>stopped before the drive was read whole; nothing saved</source>
+        <translation>angehalten, bevor der Umrichter ganz gelesen war; nichts gesichert</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::PlantModel</name>
     <message>
         <source>not searched</source>
@@ -3596,65 +4019,6 @@
     <message>
         <source>&amp;Write to the Drives</source>
         <translation>In die Umrichter &amp;schreiben</translation>
-    </message>
-</context>
-<context>
-    <name>DriveDesk::PlantRun</name>
-    <message>
-        <source>cannot connect: %1</source>
-        <translation>keine Verbindung möglich: %1</translation>
-    </message>
-    <message>
-        <source>connecting</source>
-        <translation>verbinde</translation>
-    </message>
-    <message>
-        <source>searching</source>
-        <translation>suche</translation>
-    </message>
-    <message>
-        <source>the search stopped: %1</source>
-        <translation>die Suche wurde beendet: %1</translation>
-    </message>
-    <message>
-        <source>stopped before it was read</source>
-        <translation>angehalten, bevor er gelesen wurde</translation>
-    </message>
-    <message>
-        <source>%1 does not exist</source>
-        <translation>%1 gibt es nicht</translation>
-    </message>
-    <message>
-        <source>stopped before the drive was read whole; nothing saved</source>
-        <translation>angehalten, bevor der Umrichter ganz gelesen war; nichts gesichert</translation>
-    </message>
-    <message>
-        <source>the file is of %1, the drive %2</source>
-        <translation>die Datei ist von %1, der Umrichter %2</translation>
-    </message>
-    <message>
-        <source>no drive answered</source>
-        <translation>kein Umrichter hat geantwortet</translation>
-    </message>
-    <message>
-        <source>the search was stopped after %1 of %2 addresses</source>
-        <translation>die Suche wurde nach %1 von %2 Adressen angehalten</translation>
-    </message>
-    <message>
-        <source>DIN66019 carries parameter values only: the drive has no parameter list to read or write; use din66019ii</source>
-        <translation>DIN66019 überträgt nur Parameterwerte: es gibt keine Parameterliste zu lesen oder zu schreiben; din66019ii verwenden</translation>
-    </message>
-    <message>
-        <source>refused, nothing written: %1</source>
-        <translation>abgelehnt, nichts geschrieben: %1</translation>
-    </message>
-    <message>
-        <source>not everything was written; the report says what the drive holds</source>
-        <translation>nicht alles wurde geschrieben; der Bericht sagt, was der Umrichter enthält</translation>
-    </message>
-    <message>
-        <source>the file&apos;s metadata is not the drive&apos;s: %1</source>
-        <translation>die Metadaten der Datei sind nicht die des Umrichters: %1</translation>
     </message>
 </context>
 <context>
@@ -4322,12 +4686,132 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
         <source>the connection went away</source>
         <translation>die Verbindung ist weg</translation>
     </message>
+    <message>
+        <source>A math channel cannot be computed: %1</source>
+        <translation>Ein Mathe-Kanal kann nicht berechnet werden: %1</translation>
+    </message>
+    <message>
+        <source>Add Math Channel...</source>
+        <translation>Mathe-Kanal hinzufügen...</translation>
+    </message>
+    <message>
+        <source>Remove Math Channels</source>
+        <translation>Mathe-Kanäle entfernen</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ScopeFeature</name>
     <message>
         <source>&amp;Scope</source>
         <translation>&amp;Scope</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ScopeMathDialog</name>
+    <message>
+        <source>Add Math Channel</source>
+        <translation>Mathe-Kanal hinzufügen</translation>
+    </message>
+    <message>
+        <source>Derivative (d/dt)</source>
+        <translation>Ableitung (d/dt)</translation>
+    </message>
+    <message>
+        <source>Integral over time</source>
+        <translation>Integral über die Zeit</translation>
+    </message>
+    <message>
+        <source>Difference (first − second)</source>
+        <translation>Differenz (erster − zweiter)</translation>
+    </message>
+    <message>
+        <source>Sum (first + second)</source>
+        <translation>Summe (erster + zweiter)</translation>
+    </message>
+    <message>
+        <source>Moving average</source>
+        <translation>Gleitender Mittelwert</translation>
+    </message>
+    <message>
+        <source>&amp;Kind:</source>
+        <translation>&amp;Art:</translation>
+    </message>
+    <message>
+        <source>&amp;Channel:</source>
+        <translation>&amp;Kanal:</translation>
+    </message>
+    <message>
+        <source>&amp;Second channel:</source>
+        <translation>&amp;Zweiter Kanal:</translation>
+    </message>
+    <message>
+        <source>samples</source>
+        <translation>Abtastwerte</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <source>&amp;Window:</source>
+        <translation>&amp;Fenster:</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ScopeMeasurementTable</name>
+    <message>
+        <source>%1 %2</source>
+        <comment>number and unit</comment>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>Minimum</source>
+        <translation>Minimum</translation>
+    </message>
+    <message>
+        <source>Maximum</source>
+        <translation>Maximum</translation>
+    </message>
+    <message>
+        <source>Peak to peak</source>
+        <translation>Spitze-Spitze</translation>
+    </message>
+    <message>
+        <source>Mean</source>
+        <translation>Mittelwert</translation>
+    </message>
+    <message>
+        <source>RMS</source>
+        <translation>Effektivwert</translation>
+    </message>
+    <message>
+        <source>Rise time</source>
+        <translation>Anstiegszeit</translation>
+    </message>
+    <message>
+        <source>Rise rate</source>
+        <translation>Anstiegsrate</translation>
+    </message>
+    <message>
+        <source>Fall time</source>
+        <translation>Abfallzeit</translation>
+    </message>
+    <message>
+        <source>Fall rate</source>
+        <translation>Abfallrate</translation>
+    </message>
+    <message>
+        <source>Between the cursors, both included. Mean and RMS of the line through the samples; rise and fall between 10 % and 90 % of the span from minimum to maximum.</source>
+        <translation>Zwischen den Cursorn, beide eingeschlossen. Mittelwert und Effektivwert der Linie durch die Abtastwerte; Anstieg und Abfall zwischen 10 % und 90 % der Spanne vom Minimum zum Maximum.</translation>
+    </message>
+    <message>
+        <source>%1 [%2]</source>
+        <comment>channel title and unit</comment>
+        <translation>%1 [%2]</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>ms</translation>
     </message>
 </context>
 <context>
@@ -4762,6 +5246,10 @@ Verbindungsdialog.
         <source>the journal cannot record it: %1</source>
         <translation>das Journal kann es nicht festhalten: %1</translation>
     </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
 </context>
 <context>
     <name>EditText</name>
@@ -4846,6 +5334,21 @@ Verbindungsdialog.
     </message>
 </context>
 <context>
+    <name>Git</name>
+    <message>
+        <source>git cannot be run (%1): install git</source>
+        <translation>git kann nicht ausgeführt werden (%1): git installieren</translation>
+    </message>
+    <message>
+        <source>git %1 failed with exit code %2</source>
+        <translation>git %1 ist mit Exit-Code %2 fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>git %1 failed: %2</source>
+        <translation>git %1 fehlgeschlagen: %2</translation>
+    </message>
+</context>
+<context>
     <name>GroupProperties</name>
     <message>
         <source>password level: %1</source>
@@ -4908,6 +5411,14 @@ Verbindungsdialog.
     <message>
         <source>unknown: %1</source>
         <translation>unbekannt: %1</translation>
+    </message>
+    <message>
+        <source>%1 since %2 by %3</source>
+        <translation>%1 seit %2 von %3</translation>
+    </message>
+    <message>
+        <source>%1 since %2 by %3, was %4</source>
+        <translation>%1 seit %2 von %3, vorher %4</translation>
     </message>
 </context>
 <context>
@@ -5045,6 +5556,53 @@ Verbindungsdialog.
     <message>
         <source>the journal %1 was made by a newer DriveDesk (journal version %2; this one knows up to %3): it is not written</source>
         <translation>das Journal %1 stammt von einem neueren DriveDesk (Journalversion %2; dieses kennt bis %3): es wird nicht geschrieben</translation>
+    </message>
+</context>
+<context>
+    <name>JournalRevert</name>
+    <message>
+        <source>revert</source>
+        <translation>Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>revert of entry %1</source>
+        <translation>Zurücksetzen von Eintrag %1</translation>
+    </message>
+    <message>
+        <source>revert of entries %1..%2</source>
+        <translation>Zurücksetzen der Einträge %1..%2</translation>
+    </message>
+    <message>
+        <source>entry %1: the journal has no such entry</source>
+        <translation>Eintrag %1: das Journal hat keinen solchen Eintrag</translation>
+    </message>
+    <message>
+        <source>entry %1 (%2)</source>
+        <translation>Eintrag %1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1 was written to another drive (%2), not the one connected (%3)</source>
+        <translation>%1 wurde in einen anderen Umrichter (%2) geschrieben, nicht in den verbundenen (%3)</translation>
+    </message>
+    <message>
+        <source>%1 is a password entered: the journal keeps no value of it, so it cannot be reverted</source>
+        <translation>%1 ist eine Passworteingabe: das Journal hält keinen Wert davon fest, daher kann sie nicht zurückgesetzt werden</translation>
+    </message>
+    <message>
+        <source>%1: the drive has no such parameter</source>
+        <translation>%1: der Umrichter hat keinen solchen Parameter</translation>
+    </message>
+    <message>
+        <source>%1: the value before was not read, so there is none to write back</source>
+        <translation>%1: der Wert davor wurde nicht gelesen, daher gibt es keinen zum Zurückschreiben</translation>
+    </message>
+    <message>
+        <source>%1 was written to the active set, and the journal does not say which set that was</source>
+        <translation>%1 wurde in den aktiven Satz geschrieben, und das Journal sagt nicht, welcher Satz das war</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; names no entry: give an entry&apos;s number (12) or a range (12..15)</source>
+        <translation>„%1“ nennt keinen Eintrag: eine Eintragsnummer (12) oder einen Bereich (12..15) angeben</translation>
     </message>
 </context>
 <context>
@@ -6000,6 +6558,13 @@ Verbindungsdialog.
     </message>
 </context>
 <context>
+    <name>RunJournal</name>
+    <message>
+        <source>Drive &gt; Journal Every Write off writes without it</source>
+        <translation>Umrichter &gt; Schreibvorgänge im Journal festhalten aus: schreibt ohne Journal</translation>
+    </message>
+</context>
+<context>
     <name>SavedFile</name>
     <message>
         <source>cannot write &apos;%1&apos;: %2</source>
@@ -6126,6 +6691,10 @@ Verbindungsdialog.
     <message>
         <source>expected %1 channels, found %2</source>
         <translation>erwartet wurden %1 Kanäle, gefunden %2</translation>
+    </message>
+    <message>
+        <source>expected an object</source>
+        <translation>erwartet wurde ein Objekt</translation>
     </message>
 </context>
 <context>

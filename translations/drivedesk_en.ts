@@ -69,6 +69,44 @@
     </message>
 </context>
 <context>
+    <name>BackupCommit</name>
+    <message>
+        <source>%1: backup, %2 changed</source>
+        <translation>%1: backup, %2 changed</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>cannot read %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>BackupRepository</name>
+    <message>
+        <source>cannot make the directory %1</source>
+        <translation>cannot make the directory %1</translation>
+    </message>
+    <message>
+        <source>the directory %1 does not exist</source>
+        <translation>the directory %1 does not exist</translation>
+    </message>
+    <message>
+        <source>%1 is not a git repository of backups: make it one with plant backup --commit</source>
+        <translation>%1 is not a git repository of backups: make it one with plant backup --commit</translation>
+    </message>
+    <message>
+        <source>there is no revision on or before %1 in %2</source>
+        <translation>there is no revision on or before %1 in %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is no revision of %2: give a commit id, a tag or a date like 2026-11-24</source>
+        <translation>&apos;%1&apos; is no revision of %2: give a commit id, a tag or a date like 2026-11-24</translation>
+    </message>
+    <message>
+        <source>git cat-file: no object %1</source>
+        <translation>git cat-file: no object %1</translation>
+    </message>
+</context>
+<context>
     <name>ChosenValues</name>
     <message>
         <source>%1: the target has no such parameter</source>
@@ -84,6 +122,29 @@
     <message>
         <source>no journal yet at %1: nothing was written</source>
         <translation>no journal yet at %1: nothing was written</translation>
+    </message>
+</context>
+<context>
+    <name>CliPlantHistory</name>
+    <message>
+        <source>no revision</source>
+        <translation>no revision</translation>
+    </message>
+    <message>
+        <source>cannot make a temporary folder: %1</source>
+        <translation>cannot make a temporary folder: %1</translation>
+    </message>
+    <message>
+        <source>no drive saved: nothing committed</source>
+        <translation>no drive saved: nothing committed</translation>
+    </message>
+    <message>
+        <source>no setting changed since the last commit: nothing committed</source>
+        <translation>no setting changed since the last commit: nothing committed</translation>
+    </message>
+    <message>
+        <source>committed %1: %2</source>
+        <translation>committed %1: %2</translation>
     </message>
 </context>
 <context>
@@ -548,6 +609,37 @@
     </message>
 </context>
 <context>
+    <name>DriveChange</name>
+    <message>
+        <source>%1 %2: no longer on the drive (was %3)</source>
+        <translation>%1 %2: no longer on the drive (was %3)</translation>
+    </message>
+    <message>
+        <source>%1 %2: new on the drive, %3</source>
+        <translation>%1 %2: new on the drive, %3</translation>
+    </message>
+    <message>
+        <source>%1 %2: %3 -&gt; %4</source>
+        <translation>%1 %2: %3 -&gt; %4</translation>
+    </message>
+    <message>
+        <source>%1 %2 set %3: %4 -&gt; %5</source>
+        <translation>%1 %2 set %3: %4 -&gt; %5</translation>
+    </message>
+    <message>
+        <source>%1 added</source>
+        <translation>%1 added</translation>
+    </message>
+    <message>
+        <source>%1 gone</source>
+        <translation>%1 gone</translation>
+    </message>
+    <message>
+        <source>%1: the file cannot be read: %2</source>
+        <translation>%1: the file cannot be read: %2</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk</name>
     <message>
         <source>offline records of %1, one a millisecond assumed</source>
@@ -709,6 +801,18 @@
     <message>
         <source>downloaded or already equal</source>
         <translation>downloaded or already equal</translation>
+    </message>
+    <message>
+        <source>nothing was written: %1 (--no-journal downloads without it)</source>
+        <translation>nothing was written: %1 (--no-journal downloads without it)</translation>
+    </message>
+    <message>
+        <source>plant download of %1</source>
+        <translation>plant download of %1</translation>
+    </message>
+    <message>
+        <source>--no-journal downloads without it</source>
+        <translation>--no-journal downloads without it</translation>
     </message>
 </context>
 <context>
@@ -933,6 +1037,38 @@
     <message>
         <source>write %1</source>
         <translation>write %1</translation>
+    </message>
+    <message>
+        <source>no journal yet at %1: there is nothing to revert</source>
+        <translation>no journal yet at %1: there is nothing to revert</translation>
+    </message>
+    <message>
+        <source>left out: %1</source>
+        <translation>left out: %1</translation>
+    </message>
+    <message>
+        <source>nothing was written</source>
+        <translation>nothing was written</translation>
+    </message>
+    <message>
+        <source>no entry of this drive to revert; nothing was written</source>
+        <translation>no entry of this drive to revert; nothing was written</translation>
+    </message>
+    <message>
+        <source>%1: the values before, back to the drive</source>
+        <translation>%1: the values before, back to the drive</translation>
+    </message>
+    <message>
+        <source>nothing was written: %1 (--no-journal downloads without it)</source>
+        <translation>nothing was written: %1 (--no-journal downloads without it)</translation>
+    </message>
+    <message>
+        <source>download of %1</source>
+        <translation>download of %1</translation>
+    </message>
+    <message>
+        <source>--no-journal downloads without it</source>
+        <translation>--no-journal downloads without it</translation>
     </message>
 </context>
 <context>
@@ -1890,6 +2026,10 @@
         <source>the values chosen from %1</source>
         <translation>the values chosen from %1</translation>
     </message>
+    <message>
+        <source>download of %1</source>
+        <translation>download of %1</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::DownloadRun</name>
@@ -1920,6 +2060,18 @@
     <message>
         <source>stopped by the user</source>
         <translation>stopped by the user</translation>
+    </message>
+    <message>
+        <source>the journal cannot record the download: %1; nothing was written</source>
+        <translation>the journal cannot record the download: %1; nothing was written</translation>
+    </message>
+    <message>
+        <source>%1 is not described</source>
+        <translation>%1 is not described</translation>
+    </message>
+    <message>
+        <source>the download ended first</source>
+        <translation>the download ended first</translation>
     </message>
 </context>
 <context>
@@ -2579,6 +2731,218 @@
     <message>
         <source>Hexadecimal, %1 .. %2</source>
         <translation>Hexadecimal, %1 .. %2</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::JournalDock</name>
+    <message>
+        <source>Journal</source>
+        <translation>Journal</translation>
+    </message>
+    <message>
+        <source>Drive:</source>
+        <translation>Drive:</translation>
+    </message>
+    <message>
+        <source>serial number, link or link@address</source>
+        <translation>serial number, link or link@address</translation>
+    </message>
+    <message>
+        <source>Parameter:</source>
+        <translation>Parameter:</translation>
+    </message>
+    <message>
+        <source>op.28 or 0x0A1C</source>
+        <translation>op.28 or 0x0A1C</translation>
+    </message>
+    <message>
+        <source>User:</source>
+        <translation>User:</translation>
+    </message>
+    <message>
+        <source>login name</source>
+        <translation>login name</translation>
+    </message>
+    <message>
+        <source>Since:</source>
+        <translation>Since:</translation>
+    </message>
+    <message>
+        <source>2026-11-24 or 2026-11-24 10:42</source>
+        <translation>2026-11-24 or 2026-11-24 10:42</translation>
+    </message>
+    <message>
+        <source>Until:</source>
+        <translation>Until:</translation>
+    </message>
+    <message>
+        <source>Search:</source>
+        <translation>Search:</translation>
+    </message>
+    <message>
+        <source>any field of the entries shown</source>
+        <translation>any field of the entries shown</translation>
+    </message>
+    <message>
+        <source>This Drive</source>
+        <translation>This Drive</translation>
+    </message>
+    <message>
+        <source>Show the entries of the connected drive</source>
+        <translation>Show the entries of the connected drive</translation>
+    </message>
+    <message>
+        <source>Load Older</source>
+        <translation>Load Older</translation>
+    </message>
+    <message numerus="yes">
+        <source>Read the %n entries before the oldest shown</source>
+        <translation>
+            <numerusform>Read the %n entry before the oldest shown</numerusform>
+            <numerusform>Read the %n entries before the oldest shown</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Refresh</source>
+        <translation>Refresh</translation>
+    </message>
+    <message>
+        <source>Revert...</source>
+        <translation>Revert...</translation>
+    </message>
+    <message>
+        <source>Write the values before the selected entries back to the drive, after a last look at what will change</source>
+        <translation>Write the values before the selected entries back to the drive, after a last look at what will change</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not after &apos;%2&apos;</source>
+        <translation>&apos;%1&apos; is not after &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>Reading the journal...</source>
+        <translation>Reading the journal...</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n entries</source>
+        <translation>
+            <numerusform>%n entry</numerusform>
+            <numerusform>%n entries</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n entries match the search</source>
+        <translation>
+            <numerusform>%1 of %n entry matches the search</numerusform>
+            <numerusform>%1 of %n entries match the search</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>older ones not read yet</source>
+        <translation>older ones not read yet</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::JournalFeature</name>
+    <message>
+        <source>&amp;Journal</source>
+        <translation>&amp;Journal</translation>
+    </message>
+    <message>
+        <source>The values written to drives: who, when, before and after</source>
+        <translation>The values written to drives: who, when, before and after</translation>
+    </message>
+    <message>
+        <source>Revert</source>
+        <translation>Revert</translation>
+    </message>
+    <message>
+        <source>Nothing was written: no drive is connected.</source>
+        <translation>Nothing was written: no drive is connected.</translation>
+    </message>
+    <message>
+        <source>Nothing was written:
+%1</source>
+        <translation>Nothing was written:
+%1</translation>
+    </message>
+    <message>
+        <source>the values before %1</source>
+        <translation>the values before %1</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::JournalTableModel</name>
+    <message>
+        <source>active</source>
+        <translation>active</translation>
+    </message>
+    <message>
+        <source>(password)</source>
+        <translation>(password)</translation>
+    </message>
+    <message>
+        <source>%1 on %2, software %3, serial number %4</source>
+        <translation>%1 on %2, software %3, serial number %4</translation>
+    </message>
+    <message>
+        <source>Answered %1</source>
+        <translation>Answered %1</translation>
+    </message>
+    <message>
+        <source>Entry</source>
+        <translation>Entry</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Time</translation>
+    </message>
+    <message>
+        <source>User</source>
+        <translation>User</translation>
+    </message>
+    <message>
+        <source>Host</source>
+        <translation>Host</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Program</translation>
+    </message>
+    <message>
+        <source>Job</source>
+        <translation>Job</translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation>Drive</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Set</source>
+        <translation>Set</translation>
+    </message>
+    <message>
+        <source>Before</source>
+        <translation>Before</translation>
+    </message>
+    <message>
+        <source>Written</source>
+        <translation>Written</translation>
+    </message>
+    <message>
+        <source>Read back</source>
+        <translation>Read back</translation>
+    </message>
+    <message>
+        <source>Outcome</source>
+        <translation>Outcome</translation>
     </message>
 </context>
 <context>
@@ -3371,6 +3735,10 @@
         <source>the editor is connected to this line (%1): disconnect it (Drive &gt; Disconnect) and start again; %2</source>
         <translation>the editor is connected to this line (%1): disconnect it (Drive &gt; Disconnect) and start again; %2</translation>
     </message>
+    <message>
+        <source>plant download of %1</source>
+        <translation>plant download of %1</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::PlantFeature</name>
@@ -3487,6 +3855,61 @@
     </message>
 </context>
 <context>
+    <name>DriveDesk::PlantLinkRun</name>
+    <message>
+        <source>refused, nothing written: %1</source>
+        <translation>refused, nothing written: %1</translation>
+    </message>
+    <message>
+        <source>not everything was written; the report says what the drive holds</source>
+        <translation>not everything was written; the report says what the drive holds</translation>
+    </message>
+    <message>
+        <source>%1 does not exist</source>
+        <translation>%1 does not exist</translation>
+    </message>
+    <message>
+        <source>cannot connect: %1</source>
+        <translation>cannot connect: %1</translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation>connecting</translation>
+    </message>
+    <message>
+        <source>searching</source>
+        <translation>searching</translation>
+    </message>
+    <message>
+        <source>no drive answered</source>
+        <translation>no drive answered</translation>
+    </message>
+    <message>
+        <source>the search stopped: %1</source>
+        <translation>the search stopped: %1</translation>
+    </message>
+    <message>
+        <source>the search was stopped after %1 of %2 addresses</source>
+        <translation>the search was stopped after %1 of %2 addresses</translation>
+    </message>
+    <message>
+        <source>stopped before it was read</source>
+        <translation>stopped before it was read</translation>
+    </message>
+    <message>
+        <source>the connection was lost: %1</source>
+        <translation>the connection was lost: %1</translation>
+    </message>
+    <message>
+        <source>DIN66019 carries parameter values only: the drive has no parameter list to read or write; use din66019ii</source>
+        <translation>DIN66019 carries parameter values only: the drive has no parameter list to read or write; use din66019ii</translation>
+    </message>
+    <message>
+        <source>stopped before the drive was read whole; nothing saved</source>
+        <translation>stopped before the drive was read whole; nothing saved</translation>
+    </message>
+</context>
+<context>
     <name>DriveDesk::PlantModel</name>
     <message>
         <source>not searched</source>
@@ -3596,65 +4019,6 @@
     <message>
         <source>&amp;Write to the Drives</source>
         <translation>&amp;Write to the Drives</translation>
-    </message>
-</context>
-<context>
-    <name>DriveDesk::PlantRun</name>
-    <message>
-        <source>cannot connect: %1</source>
-        <translation>cannot connect: %1</translation>
-    </message>
-    <message>
-        <source>connecting</source>
-        <translation>connecting</translation>
-    </message>
-    <message>
-        <source>searching</source>
-        <translation>searching</translation>
-    </message>
-    <message>
-        <source>the search stopped: %1</source>
-        <translation>the search stopped: %1</translation>
-    </message>
-    <message>
-        <source>stopped before it was read</source>
-        <translation>stopped before it was read</translation>
-    </message>
-    <message>
-        <source>%1 does not exist</source>
-        <translation>%1 does not exist</translation>
-    </message>
-    <message>
-        <source>stopped before the drive was read whole; nothing saved</source>
-        <translation>stopped before the drive was read whole; nothing saved</translation>
-    </message>
-    <message>
-        <source>the file is of %1, the drive %2</source>
-        <translation>the file is of %1, the drive %2</translation>
-    </message>
-    <message>
-        <source>no drive answered</source>
-        <translation>no drive answered</translation>
-    </message>
-    <message>
-        <source>the search was stopped after %1 of %2 addresses</source>
-        <translation>the search was stopped after %1 of %2 addresses</translation>
-    </message>
-    <message>
-        <source>DIN66019 carries parameter values only: the drive has no parameter list to read or write; use din66019ii</source>
-        <translation>DIN66019 carries parameter values only: the drive has no parameter list to read or write; use din66019ii</translation>
-    </message>
-    <message>
-        <source>refused, nothing written: %1</source>
-        <translation>refused, nothing written: %1</translation>
-    </message>
-    <message>
-        <source>not everything was written; the report says what the drive holds</source>
-        <translation>not everything was written; the report says what the drive holds</translation>
-    </message>
-    <message>
-        <source>the file&apos;s metadata is not the drive&apos;s: %1</source>
-        <translation>the file&apos;s metadata is not the drive&apos;s: %1</translation>
     </message>
 </context>
 <context>
@@ -4322,12 +4686,132 @@ Home: the whole recording; End: follow the newest samples; A: fit the values; Sp
         <source>the connection went away</source>
         <translation>the connection went away</translation>
     </message>
+    <message>
+        <source>A math channel cannot be computed: %1</source>
+        <translation>A math channel cannot be computed: %1</translation>
+    </message>
+    <message>
+        <source>Add Math Channel...</source>
+        <translation>Add Math Channel...</translation>
+    </message>
+    <message>
+        <source>Remove Math Channels</source>
+        <translation>Remove Math Channels</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ScopeFeature</name>
     <message>
         <source>&amp;Scope</source>
         <translation>&amp;Scope</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ScopeMathDialog</name>
+    <message>
+        <source>Add Math Channel</source>
+        <translation>Add Math Channel</translation>
+    </message>
+    <message>
+        <source>Derivative (d/dt)</source>
+        <translation>Derivative (d/dt)</translation>
+    </message>
+    <message>
+        <source>Integral over time</source>
+        <translation>Integral over time</translation>
+    </message>
+    <message>
+        <source>Difference (first − second)</source>
+        <translation>Difference (first − second)</translation>
+    </message>
+    <message>
+        <source>Sum (first + second)</source>
+        <translation>Sum (first + second)</translation>
+    </message>
+    <message>
+        <source>Moving average</source>
+        <translation>Moving average</translation>
+    </message>
+    <message>
+        <source>&amp;Kind:</source>
+        <translation>&amp;Kind:</translation>
+    </message>
+    <message>
+        <source>&amp;Channel:</source>
+        <translation>&amp;Channel:</translation>
+    </message>
+    <message>
+        <source>&amp;Second channel:</source>
+        <translation>&amp;Second channel:</translation>
+    </message>
+    <message>
+        <source>samples</source>
+        <translation>samples</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <source>&amp;Window:</source>
+        <translation>&amp;Window:</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ScopeMeasurementTable</name>
+    <message>
+        <source>%1 %2</source>
+        <comment>number and unit</comment>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>Minimum</source>
+        <translation>Minimum</translation>
+    </message>
+    <message>
+        <source>Maximum</source>
+        <translation>Maximum</translation>
+    </message>
+    <message>
+        <source>Peak to peak</source>
+        <translation>Peak to peak</translation>
+    </message>
+    <message>
+        <source>Mean</source>
+        <translation>Mean</translation>
+    </message>
+    <message>
+        <source>RMS</source>
+        <translation>RMS</translation>
+    </message>
+    <message>
+        <source>Rise time</source>
+        <translation>Rise time</translation>
+    </message>
+    <message>
+        <source>Rise rate</source>
+        <translation>Rise rate</translation>
+    </message>
+    <message>
+        <source>Fall time</source>
+        <translation>Fall time</translation>
+    </message>
+    <message>
+        <source>Fall rate</source>
+        <translation>Fall rate</translation>
+    </message>
+    <message>
+        <source>Between the cursors, both included. Mean and RMS of the line through the samples; rise and fall between 10 % and 90 % of the span from minimum to maximum.</source>
+        <translation>Between the cursors, both included. Mean and RMS of the line through the samples; rise and fall between 10 % and 90 % of the span from minimum to maximum.</translation>
+    </message>
+    <message>
+        <source>%1 [%2]</source>
+        <comment>channel title and unit</comment>
+        <translation>%1 [%2]</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>ms</translation>
     </message>
 </context>
 <context>
@@ -4762,6 +5246,10 @@ dialog.
         <source>the journal cannot record it: %1</source>
         <translation>the journal cannot record it: %1</translation>
     </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
 </context>
 <context>
     <name>EditText</name>
@@ -4846,6 +5334,21 @@ dialog.
     </message>
 </context>
 <context>
+    <name>Git</name>
+    <message>
+        <source>git cannot be run (%1): install git</source>
+        <translation>git cannot be run (%1): install git</translation>
+    </message>
+    <message>
+        <source>git %1 failed with exit code %2</source>
+        <translation>git %1 failed with exit code %2</translation>
+    </message>
+    <message>
+        <source>git %1 failed: %2</source>
+        <translation>git %1 failed: %2</translation>
+    </message>
+</context>
+<context>
     <name>GroupProperties</name>
     <message>
         <source>password level: %1</source>
@@ -4908,6 +5411,14 @@ dialog.
     <message>
         <source>unknown: %1</source>
         <translation>unknown: %1</translation>
+    </message>
+    <message>
+        <source>%1 since %2 by %3</source>
+        <translation>%1 since %2 by %3</translation>
+    </message>
+    <message>
+        <source>%1 since %2 by %3, was %4</source>
+        <translation>%1 since %2 by %3, was %4</translation>
     </message>
 </context>
 <context>
@@ -5045,6 +5556,53 @@ dialog.
     <message>
         <source>the journal %1 was made by a newer DriveDesk (journal version %2; this one knows up to %3): it is not written</source>
         <translation>the journal %1 was made by a newer DriveDesk (journal version %2; this one knows up to %3): it is not written</translation>
+    </message>
+</context>
+<context>
+    <name>JournalRevert</name>
+    <message>
+        <source>revert</source>
+        <translation>revert</translation>
+    </message>
+    <message>
+        <source>revert of entry %1</source>
+        <translation>revert of entry %1</translation>
+    </message>
+    <message>
+        <source>revert of entries %1..%2</source>
+        <translation>revert of entries %1..%2</translation>
+    </message>
+    <message>
+        <source>entry %1: the journal has no such entry</source>
+        <translation>entry %1: the journal has no such entry</translation>
+    </message>
+    <message>
+        <source>entry %1 (%2)</source>
+        <translation>entry %1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1 was written to another drive (%2), not the one connected (%3)</source>
+        <translation>%1 was written to another drive (%2), not the one connected (%3)</translation>
+    </message>
+    <message>
+        <source>%1 is a password entered: the journal keeps no value of it, so it cannot be reverted</source>
+        <translation>%1 is a password entered: the journal keeps no value of it, so it cannot be reverted</translation>
+    </message>
+    <message>
+        <source>%1: the drive has no such parameter</source>
+        <translation>%1: the drive has no such parameter</translation>
+    </message>
+    <message>
+        <source>%1: the value before was not read, so there is none to write back</source>
+        <translation>%1: the value before was not read, so there is none to write back</translation>
+    </message>
+    <message>
+        <source>%1 was written to the active set, and the journal does not say which set that was</source>
+        <translation>%1 was written to the active set, and the journal does not say which set that was</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; names no entry: give an entry&apos;s number (12) or a range (12..15)</source>
+        <translation>&apos;%1&apos; names no entry: give an entry&apos;s number (12) or a range (12..15)</translation>
     </message>
 </context>
 <context>
@@ -6000,6 +6558,13 @@ dialog.
     </message>
 </context>
 <context>
+    <name>RunJournal</name>
+    <message>
+        <source>Drive &gt; Journal Every Write off writes without it</source>
+        <translation>Drive &gt; Journal Every Write off writes without it</translation>
+    </message>
+</context>
+<context>
     <name>SavedFile</name>
     <message>
         <source>cannot write &apos;%1&apos;: %2</source>
@@ -6126,6 +6691,10 @@ dialog.
     <message>
         <source>expected %1 channels, found %2</source>
         <translation>expected %1 channels, found %2</translation>
+    </message>
+    <message>
+        <source>expected an object</source>
+        <translation>expected an object</translation>
     </message>
 </context>
 <context>
