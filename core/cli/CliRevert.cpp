@@ -7,7 +7,7 @@
 #include "journal/JournalRevert.h"
 #include "link/ConnectionOptions.h"
 #include "session/DownloadRun.h"
-#include "state/EditJournal.h"
+#include "session/EditJournal.h"
 
 #include <QCommandLineParser>
 #include <QFileInfo>

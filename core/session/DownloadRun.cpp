@@ -124,8 +124,12 @@ bool DownloadRun::beginJournal(QString *error)
             step.setMask = SetList::setsWritten(item.change.setProgrammable, step.setMask);
         writes << write;
     }
+    // The drive of the bus this run writes to, which need not be the connection's own.
+    ConnectionSettings settings = m_client->settings();
+    if (m_driveAddress >= 0)
+        settings.driveAddress = m_driveAddress;
     const std::optional<QList<QList<EditJournal::Entry>>> begun
-        = m_journal->begin(EditJournal::driveOf(m_client->settings(), m_drive), writes, error);
+        = m_journal->begin(EditJournal::driveOf(settings, m_drive), writes, error);
     if (!begun)
         return false;
     m_journaled = *begun;

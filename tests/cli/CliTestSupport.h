@@ -17,14 +17,11 @@ struct Run {
 inline const QString kCli = QStringLiteral(DRIVEDESK_BINARY_DIR "/app/cli/drivedesk-cli");
 inline const QString kSim = QStringLiteral(DRIVEDESK_BINARY_DIR "/app/sim/drivedesk-sim");
 
-inline Run cli(const QStringList &arguments, const QString &cacheHome = {})
+// drivedesk-cli run to its end in `environment`.
+inline Run cliIn(const QStringList &arguments, const QProcessEnvironment &environment)
 {
     QProcess process;
-    if (!cacheHome.isEmpty()) {
-        QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
-        environment.insert(QStringLiteral("XDG_CACHE_HOME"), cacheHome);
-        process.setProcessEnvironment(environment);
-    }
+    process.setProcessEnvironment(environment);
     process.start(kCli, arguments);
     Run run;
     if (!process.waitForFinished(120000)) {
@@ -37,6 +34,14 @@ inline Run cli(const QStringList &arguments, const QString &cacheHome = {})
     run.out = QString::fromUtf8(process.readAllStandardOutput());
     run.err = QString::fromUtf8(process.readAllStandardError());
     return run;
+}
+
+inline Run cli(const QStringList &arguments, const QString &cacheHome = {})
+{
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    if (!cacheHome.isEmpty())
+        environment.insert(QStringLiteral("XDG_CACHE_HOME"), cacheHome);
+    return cliIn(arguments, environment);
 }
 
 inline Run sim(const QStringList &command)

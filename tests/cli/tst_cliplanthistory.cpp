@@ -257,20 +257,7 @@ private:
 
     Run runCli(const QStringList &arguments, const QProcessEnvironment &environment) const
     {
-        QProcess process;
-        process.setProcessEnvironment(environment);
-        process.start(kCli, arguments);
-        Run run;
-        if (!process.waitForFinished(120000)) {
-            process.kill();
-            process.waitForFinished();
-            run.err = QStringLiteral("drivedesk-cli did not finish");
-            return run;
-        }
-        run.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
-        run.out = QString::fromUtf8(process.readAllStandardOutput());
-        run.err = QString::fromUtf8(process.readAllStandardError());
-        return run;
+        return cliIn(arguments, environment);
     }
 
     Run plant(const QStringList &arguments, const QString &home = {}) const
