@@ -85,6 +85,10 @@ JournalDock::JournalDock(QWidget *parent, const QString &journalPath)
     m_view->verticalHeader()->hide();
     m_view->verticalHeader()->setDefaultSectionSize(m_view->fontMetrics().height() + 6);
     m_view->horizontalHeader()->setStretchLastSection(true);
+    // The whole time, until the user sizes the column (the widths are remembered).
+    m_view->horizontalHeader()->resizeSection(
+        JournalTableModel::TimeColumn,
+        m_view->fontMetrics().horizontalAdvance(QStringLiteral("2026-11-28 10:42:00")) + 16);
     m_view->setContextMenuPolicy(Qt::ActionsContextMenu);
     layout->addWidget(m_view, 1);
 

@@ -8,7 +8,7 @@
 #include "frame/FileProblem.h"
 #include "journal/JournalRevert.h"
 #include "state/DriveState.h"
-#include "state/EditJournal.h"
+#include "session/EditJournal.h"
 
 #include <QAction>
 #include <QMenu>
