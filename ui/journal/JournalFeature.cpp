@@ -14,6 +14,9 @@
 #include <QMenu>
 #include <QTimer>
 
+#include <algorithm>
+#include <optional>
+
 namespace DriveDesk {
 
 namespace {
@@ -114,11 +117,18 @@ void JournalFeature::onChangesRead(const JournalReading &reading)
     if (reading.tag != m_changesGeneration || !reading.error.isEmpty())
         return; // the tooltips go without; the view says what is wrong with the journal
     QList<JournalEntry> ofThisDrive;
+    qint64 upTo = m_changesUpTo;
+    std::optional<qint64> open;
     for (const JournalEntry &entry : reading.entries) {
-        m_changesUpTo = std::max(m_changesUpTo, entry.id);
+        upTo = std::max(upTo, entry.id);
+        // Begun but not yet answered (a busy machine, a slow line): read again next time, or
+        // its change would never reach the tooltip.
+        if (entry.outcome == JournalOutcome::Unknown && !entry.completedTime.isValid())
+            open = std::min(open.value_or(entry.id), entry.id);
         if (entry.drive.isSameDrive(m_drive))
             ofThisDrive << entry;
     }
+    m_changesUpTo = open ? *open - 1 : upTo;
     JournalChanges changes = frame().state()->journalChanges();
     changes.add(ofThisDrive);
     frame().state()->setJournalChanges(changes);
