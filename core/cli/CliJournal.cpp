@@ -1,6 +1,8 @@
 // drivedesk-cli journal: the values written, read from the journal's file.
 #include "CliJournal.h"
 
+#include "CliFormatOption.h"
+
 #include "journal/Journal.h"
 #include "journal/JournalFormat.h"
 #include "link/ConnectionOptions.h"
@@ -84,17 +86,10 @@ std::optional<CliRequest> parseJournalCommand(const QCommandLineParser &parser,
     }
     CliRequest request;
     request.command = CliRequest::Command::Journal;
-    if (parser.isSet(QStringLiteral("format"))) {
-        const QString format = parser.value(QStringLiteral("format")).toLower();
-        if (format != QLatin1String("table") && format != QLatin1String("json")
-            && format != QLatin1String("csv")) {
-            *error = QStringLiteral("unknown format '%1': use table, json or csv").arg(format);
-            return std::nullopt;
-        }
-        request.format = format == QLatin1String("json") ? CliRequest::Format::Json
-            : format == QLatin1String("csv")             ? CliRequest::Format::Csv
-                                                         : CliRequest::Format::Table;
-    }
+    if (!parseFormatOption(parser, QStringLiteral("journal"),
+                           { QStringLiteral("table"), QStringLiteral("json"), QStringLiteral("csv") },
+                           &request, error))
+        return std::nullopt;
     JournalFilter &filter = request.journalFilter;
     const auto option = [&parser](const char *name) { return parser.value(QLatin1String(name)); };
     const auto given = [&parser](const char *name) { return parser.isSet(QLatin1String(name)); };

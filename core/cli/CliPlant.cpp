@@ -1,6 +1,8 @@
 // drivedesk-cli plant: every drive of a plant file found, backed up or checked.
 #include "CliPlant.h"
 
+#include "CliFormatOption.h"
+
 #include "cli/CliPlantHistory.h"
 #include "history/Git.h"
 
@@ -73,20 +75,14 @@ std::optional<CliRequest> parsePlantCommand(const QCommandLineParser &parser,
         *error = QStringLiteral("--dry-run and --force belong to plant download");
         return std::nullopt;
     }
-    if (parser.isSet(QStringLiteral("format"))) {
-        const QString format = parser.value(QStringLiteral("format")).toLower();
-        if (plant.action != PlantRequest::Action::Verify
-            && plant.action != PlantRequest::Action::History) {
-            *error = QStringLiteral("--format belongs to plant verify and plant history");
-            return std::nullopt;
-        }
-        if (format != QLatin1String("json") && format != QLatin1String("table")) {
-            *error = QStringLiteral("unknown format '%1': use json or table").arg(format);
-            return std::nullopt;
-        }
-        request.format = format == QLatin1String("json") ? CliRequest::Format::Json
-                                                         : CliRequest::Format::Table;
+    if (parser.isSet(QStringLiteral("format")) && plant.action != PlantRequest::Action::Verify
+        && plant.action != PlantRequest::Action::History) {
+        *error = QStringLiteral("--format belongs to plant verify and plant history");
+        return std::nullopt;
     }
+    if (!parseFormatOption(parser, QStringLiteral("plant"),
+                           { QStringLiteral("table"), QStringLiteral("json") }, &request, error))
+        return std::nullopt;
     std::optional<Language> language;
     if (!connection.language(parser, &language, error))
         return std::nullopt;

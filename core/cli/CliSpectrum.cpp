@@ -2,6 +2,8 @@
 // recording file, with no drive.
 #include "CliSpectrum.h"
 
+#include "CliFormatOption.h"
+
 #include "link/ConnectionOptions.h"
 #include "scope/ScopeCsvReader.h"
 #include "scope/ScopeFileFormat.h"
@@ -209,16 +211,9 @@ std::optional<CliRequest> parseSpectrumCommand(const QCommandLineParser &parser,
             parser, QCommandLineOption(QStringLiteral("peaks"), {}, QStringLiteral("n")), 1, 1000,
             &spectrum.peaks, error))
         return std::nullopt;
-    if (parser.isSet(QStringLiteral("format"))) {
-        const QString format = parser.value(QStringLiteral("format")).toLower();
-        if (format != QLatin1String("json") && format != QLatin1String("table")) {
-            *error
-                = QStringLiteral("unknown format '%1': spectrum writes json or table").arg(format);
-            return std::nullopt;
-        }
-        request.format = format == QLatin1String("json") ? CliRequest::Format::Json
-                                                         : CliRequest::Format::Table;
-    }
+    if (!parseFormatOption(parser, QStringLiteral("spectrum"),
+                           { QStringLiteral("json"), QStringLiteral("table") }, &request, error))
+        return std::nullopt;
     std::optional<Language> language;
     if (!connection.language(parser, &language, error))
         return std::nullopt;
