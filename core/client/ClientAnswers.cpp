@@ -367,7 +367,7 @@ void ClientWorker::complete(PendingRequest &request, Reply::Status status, const
     // The news that the drive stopped answering goes out before any request's failure says so:
     // whoever waits on both (the command line: its scan and the reason) hears them in order.
     if (stops)
-        stopAnswering(request.target);
+        stopAnswering();
     done(reply, heard);
 }
 

@@ -237,7 +237,7 @@ void ClientWorker::noteUnanswered(PendingRequest &request, Reply::Status *status
 
 bool ClientWorker::failsWhileStopped(PendingRequest &request, QString *detail) const
 {
-    if (!m_driveStopped || (isDin() && request.target != m_stoppedTarget))
+    if (!m_driveStopped)
         return false;
     if (m_queue.empty() && m_inFlight.empty()) {
         request.maxAttempts = 1;
@@ -276,12 +276,11 @@ void ClientWorker::checkIdleLine()
                   [](const Reply &, bool) {});
 }
 
-void ClientWorker::stopAnswering(int target)
+void ClientWorker::stopAnswering()
 {
     if (m_driveStopped)
         return;
     m_driveStopped = true;
-    m_stoppedTarget = target;
     const QString reason = silenceText();
     if (runAnsweredWith() == Garbage::Nothing) {
         setDriveSilent(true);

@@ -128,7 +128,7 @@ private:
     // from a line with errors, starts the count anew), and once the drive has stopped, it ends
     // as DriveSilent (status and detail are changed).
     void noteUnanswered(PendingRequest &request, Reply::Status *status, QString *detail);
-    void stopAnswering(int target);
+    void stopAnswering();
     void noteSent(PendingRequest &request);
     // Bytes came (onReceived): the drive is there, though not necessarily answering.
     void noteHeard(const QByteArray &bytes);
@@ -210,9 +210,6 @@ private:
     qint64 m_firstUnansweredMs = 0;
     int m_unansweredInARow = 0;
     bool m_driveStopped = false;
-    // DIN66019(II): the bus address of the drive that stopped answering. The other drives of
-    // the bus are asked as before: one drive switched off must not silence its neighbours.
-    int m_stoppedTarget = -1;
     // The run's requests by what they got instead of answers.
     std::array<int, kGarbageKinds> m_runGarbage{};
     std::deque<Telegram> m_sentRecently; // the latest attempts: what a stale answer answers
