@@ -72,6 +72,7 @@ void ClientWorker::noteAnswered()
     m_sinceLastAnswer.restart();
     m_sentSinceAnswer = 0;
     m_unansweredInARow = 0;
+    m_givenUpInARow = 0;
     m_runGarbage.fill(0);
     if (m_driveStopped) {
         m_driveStopped = false;
@@ -154,6 +155,7 @@ void ClientWorker::resetSilence()
 {
     m_sentSinceAnswer = 0;
     m_unansweredInARow = 0;
+    m_givenUpInARow = 0;
     m_driveStopped = false;
     m_runGarbage.fill(0);
     m_sentRecently.clear();
@@ -219,7 +221,9 @@ void ClientWorker::noteUnanswered(PendingRequest &request, Reply::Status *status
     std::array<int, kGarbageKinds> got = request.laterAttemptsGot;
     got[int(Garbage::Nothing)] = 0;
     const auto kinds = std::count_if(got.begin(), got.end(), [](int n) { return n > 0; });
-    if (kinds > 1 && got[int(Garbage::Checksum)] > 0 && !m_driveStopped) {
+    const bool lineWithErrors = kinds > 1 && got[int(Garbage::Checksum)] > 0;
+    const bool tooManyGivenUp = ++m_givenUpInARow >= kGivenUpRequestsToStop;
+    if (lineWithErrors && !tooManyGivenUp && !m_driveStopped) {
         m_unansweredInARow = 0;
         m_runGarbage.fill(0);
         return;
@@ -229,7 +233,7 @@ void ClientWorker::noteUnanswered(PendingRequest &request, Reply::Status *status
     got = request.laterAttemptsGot;
     ++got[int(request.firstAttemptGot.value_or(Garbage::Nothing))];
     ++m_runGarbage[int(std::max_element(got.begin(), got.end()) - got.begin())];
-    if (!m_driveStopped && ++m_unansweredInARow < kUnansweredRequestsToStop)
+    if (!m_driveStopped && ++m_unansweredInARow < kUnansweredRequestsToStop && !tooManyGivenUp)
         return;
     *status = Reply::Status::DriveSilent;
     *detail = silenceText();

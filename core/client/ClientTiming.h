@@ -21,6 +21,12 @@ int quietLineMs(const ConnectionSettings &settings);
 // A drive has stopped answering once this many requests in a row were given up after every
 // attempt without a valid answer: nothing at all came, or only garbage (ClientSilence.cpp).
 constexpr int kUnansweredRequestsToStop = 4;
+// A request whose attempts got a wrong checksum and garbage of another kind looks like a line
+// with errors, and does not count towards kUnansweredRequestsToStop. But a line with errors still
+// lets valid answers through: this many requests given up in a row, whatever they got, is a
+// link that does not answer (an HSP5 link with a bit stuck in every answer). At 5 % flipped
+// bytes, 32 attempts in a row without a valid answer do not happen in a lifetime of scans.
+constexpr int kGivenUpRequestsToStop = 2 * kUnansweredRequestsToStop;
 
 // The longest a client takes to decide that a drive stopped answering, from the moment it
 // falls silent: up to the requests on the wire then timing out once, and then

@@ -5,6 +5,7 @@
 #include "protocol/Codec.h"
 #include "protocol/din/DinCharacters.h"
 #include "protocol/hsp5/Hsp5Codec.h"
+#include "protocol/hsp5/Hsp5Layout.h"
 
 #include <QHostAddress>
 #include <QPointer>
@@ -41,6 +42,9 @@ public:
         // The answers to writes lost on their way back, every attempt's: the drive took the
         // value, its word on it never came. Every other answer passes.
         WritesUnanswered,
+        // HSP5: every text answer's length byte one more than the text it carries, the BCC
+        // made right: the decoder reads on into the next answer. Other answers pass.
+        TextLengthGrown,
     };
 
     SpoilingProxy(Protocol protocol, quint16 drivePort, Spoil spoil, QObject *parent = nullptr)
@@ -218,6 +222,8 @@ private:
             return resized(answer, -1);
         case Spoil::FlippedBit:
             return flipped(answer);
+        case Spoil::TextLengthGrown:
+            return textLengthGrown(answer);
         case Spoil::RandomBytes:
             return randomBytes(answer.size());
         case Spoil::EndlessRandom:
@@ -260,6 +266,20 @@ private:
             covered.chop(1);
         covered.append(DinControl::Etx);
         return QByteArray(1, DinControl::Stx) + covered + char(dinBcc(covered));
+    }
+
+    QByteArray textLengthGrown(QByteArray answer) const
+    {
+        if (m_protocol != Protocol::Hsp5 || answer.size() < 3)
+            return answer;
+        const std::optional<Service> service = hsp5Service(quint8(answer.at(1)) & 0x3F);
+        const std::optional<Hsp5Layout> layout
+            = service ? hsp5Layout(*service, Access::Read, Direction::Response) : std::nullopt;
+        if (!layout || layout->maxCount != kHsp5MaxText || layout->countByte >= answer.size() - 1)
+            return answer;
+        answer[layout->countByte] = char(answer.at(layout->countByte) + 1);
+        answer.chop(1);
+        return answer.append(char(hsp5Bcc(answer)));
     }
 
     // Bit 0 of a data character flipped: HSP5 byte 2, DIN66019II the character before ETX. A

@@ -6,6 +6,7 @@
 
 #include <QElapsedTimer>
 #include <QRegularExpression>
+#include <QTemporaryDir>
 
 using namespace DriveDesk;
 using namespace DriveDesk::ClientTest;
@@ -107,6 +108,7 @@ private slots:
         // A bit stuck on a DIN66019II line: every answer's BCC is wrong. (HSP5's decoder, out of
         // step after such an answer, skips the next one whole: a mix a noisy line gives too.)
         row("din flipped bit", Protocol::Din66019II, Spoil::FlippedBit, checksum);
+        row("hsp5 flipped bit", Protocol::Hsp5, Spoil::FlippedBit, checksum);
     }
 
     void readsEndWhenNothingValidComes()
@@ -277,6 +279,44 @@ private slots:
         QVERIFY(line.proxy.answersSeen() >= kDoubledReads);
         QCOMPARE(stopped.size(), 0);
         QVERIFY(!s.client->isDriveSilent());
+    }
+
+    // A gateway that spoils one kind of answer only (every text's length byte one too many, its
+    // BCC right) while the others come through: the decoder reads on into the next answer. The
+    // scan cannot read a group's name; it ends, incomplete, in the time a link that answers
+    // only garbage gets from the first text asked for, and says what came instead.
+    void aScanWhoseTextsComeTooLongEnds()
+    {
+        ProxiedDrive line(Protocol::Hsp5, fast(), Spoil::TextLengthGrown);
+        QString error;
+        QVERIFY2(line.listen(&error), qPrintable(error));
+        Session s(line.proxy.settings());
+        QVERIFY(s.connected());
+        QElapsedTimer timer;
+        timer.start();
+        // The walk through every group address before it takes what the machine gives it.
+        qint64 firstText = -1;
+        connect(s.client.get(), &DriveClient::traffic, this, [&](const TrafficRecord &record) {
+            const bool text = record.telegram
+                && (record.telegram->service == Service::GroupName
+                    || record.telegram->service == Service::ParameterName);
+            if (firstText < 0 && record.kind == TrafficRecord::Kind::Sent && text)
+                firstText = timer.elapsed();
+        });
+        QTemporaryDir cache;
+        ScanOptions options;
+        options.metadata = MetadataSource::RefreshCache;
+        options.cacheDirectory = cache.path();
+        const QFuture<DriveDescription> scan = s.client->scan(options);
+        QVERIFY(waitFinished(scan, 12 * kLimitMs));
+        const qint64 took = timer.elapsed() - firstText;
+        const DriveDescription drive = scan.result();
+        qInfo("the scan ended %lld ms after the first text asked for: %s", took,
+              qPrintable(drive.incompleteReason));
+        QVERIFY(firstText >= 0);
+        QVERIFY2(took < kLimitMs, qPrintable(QStringLiteral("%1 ms").arg(took)));
+        QVERIFY2(drive.incompleteReason.endsWith(QStringLiteral("frames of the wrong length")),
+                 qPrintable(drive.incompleteReason));
     }
 
 private:
