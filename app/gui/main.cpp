@@ -3,6 +3,7 @@
 #include "Translations.h"
 #include "files/ParameterFileFeature.h"
 #include "main/MainWindow.h"
+#include "journal/Journal.h"
 #include "main/StartupOptions.h"
 
 #include <QApplication>
@@ -47,6 +48,9 @@ int main(int argc, char **argv)
                      qPrintable(DriveDesk::StartupOptions::usage()));
         return 2;
     }
+
+    // Before the window: its edits, downloads and journal view all open this one.
+    DriveDesk::Journal::setDefaultPath(options.journalPath);
 
     const DriveDesk::Language language = options.uiLanguage();
     DriveDesk::installTranslations(DriveDesk::languageCode(language));

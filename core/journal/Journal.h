@@ -36,8 +36,11 @@ public:
     static constexpr int kCheckpointEntries = 500;
 
     // $XDG_DATA_HOME/DriveDesk/journal.sqlite (~/.local/share/...), the window's and the
-    // command line's alike.
+    // command line's alike; another for this program's run after setDefaultPath().
     static QString defaultPath();
+    // `drivedesk --journal PATH`: every part of the window that journals or reads the journal
+    // uses PATH. Set once at start, before any other thread runs; empty: the standard place.
+    static void setDefaultPath(const QString &path);
 
     // `path` empty: defaultPath(). Nothing is opened yet.
     explicit Journal(QString path = {});

@@ -195,6 +195,21 @@ private slots:
             QCOMPARE(options.connection->target(), target);
     }
 
+    void commandLineNamesTheJournal()
+    {
+        const StartupOptions options = StartupOptions::parse(
+            { QStringLiteral("drivedesk"), QStringLiteral("--connect"), QStringLiteral("sim"),
+              QStringLiteral("--journal"), QStringLiteral("/srv/machine-7/journal.sqlite") });
+        QVERIFY2(options.error.isEmpty(), qPrintable(options.error));
+        QCOMPARE(options.journalPath, QStringLiteral("/srv/machine-7/journal.sqlite"));
+        QVERIFY(StartupOptions::parse({ QStringLiteral("drivedesk") }).journalPath.isEmpty());
+        const StartupOptions empty = StartupOptions::parse(
+            { QStringLiteral("drivedesk"), QStringLiteral("--journal"), QString() });
+        QVERIFY2(empty.error.contains(QStringLiteral("--journal names a file")),
+                 qPrintable(empty.error));
+        QVERIFY(StartupOptions::usage().contains(QStringLiteral("--journal PATH")));
+    }
+
     void commandLineLanguageReachesTheDrive()
     {
         const StartupOptions options = StartupOptions::parse(

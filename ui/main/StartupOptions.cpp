@@ -22,7 +22,9 @@ QString StartupOptions::usage()
         "  --address N          drive address on a DIN66019(II) bus, 0..239 (default 1)\n"
         "  --baud N|auto        baud rate; auto (the default on a serial line) finds the rate\n"
         "                       the drive answers at\n"
-        "  --language en|de     language of the window and of the drive's texts\n");
+        "  --language en|de     language of the window and of the drive's texts\n"
+        "  --journal PATH       the journal of the values written, instead of\n"
+        "                       ~/.local/share/DriveDesk/journal.sqlite\n");
 }
 
 Language StartupOptions::uiLanguage() const
@@ -43,9 +45,12 @@ StartupOptions StartupOptions::parse(const QStringList &arguments)
                                   QStringLiteral("help"));
     const QCommandLineOption open(QStringLiteral("open"), QStringLiteral("parameter file"),
                                   QStringLiteral("FILE"));
+    const QCommandLineOption journal(QStringLiteral("journal"), QStringLiteral("journal"),
+                                     QStringLiteral("PATH"));
     const ConnectionOptions connection;
     connection.addTo(parser);
     parser.addOption(open);
+    parser.addOption(journal);
     parser.addOption(help);
     if (!parser.parse(arguments)) {
         options.error = parser.errorText();
@@ -62,6 +67,13 @@ StartupOptions StartupOptions::parse(const QStringList &arguments)
     }
     if (!connection.language(parser, &options.language, &options.error))
         return options;
+    if (parser.isSet(journal)) {
+        options.journalPath = parser.value(journal);
+        if (options.journalPath.isEmpty()) {
+            options.error = StartupText::tr("--journal names a file: give a path");
+            return options;
+        }
+    }
     if (parser.isSet(open)) {
         if (connection.hasTarget(parser) || connection.hasTargetDetails(parser)) {
             options.error = StartupText::tr(

@@ -16,6 +16,7 @@ struct StartupOptions
 {
     std::optional<ConnectionSettings> connection; // --connect given
     QString parameterFile; // --open given: shown with no drive
+    QString journalPath; // --journal given: the journal the window writes and shows
     std::optional<Language> language; // --language given
     bool help = false;
     QString error; // names the bad argument; empty when the arguments made sense
