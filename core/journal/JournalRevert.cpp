@@ -26,6 +26,17 @@ QString JournalRevertPlan::job() const
         .arg(entries.constLast());
 }
 
+QString JournalRevertPlan::what() const
+{
+    if (entries.size() == 1)
+        return JournalRevert::tr("the value before entry %1").arg(entries.constFirst());
+    if (entries.isEmpty())
+        return JournalRevert::tr("the values before the entries");
+    return JournalRevert::tr("the values before entries %1..%2")
+        .arg(entries.constFirst())
+        .arg(entries.constLast());
+}
+
 DriveDescription JournalRevertPlan::selection(const DriveDescription &drive) const
 {
     return ChosenValues::selectionFor(drive, values);

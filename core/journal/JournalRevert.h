@@ -26,6 +26,8 @@ struct JournalRevertPlan
     bool isRefused() const { return !refusals.isEmpty() || values.isEmpty(); }
     // The job its writes are journaled as: "revert of entries 12..15", "revert of entry 12".
     QString job() const;
+    // What the download's last look says it writes: "the values before entries 12..15".
+    QString what() const;
     // What the download writes: the drive's description with only the values to revert
     // (ChosenValues::selectionFor).
     DriveDescription selection(const DriveDescription &drive) const;

@@ -12,13 +12,16 @@
 #include "transfer/DownloadDialog.h"
 #include "transfer/DownloadFeature.h"
 
+#include <QFileInfo>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScopeGuard>
 #include <QTableView>
 #include <QTreeWidget>
 
+#include <algorithm>
 #include <memory>
 
 using namespace DriveDesk;
@@ -221,6 +224,43 @@ private slots:
             QStringLiteral("since")));
     }
 
+    // drivedesk --journal PATH: the window's edits go there and its view reads it; the journal
+    // in the standard place is left alone.
+    void aJournalNamedAtStartTakesTheWindowsWrites()
+    {
+        const QString standard = Journal::defaultPath();
+        removeJournal(standard);
+        const QString chosen = m_dir.filePath(QStringLiteral("machine-7.sqlite"));
+        Journal::setDefaultPath(chosen);
+        const auto standardAgain = qScopeGuard([] { Journal::setDefaultPath({}); });
+        QCOMPARE(Journal::defaultPath(), chosen);
+        {
+            MainWindow window;
+            window.resize(1300, 900);
+            window.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&window));
+            QVERIFY(connectAndRead(window, simulated()));
+            window.browser()->showGroup(QStringLiteral("op"));
+            QVERIFY(window.browser()->view()->model()->setData(viewIndex(window, kFixedSpeed1, 2),
+                                                               QStringLiteral("345")));
+            QTRY_COMPARE_WITH_TIMEOUT(window.model()->state()->value(kFixedSpeed1, 2), 345,
+                                      kWaitMs);
+            JournalDock *dock = window.findChild<JournalFeature *>()->dock();
+            window.findChild<QAction *>(QStringLiteral("journalViewAction"))->trigger();
+            QTRY_VERIFY_WITH_TIMEOUT(!shown(*dock).isEmpty()
+                                         && shown(*dock).constFirst().endsWith(
+                                             QStringLiteral("|op.20")),
+                                     kWaitMs);
+        }
+        Journal journal(chosen);
+        QVERIFY2(journal.open(Journal::Access::Read), qPrintable(journal.errorString()));
+        const std::optional<QList<JournalEntry>> entries = journal.entries();
+        QVERIFY(entries);
+        QCOMPARE(entries->size(), 1);
+        QCOMPARE(entries->constFirst().written.raw, std::optional<qint32>(345));
+        QVERIFY(!QFileInfo::exists(standard));
+    }
+
     void aWriteAppearsAndIsReverted()
     {
         removeJournal(Journal::defaultPath());
@@ -269,6 +309,11 @@ private slots:
         QTRY_COMPARE(list->topLevelItemCount(), 1);
         QCOMPARE(list->topLevelItem(0)->text(0), QStringLiteral("op.20"));
         QCOMPARE(download->dialog()->run()->options().journalJob, QStringLiteral("revert of entry 1"));
+        const QList<QLabel *> labels = download->dialog()->findChildren<QLabel *>();
+        QVERIFY(std::any_of(labels.begin(), labels.end(), [](const QLabel *label) {
+            return label->text()
+                == QLatin1String("Writes the value before entry 1 to the drive, each read back.");
+        }));
         QCOMPARE(driveValue(window.session()->client(), kFixedSpeed1, 2), 345); // not yet
         auto *write = download->dialog()->findChild<QPushButton *>(QStringLiteral("downloadWrite"));
         QVERIFY(write->isEnabled());

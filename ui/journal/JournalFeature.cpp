@@ -158,8 +158,7 @@ void JournalFeature::revert(const QList<qint64> &ids)
     }
     if (plan.values.isEmpty())
         return;
-    emit revertRequested(plan.selection(drive), tr("the values before %1").arg(plan.job()),
-                         plan.job());
+    emit revertRequested(plan.selection(drive), plan.what(), plan.job());
 }
 
 } // namespace DriveDesk

@@ -40,7 +40,7 @@ public:
 signals:
     // What a revert writes (JournalRevertPlan::selection), in words for the last look, and the
     // job its writes are journaled as.
-    void revertRequested(const DriveDesk::DriveDescription &selection, const QString &source,
+    void revertRequested(const DriveDesk::DriveDescription &selection, const QString &what,
                          const QString &job);
     // The tooltips' last changes were read for the connected drive.
     void changesRead();

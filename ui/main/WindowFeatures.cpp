@@ -64,9 +64,9 @@ QList<WindowFeature *> makeWindowFeatures(WindowFrame &frame)
     auto *journal = new JournalFeature(frame);
     // Journal entries reverted reach the drive as the compare window's chosen values do.
     QObject::connect(journal, &JournalFeature::revertRequested, download,
-                     [download](const DriveDescription &selection, const QString &source,
+                     [download](const DriveDescription &selection, const QString &what,
                                 const QString &job) {
-                         download->downloadSelection(selection, source, job);
+                         download->downloadSelection(selection, what, job);
                      });
     features << journal;
     return features;

@@ -68,16 +68,15 @@ void DownloadFeature::downloadFile(const QString &path)
              tr("download of %1").arg(QFileInfo(path).fileName()));
 }
 
-void DownloadFeature::downloadSelection(const DriveDescription &selection, const QString &source,
+void DownloadFeature::downloadSelection(const DriveDescription &selection, const QString &what,
                                         const QString &journalJob)
 {
     DownloadOptions options;
     options.selection = true;
     options.journalJob = journalJob;
-    const QString what = source.isEmpty() ? tr("the values chosen in the compare window")
-                                          : tr("the values chosen from %1").arg(source);
-    download(selection, options, what,
-             journalJob.isEmpty() ? tr("download of %1").arg(what) : journalJob);
+    const QString values = what.isEmpty() ? tr("the values chosen in the compare window") : what;
+    download(selection, options, values,
+             journalJob.isEmpty() ? tr("download of %1").arg(values) : journalJob);
 }
 
 void DownloadFeature::download(const DriveDescription &file, const DownloadOptions &options,

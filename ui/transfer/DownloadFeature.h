@@ -28,8 +28,9 @@ public:
 
     // The file at `path`, or the values a compare view chose (DownloadOptions::selection).
     void downloadFile(const QString &path);
-    // `journalJob`: what its writes are journaled as, where not the download (a revert).
-    void downloadSelection(const DriveDescription &selection, const QString &source = {},
+    // `what`: the values in words, as the last look names them (none: the compare window's
+    // choice); `journalJob`: what its writes are journaled as, where not the download (a revert).
+    void downloadSelection(const DriveDescription &selection, const QString &what = {},
                            const QString &journalJob = {});
     DownloadDialog *dialog() const;
     // Asked at each download: journal its writes (Drive > Journal Every Write), into the
