@@ -22,12 +22,12 @@ class PlantModel;
 class WindowFrame;
 
 // The plant view: the links and drives of a plant file (core's PlantState, shown through
-// PlantModel) with the jobs of
-// `drivedesk-cli plant` run on them by core's PlantRun: Find, Back Up All, Verify All and
-// Download All (a dry run as the last look per drive, then the writing and one combined
-// report), each with progress per drive and Stop. A drive opens in the window's editor with a
-// double click; two selected drives are read afresh and offered to the compare window. The
-// plant runs on connections of its own: the drive open in the editor goes on meanwhile.
+// PlantModel) with the jobs of `drivedesk-cli plant` run on them by core's PlantRun: Find,
+// Back Up All, Verify All and Download All (a dry run as the last look per drive, then the
+// writing and one combined report), each with progress per drive and Stop. A drive opens in
+// the window's editor with a double click; two selected drives are read afresh and offered to
+// the compare window. The plant runs on connections of its own: the drive open in the editor
+// goes on meanwhile.
 class PlantDock : public QDockWidget
 {
     Q_OBJECT
