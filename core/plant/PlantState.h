@@ -16,8 +16,8 @@ namespace DriveDesk {
 // name and its address, -1 for an HSP5 link's one drive) whether it answers, its
 // identification, the last job's result, the progress of the job at work and its last backup
 // (the file's time in the backup folder); per link what it said of itself and its state, worked
-// out from its drives'. The plant view shows it; it is fed from a PlantRun by follow(), the one
-// way any front end hands it a run.
+// out from its drives'. The plant view shows it, the command line asks it whether any link
+// answered; both feed it from a PlantRun by follow(), the one way a run is handed to it.
 // Thread: the one that made it.
 class PlantState : public QObject
 {

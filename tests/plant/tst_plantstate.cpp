@@ -224,6 +224,32 @@ private slots:
         QVERIFY(state.plant().links.at(0).addresses.isEmpty());
     }
 
+    // A comparison reads two drives into files of its own: their last results stay.
+    void aRunKeptForItsProgressOnlyLeavesTheResults()
+    {
+        PlantState state;
+        state.openPlant(m_plant, {});
+        QVERIFY(run(state, PlantRun::Task::Find));
+        Plant single = state.plant();
+        single.links = { single.links.at(1) };
+        QTemporaryDir readings;
+        QVERIFY(readings.isValid());
+        const std::unique_ptr<PlantRun> read
+            = makeRun(single, PlantRun::Task::Backup, readings.path());
+        bool progressShown = false;
+        connect(&state, &PlantState::driveChanged, this, [&](const QString &link, int address) {
+            progressShown = progressShown || state.drive(link, address).percent >= 0;
+        });
+        state.follow(read.get(), PlantState::Keep::ProgressOnly);
+        QVERIFY(runToEnd(*read));
+        QCOMPARE(read->drives().value(0).outcome, PlantDrive::Outcome::Saved);
+        QVERIFY(progressShown);
+        const PlantState::KnownDrive drive = state.drive(QStringLiteral("single"), -1);
+        QVERIFY(drive.result);
+        QCOMPARE(drive.result->outcome, PlantDrive::Outcome::Found);
+        QCOMPARE(drive.percent, -1);
+    }
+
     void editingThePlantKeepsWhatIsKnown()
     {
         PlantState state;
