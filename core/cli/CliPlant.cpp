@@ -163,6 +163,8 @@ void CliPlant::start()
         m_editJournal->setRemedy(tr("--no-journal downloads without it"));
         m_run->setJournal(m_editJournal.get());
     }
+    m_known.openPlant(*plant, directory);
+    m_known.follow(m_run);
     connect(m_run, &PlantRun::progress, this, &CliPlant::onProgress);
     connect(m_run, &PlantRun::finished, this, &CliPlant::onFinished, Qt::QueuedConnection);
     m_run->start();
@@ -215,10 +217,7 @@ void CliPlant::onFinished()
         break;
     case PlantRequest::Action::Download: printDownload(drives); break;
     }
-    const bool noneAnswered = !drives.isEmpty()
-        && std::all_of(drives.cbegin(), drives.cend(), [](const PlantDrive &drive) {
-               return drive.outcome == PlantDrive::Outcome::Unreachable;
-           });
+    const bool noneAnswered = m_known.noLinkAnswers();
     const bool allGood = std::all_of(drives.cbegin(), drives.cend(),
                                      [](const PlantDrive &drive) { return drive.isGood(); });
     if (m_plant.action == PlantRequest::Action::Find && m_plant.update && !noneAnswered) {

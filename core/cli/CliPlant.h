@@ -2,7 +2,7 @@
 
 #include "cli/CommandLine.h"
 #include "journal/Journal.h"
-#include "plant/PlantRun.h"
+#include "plant/PlantState.h"
 #include "session/EditJournal.h"
 
 #include <QHash>
@@ -62,6 +62,7 @@ private:
     CliRequest m_request;
     PlantRequest m_plant;
     PlantRun *m_run = nullptr;
+    PlantState m_known; // what the run found out of each drive and link
     std::unique_ptr<Journal> m_journal; // a download's, unless --no-journal
     std::unique_ptr<EditJournal> m_editJournal;
     QTextStream m_out;

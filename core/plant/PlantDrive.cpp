@@ -13,6 +13,27 @@ QString PlantDrive::name() const
     return address < 0 ? link : QStringLiteral("%1-%2").arg(link).arg(address);
 }
 
+bool PlantDrive::answered() const
+{
+    switch (outcome) {
+    case Outcome::Found:
+    case Outcome::Saved:
+    case Outcome::Equal:
+    case Outcome::Different:
+    case Outcome::OtherKind:
+    case Outcome::Written:
+    case Outcome::Unchanged:
+    case Outcome::Planned:
+        return true;
+    case Outcome::NoFile:
+    case Outcome::Failed:
+    case Outcome::Unreachable:
+    case Outcome::Stopped:
+        return false;
+    }
+    return false;
+}
+
 QString PlantDrive::outcomeText(Outcome outcome)
 {
     switch (outcome) {

@@ -54,6 +54,8 @@ public:
             || outcome == Outcome::Written || outcome == Outcome::Unchanged
             || outcome == Outcome::Planned;
     }
+    // The drive said something back, whatever it said (a difference, another kind of drive).
+    bool answered() const;
     // "saved", "equal", "another kind of drive", ...
     static QString outcomeText(Outcome outcome);
     // One line for a run: "2 of 3 drives equal; not: cabinet-5 (different)", each drive that
@@ -99,6 +101,7 @@ public:
     // Ends every link after the value on its way; drives not done are Stopped.
     void stop();
     bool isRunning() const;
+    Task task() const { return m_task; }
 
     // The plant, with the addresses a search found on each DIN link whose search went to the
     // end (links that could not be searched keep theirs).

@@ -8,3 +8,7 @@ drivedesk_add_test(NAME tst_plantrun LABELS integration
 # the other links go through and what is said of each drive is true of it, read again.
 drivedesk_add_test(NAME tst_plantcut LABELS integration
     SOURCES plant/tst_plantcut.cpp LIBS drivedesk_plant drivedesk_bus)
+# What is known of each drive of a plant, fed by real runs against simulated drives: who
+# answers, identification, results, a link's state; another plant starts clean.
+drivedesk_add_test(NAME tst_plantstate LABELS integration
+    SOURCES plant/tst_plantstate.cpp LIBS drivedesk_plant drivedesk_bus)

@@ -72,7 +72,8 @@ PlantDock::PlantDock(WindowFrame &frame, QWidget *parent)
     , m_frame(frame)
 {
     setObjectName(QStringLiteral("plantDock"));
-    m_model = new PlantModel(this);
+    m_state = new PlantState(this);
+    m_model = new PlantModel(m_state, this);
     auto *content = new QWidget;
     auto *layout = new QVBoxLayout(content);
     layout->setContentsMargins(2, 2, 2, 2);
@@ -159,25 +160,25 @@ void PlantDock::createActions()
                          tr("Choose where the drives' files are"), QIcon());
 
     connect(m_findAction, &QAction::triggered, this,
-            [this] { startJob(Job::Find, m_model->plant(), {}); });
+            [this] { startJob(Job::Find, m_state->plant(), {}); });
     connect(m_backupAction, &QAction::triggered, this, [this] {
         if (!QDir().mkpath(backupFolder()))
             return showMessage(
                 tr("Cannot make the folder %1.").arg(QDir::toNativeSeparators(backupFolder())));
-        startJob(Job::Backup, m_model->plant(), backupFolder());
+        startJob(Job::Backup, m_state->plant(), backupFolder());
     });
     connect(m_verifyAction, &QAction::triggered, this, [this] {
         if (!QDir(backupFolder()).exists())
             return showMessage(tr("The backup folder %1 does not exist: back the drives up "
                                   "first, or choose another folder.")
                                    .arg(QDir::toNativeSeparators(backupFolder())));
-        startJob(Job::Verify, m_model->plant(), backupFolder());
+        startJob(Job::Verify, m_state->plant(), backupFolder());
     });
     connect(m_downloadAction, &QAction::triggered, this, [this] {
         if (!QDir(backupFolder()).exists())
             return showMessage(tr("The backup folder %1 does not exist.")
                                    .arg(QDir::toNativeSeparators(backupFolder())));
-        startJob(Job::DownloadLook, m_model->plant(), backupFolder());
+        startJob(Job::DownloadLook, m_state->plant(), backupFolder());
     });
     connect(m_stopAction, &QAction::triggered, this, [this] {
         if (m_run)
@@ -198,7 +199,7 @@ bool PlantDock::openPlant(const QString &path, QString *error)
     if (!plant)
         return false;
     m_path = QFileInfo(path).absoluteFilePath();
-    m_model->openPlant(*plant, backupFolder());
+    m_state->openPlant(*plant, backupFolder());
     showPlantTitle();
     m_status->clear();
     updateActions();
@@ -226,7 +227,7 @@ void PlantDock::setBackupFolder(const QString &directory)
     if (m_path.isEmpty())
         return;
     QSettings().setValue(folderKey(m_path), QDir(directory).absolutePath());
-    m_model->setBackupFolder(backupFolder());
+    m_state->setBackupFolder(backupFolder());
     showPlantTitle();
 }
 
@@ -241,13 +242,13 @@ void PlantDock::chooseBackupFolder()
 
 void PlantDock::addLink()
 {
-    auto *dialog = new PlantLinkDialog(m_model->plant(), false, this);
+    auto *dialog = new PlantLinkDialog(m_state->plant(), false, this);
     connect(dialog, &PlantLinkDialog::accepted, this, [this, dialog] {
         QString error;
         const Plant plant = dialog->plant();
         if (!PlantFile::save(m_path, plant, &error))
             return showMessage(error);
-        m_model->setPlant(plant);
+        m_state->setPlant(plant);
         showMessage(tr("Link %1 added to %2.")
                         .arg(plant.links.constLast().name, QDir::toNativeSeparators(m_path)));
     });
@@ -257,10 +258,10 @@ void PlantDock::addLink()
 void PlantDock::showPlantTitle()
 {
     m_title->setText(tr("<b>%1</b> &mdash; %2 &mdash; backups in %3")
-                         .arg(m_model->plant().name.toHtmlEscaped(),
+                         .arg(m_state->plant().name.toHtmlEscaped(),
                               QDir::toNativeSeparators(m_path).toHtmlEscaped(),
                               QDir::toNativeSeparators(backupFolder()).toHtmlEscaped()));
-    setWindowTitle(tr("Plant: %1").arg(m_model->plant().name));
+    setWindowTitle(tr("Plant: %1").arg(m_state->plant().name));
 }
 
 QList<QModelIndex> PlantDock::selectedDrives() const
@@ -292,7 +293,7 @@ void PlantDock::compareSelected()
         return showMessage(tr("Select two drives to compare."));
     // Only the two drives, each read whole as a backup reads it, into files of their own.
     Plant pair;
-    pair.name = m_model->plant().name;
+    pair.name = m_state->plant().name;
     for (const QModelIndex &drive : drives) {
         const PlantLink *link = m_model->linkOf(drive);
         PlantLink *taken = pair.link(link->name);
@@ -312,7 +313,7 @@ void PlantDock::compareSelected()
 
 void PlantDock::updateActions()
 {
-    const bool plant = !m_path.isEmpty() && !m_model->plant().links.isEmpty();
+    const bool plant = !m_path.isEmpty() && !m_state->plant().links.isEmpty();
     const bool idle = m_run.isNull();
     m_findAction->setEnabled(plant && idle);
     m_backupAction->setEnabled(plant && idle);

@@ -2,7 +2,7 @@
 
 #include "PlantReportDialog.h"
 
-#include "plant/PlantRun.h"
+#include "plant/PlantState.h"
 
 #include <QDockWidget>
 #include <QPointer>
@@ -21,12 +21,13 @@ namespace DriveDesk {
 class PlantModel;
 class WindowFrame;
 
-// The plant view: the links and drives of a plant file (PlantModel) with the jobs of
-// `drivedesk-cli plant` run on them by core's PlantRun: Find, Back Up All, Verify All and
-// Download All (a dry run as the last look per drive, then the writing and one combined
-// report), each with progress per drive and Stop. A drive opens in the window's editor with a
-// double click; two selected drives are read afresh and offered to the compare window. The
-// plant runs on connections of its own: the drive open in the editor goes on meanwhile.
+// The plant view: the links and drives of a plant file (core's PlantState, shown through
+// PlantModel) with the jobs of `drivedesk-cli plant` run on them by core's PlantRun: Find,
+// Back Up All, Verify All and Download All (a dry run as the last look per drive, then the
+// writing and one combined report), each with progress per drive and Stop. A drive opens in
+// the window's editor with a double click; two selected drives are read afresh and offered to
+// the compare window. The plant runs on connections of its own: the drive open in the editor
+// goes on meanwhile.
 class PlantDock : public QDockWidget
 {
     Q_OBJECT
@@ -45,6 +46,8 @@ public:
     QString backupFolder() const;
     void setBackupFolder(const QString &directory);
 
+    // What is known of the plant's drives; the jobs keep it, the view shows it.
+    PlantState *state() const { return m_state; }
     PlantModel *model() const { return m_model; }
     QTreeView *view() const { return m_view; }
     Job job() const { return m_job; }
@@ -85,7 +88,6 @@ private:
     QList<QModelIndex> selectedDrives() const;
     // PlantDockJobs.cpp
     void startJob(Job job, const Plant &plant, const QString &directory);
-    void onProgress(const QString &link, int address, int percent, const QString &what);
     void onJobFinished();
     void findFinished(const PlantRun &run);
     void downloadPlanned(const QList<PlantDrive> &drives);
@@ -95,6 +97,7 @@ private:
     void showMessage(const QString &text);
 
     WindowFrame &m_frame;
+    PlantState *m_state = nullptr;
     PlantModel *m_model = nullptr;
     QTreeView *m_view = nullptr;
     QToolBar *m_toolBar = nullptr;

@@ -1,7 +1,6 @@
 // PlantDock: the plant's jobs, each a PlantRun of core, and what the view makes of their end.
 #include "PlantDock.h"
 
-#include "PlantModel.h"
 #include "PlantReportDialog.h"
 
 #include "bus/LinkFactory.h"
@@ -41,20 +40,15 @@ void PlantDock::startJob(Job job, const Plant &plant, const QString &directory)
         run->setJournal(RunJournal::attach(
             run, tr("plant download of %1").arg(QFileInfo(m_path).fileName())));
     }
-    connect(run, &PlantRun::progress, this, &PlantDock::onProgress);
-    connect(run, &PlantRun::driveDone, this, [this](const PlantDrive &done) {
-        const PlantDrive drive = explained(done);
-        // A comparison reads into files of its own: the drives' results stay as they were.
-        if (m_job != Job::CompareRead)
-            m_model->setDriveDone(drive);
-    });
+    // A comparison reads into files of its own: the drives' last results stay as they were.
+    m_state->follow(run,
+                    job == Job::CompareRead ? PlantState::Keep::ProgressOnly
+                                            : PlantState::Keep::Results,
+                    [this](const PlantDrive &drive) { return explained(drive); });
     connect(run, &PlantRun::finished, this, &PlantDock::onJobFinished);
     m_run = run;
     m_job = job;
     m_jobPlant = plant;
-    // A comparison reads into files of its own: the drives' last results stay shown.
-    if (job != Job::CompareRead)
-        m_model->startJob();
     switch (job) {
     case Job::Find:
         showMessage(tr("Searching every link for its drives..."));
@@ -81,18 +75,12 @@ void PlantDock::startJob(Job job, const Plant &plant, const QString &directory)
     run->start();
 }
 
-void PlantDock::onProgress(const QString &link, int address, int percent, const QString &what)
-{
-    m_model->setProgress(link, address, percent, what.isEmpty() ? tr("reading") : what);
-}
-
 void PlantDock::onJobFinished()
 {
     PlantRun *run = m_run;
     const Job job = m_job;
     m_run = nullptr;
     m_job = Job::None;
-    m_model->endJob();
     run->deleteLater();
     QList<PlantDrive> drives = run->drives();
     for (PlantDrive &drive : drives)
@@ -131,14 +119,11 @@ void PlantDock::onJobFinished()
 
 void PlantDock::findFinished(const PlantRun &run)
 {
-    const QList<PlantDrive> drives = run.drives();
-    const bool noneAnswered = std::all_of(drives.cbegin(), drives.cend(), [](const PlantDrive &d) {
-        return d.outcome == PlantDrive::Outcome::Unreachable;
-    });
-    QString text = PlantDrive::summary(drives, PlantDrive::outcomeText(PlantDrive::Outcome::Found));
+    QString text
+        = PlantDrive::summary(run.drives(), PlantDrive::outcomeText(PlantDrive::Outcome::Found));
     // As `plant find --update`: the addresses found on the links searched to the end go into
     // the plant file, and nothing else in it changes.
-    if (!noneAnswered && run.plant() != m_jobPlant) {
+    if (!m_state->noLinkAnswers() && run.plant() != m_jobPlant) {
         QString error;
         // The summary is a sentence of its own, without its full stop on the command line.
         if (PlantFile::save(m_path, run.plant(), &error))
@@ -147,7 +132,6 @@ void PlantDock::findFinished(const PlantRun &run)
         else
             text = tr("%1. The plant file was not changed: %2").arg(text, error);
     }
-    m_model->setPlant(run.plant());
     showMessage(text);
 }
 
@@ -167,7 +151,7 @@ void PlantDock::downloadPlanned(const QList<PlantDrive> &drives)
     m_report = look;
     look->setAttribute(Qt::WA_DeleteOnClose);
     connect(look, &PlantReportDialog::accepted, this,
-            [this] { startJob(Job::Download, m_model->plant(), backupFolder()); });
+            [this] { startJob(Job::Download, m_state->plant(), backupFolder()); });
     look->show();
     showMessage(text);
 }
@@ -177,7 +161,7 @@ PlantDrive PlantDock::explained(PlantDrive drive) const
     // A line the editor holds cannot be opened a second time (a serial port, a gateway that
     // serves one connection): its drives fail, and the user needs to know what to do.
     const DriveSession *session = m_frame.session();
-    const PlantLink *link = m_model->plant().link(drive.link);
+    const PlantLink *link = m_state->plant().link(drive.link);
     if (drive.isGood() || !session || !link
         || session->state() == DriveClient::State::Disconnected
         || link->settings(std::max(drive.address, 0)).target() != session->settings().target())

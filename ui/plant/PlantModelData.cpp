@@ -18,15 +18,20 @@ QVariant PlantModel::data(const QModelIndex &index, int role) const
     const PlantLink *link = linkOf(index);
     if (!link)
         return {};
-    const QList<int> rows = rowsOf(*link);
-    return index.row() < rows.size() ? driveData(*link, rows.at(index.row()), index.column(), role)
-                                     : QVariant();
+    const QList<int> &drives = m_rows.at(int(index.internalId() - 1)).drives;
+    return index.row() < drives.size()
+        ? driveData(*link, drives.at(index.row()), index.column(), role)
+        : QVariant();
 }
 
 QVariant PlantModel::linkData(int row, int column, int role) const
 {
-    const PlantLink &link = m_plant.links.at(row);
-    const Known known = m_links.value(link.name);
+    const PlantLink *plantLink = m_state->plant().link(m_rows.at(row).link);
+    if (!plantLink)
+        return {};
+    const PlantLink &link = *plantLink;
+    const PlantState::KnownLink known = m_state->link(link.name);
+    const PlantState::Reach reach = m_state->linkReach(link.name);
     if (role == LinkRole)
         return link.name;
     if (role == ProgressRole)
@@ -40,9 +45,9 @@ QVariant PlantModel::linkData(int row, int column, int role) const
         return link.name;
     case StateColumn:
         if (link.protocol != Protocol::Hsp5 && link.addresses.isEmpty()
-            && known.state == DriveState::NotSearched)
+            && reach == PlantState::Reach::NotSearched)
             return tr("not searched");
-        return known.state == DriveState::NotSearched ? QString() : stateText(known.state);
+        return reach == PlantState::Reach::NotSearched ? QString() : stateText(reach);
     case IdentificationColumn: {
         const QString baud = link.baudRate ? tr(", %1 baud").arg(*link.baudRate) : QString();
         return tr("%1 on %2%3").arg(protocolName(link.protocol), link.connect, baud);
@@ -50,7 +55,7 @@ QVariant PlantModel::linkData(int row, int column, int role) const
     case ResultColumn:
         return known.result ? resultText(*known.result) : QVariant();
     case ProgressColumn:
-        return known.percent >= 0 ? known.what : QVariant();
+        return known.percent >= 0 ? progressText(known.what) : QVariant();
     default:
         return {};
     }
@@ -58,7 +63,7 @@ QVariant PlantModel::linkData(int row, int column, int role) const
 
 QVariant PlantModel::driveData(const PlantLink &link, int address, int column, int role) const
 {
-    const Known known = m_known.value(key(link.name, address));
+    const PlantState::KnownDrive known = m_state->drive(link.name, address);
     switch (role) {
     case LinkRole:
         return link.name;
@@ -72,7 +77,11 @@ QVariant PlantModel::driveData(const PlantLink &link, int address, int column, i
         if (column == ResultColumn && known.result)
             return resultToolTip(*known.result);
         if (column == BackupColumn && known.backup.isValid())
-            return QDir::toNativeSeparators(PlantRun::fileFor(m_directory, link, address));
+            return QDir::toNativeSeparators(
+                PlantRun::fileFor(m_state->backupFolder(), link, address));
+        if (column == StateColumn && known.reach == PlantState::Reach::Unreachable
+            && !known.why.isEmpty())
+            return known.why;
         return column == NameColumn ? tr("Double-click to open the drive in the editor")
                                     : QVariant();
     case Qt::ForegroundRole:
@@ -85,10 +94,14 @@ QVariant PlantModel::driveData(const PlantLink &link, int address, int column, i
         return {};
     }
     switch (column) {
-    case NameColumn:
-        return key(link.name, address);
+    case NameColumn: {
+        PlantDrive drive;
+        drive.link = link.name;
+        drive.address = address;
+        return drive.name();
+    }
     case StateColumn:
-        return stateText(known.state);
+        return stateText(known.reach);
     case IdentificationColumn:
         return known.identification;
     case BackupColumn:
@@ -97,10 +110,15 @@ QVariant PlantModel::driveData(const PlantLink &link, int address, int column, i
     case ResultColumn:
         return known.result ? resultText(*known.result) : QVariant();
     case ProgressColumn:
-        return known.percent >= 0 ? known.what : QVariant();
+        return known.percent >= 0 ? progressText(known.what) : QVariant();
     default:
         return {};
     }
+}
+
+QString PlantModel::progressText(const QString &what) const
+{
+    return what.isEmpty() ? tr("reading") : what;
 }
 
 QString PlantModel::resultText(const PlantDrive &drive) const
