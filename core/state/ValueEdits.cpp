@@ -218,8 +218,8 @@ void ValueEdits::batchAnswered(Batch *batch, const QFuture<WriteOutcome> &future
 
 void ValueEdits::endBatch(Batch *batch)
 {
-    // What is still queued never went out: the stop's reason, the connection's, or the
-    // journal's (whose outcomes are in already).
+    // An item still queued never went out: stopped, or the connection failed or went away
+    // first. One the journal refused has its outcome already.
     const QString reason = batch->stopReason.isEmpty()
         ? tr("the connection to the drive was closed")
         : batch->stopReason;
