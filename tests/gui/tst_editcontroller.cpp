@@ -398,8 +398,8 @@ private slots:
         m_editor->copySet(0, 5);
         QVERIFY(m_drive->model.requestWrite(kFixedSpeed1, 0x20, 777)); // set 5
         QTRY_VERIFY_WITH_TIMEOUT(!m_editor->isBusy(), kWaitMs);
-        QCOMPARE(ended, (QList<qint32> { -222, 777 }));
         QCOMPARE(m_drive->driveValue(kFixedSpeed1, 5), 777);
+        QCOMPARE(ended, (QList<qint32> { -222, 777 }));
         QCOMPARE(m_drive->model.state()->value(kFixedSpeed1, 5), 777);
         QCOMPARE(m_drive->state(kFixedSpeed1, 5), EditState::Written);
         QCOMPARE(m_drive->driveValue(kMaxSpeedForward, 5), 1111);
