@@ -81,8 +81,9 @@ quint64 ValueEdits::applyAll(const QList<BatchItem> &items, ItemDone written, Ba
 
 void ValueEdits::stopBatch(quint64 number, const QString &reason)
 {
-    const auto found = std::find_if(m_batches.begin(), m_batches.end(),
-                                    [number](const auto &batch) { return batch->number == number; });
+    const auto found
+        = std::find_if(m_batches.begin(), m_batches.end(),
+                       [number](const auto &batch) { return batch->number == number; });
     if (found == m_batches.end())
         return;
     Batch &batch = **found;
@@ -139,9 +140,10 @@ void ValueEdits::startFirst(const EditPtr &edit)
     Batch *batch = edit->batch;
     if (!batch)
         return begin(edit);
-    const bool ready = std::all_of(batch->edits.begin(), batch->edits.end(), [this](const EditPtr &item) {
-        return m_queues.value(item->change.address).value(0) == item;
-    });
+    const bool ready
+        = std::all_of(batch->edits.begin(), batch->edits.end(), [this](const EditPtr &item) {
+              return m_queues.value(item->change.address).value(0) == item;
+          });
     if (ready && !batch->started)
         beginBatch(batch);
 }
