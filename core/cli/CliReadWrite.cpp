@@ -87,22 +87,26 @@ void CliRunner::readIdentity(quint16 address, std::function<void()> next)
         for (const quint8 number : { 0, 6, 10 })
             identity.onlyParameters << quint16(in->address | number);
     }
-    scan(identity, [this, address, next = std::move(next)](const DriveDescription &found) {
+    scan(identity, [this, next = std::move(next)](const DriveDescription &found) {
         // What could not be read leaves the journal's entry without it, not the write undone.
+        // The values read just now join what the state knows: the identification, and the
+        // value before the write.
         DriveDescription drive = m_state->description();
         for (const GroupDescription &group : found.groups) {
             auto known = std::find_if(drive.groups.begin(), drive.groups.end(),
                                       [&group](const GroupDescription &g) { return g.id == group.id; });
-            if (known == drive.groups.end())
+            if (known == drive.groups.end()) {
                 drive.groups << group;
-            else if (known->parameters.isEmpty())
-                *known = group;
+                continue;
+            }
+            for (const ParameterDescription &read : group.parameters) {
+                ParameterDescription *held = drive.find(read.address);
+                if (!held)
+                    known->parameters << read;
+                else if (read.error.isEmpty())
+                    held->values = read.values;
+            }
         }
-        // The value before the write, as read just now.
-        const ParameterDescription *read = found.find(address);
-        ParameterDescription *held = drive.find(address);
-        if (read && held && read->error.isEmpty())
-            held->values = read->values;
         m_state->setDescription(drive);
         next();
     });

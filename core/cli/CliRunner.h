@@ -3,6 +3,7 @@
 #include "cli/CommandLine.h"
 #include "client/DriveClient.h"
 #include "scope/ScopeChannel.h"
+#include "session/ScopeAssignment.h"
 
 #include <QObject>
 #include <QTextStream>
@@ -66,6 +67,9 @@ private:
     void runRevert();
     // Records the drive's scope data and writes it as CSV (CliScope.cpp).
     void runScope();
+    // Writes the channels' sources chosen (none: leaves them), journaled where `journaled`, and
+    // reads them back, then records.
+    void assignChannels(const ScopeAssignment &choices, bool journaled);
     void record(const QList<ScopeChannel> &channels);
     void recorded(const ScopePollEnd &end);
     void readOfflineRecords(const QList<ScopeChannel> &channels);

@@ -1,14 +1,15 @@
 // drivedesk-cli scope: records the drive's scope data for a while and writes it as CSV.
 #include "CliRunner.h"
 
-#include "client/WhenFinished.h"
-
 #include "parameters/ParameterId.h"
 #include "scope/ScopeCsv.h"
 #include "scope/ScopeRecording.h"
-#include "session/ScopeChannelsJob.h"
+#include "session/EditJournal.h"
 #include "session/ScopeOfflineJob.h"
 #include "session/ScopeRecorder.h"
+#include "state/DriveState.h"
+#include "state/ScopeChannelEdits.h"
+#include "state/ValueEdits.h"
 
 #include <QFutureWatcher>
 
@@ -46,19 +47,47 @@ void CliRunner::runScope()
                 }
             }
         }
-        const auto job = std::make_shared<ScopeChannelsJob>(m_request.connection.protocol, drive,
-                                                            choices);
-        whenFinished(m_client->run(job), this, [this, drive](const ScopeChannelsOutcome &outcome) {
-            if (outcome.refusedChoice)
-                return fail(2, outcome.error);
-            if (!outcome.error.isEmpty())
-                return fail(outcome.connectionFailed ? 3 : 1,
-                            tr("the channels could not be assigned: %1").arg(outcome.error));
-            const ScopeChannels channels = scopeChannels(drive, outcome.assignment);
-            if (m_request.offline)
-                return readOfflineRecords(channels);
-            record(channels);
-        }, [this] { connectionClosed(); });
+        m_state->setDescription(drive);
+        // Nothing to write, nothing to journal; else the journal names the drive by what it
+        // says it is.
+        const bool writes = !planScopeChannels(drive, choices).writes.isEmpty();
+        if (!m_request.journalWrites || !writes)
+            return assignChannels(choices, false);
+        readIdentity(scopeAssignmentParameters(drive)->source[0],
+                     [this, choices] { assignChannels(choices, true); });
+    });
+}
+
+// Through the edit path, as `write` writes: ordered, journaled unless --no-journal, read back.
+void CliRunner::assignChannels(const ScopeAssignment &choices, bool journaled)
+{
+    const DriveDescription drive = m_state->description();
+    auto *edits = new ValueEdits(m_client.get(), m_state, this);
+    if (journaled) {
+        QString error;
+        const bool opened = openJournal(&error);
+        m_editJournal = std::make_unique<EditJournal>(
+            m_journal.get(), EditJournal::driveOf(m_request.connection, drive),
+            tr("scope channel assignment"));
+        // A journal that cannot be opened refuses the writes, each saying why.
+        if (!opened) {
+            m_editJournal->setUnavailable(error);
+            m_editJournal->setRemedy(tr("--no-journal writes without it"));
+        }
+        edits->setJournal(m_editJournal.get());
+    }
+    assignScopeChannels(*edits, drive, choices,
+                        [this, edits, drive](const ScopeChannelsOutcome &outcome) {
+        edits->deleteLater();
+        if (outcome.refusedChoice)
+            return fail(2, outcome.error);
+        if (!outcome.error.isEmpty())
+            return fail(outcome.connectionFailed ? 3 : 1,
+                        tr("the channels could not be assigned: %1").arg(outcome.error));
+        const ScopeChannels channels = scopeChannels(drive, outcome.assignment);
+        if (m_request.offline)
+            return readOfflineRecords(channels);
+        record(channels);
     });
 }
 

@@ -30,25 +30,4 @@ CopySetPlan planCopySet(const DriveDescription &drive, int from, int to, Passwor
     return plan;
 }
 
-namespace {
-
-QList<ValueChange> changesOf(const CopySetPlan &plan)
-{
-    QList<ValueChange> changes;
-    changes.reserve(plan.items.size());
-    for (const CopySetPlan::Item &item : plan.items) {
-        ValueChange change;
-        change.address = item.address;
-        change.steps = {WriteStep{quint8(1u << plan.to), item.raw, false}};
-        changes << change;
-    }
-    return changes;
-}
-
-} // namespace
-
-CopySetJob::CopySetJob(Protocol protocol, const CopySetPlan &plan)
-    : WriteChangesJob(protocol, changesOf(plan))
-{ }
-
 } // namespace DriveDesk

@@ -1,9 +1,7 @@
 #pragma once
 
-#include "client/RequestJob.h"
 #include "parameters/DriveDescription.h"
 #include "parameters/PasswordLevel.h"
-#include "session/WriteChangesJob.h"
 
 #include <QList>
 
@@ -26,14 +24,5 @@ struct CopySetPlan
 };
 
 CopySetPlan planCopySet(const DriveDescription &drive, int from, int to, PasswordLevel level);
-
-// Writes a plan's items to the target set, each read back; result i is the outcome of
-// items[i] (WriteChangesJob: requestStop() and a lost connection leave every item without a
-// result unwritten).
-class CopySetJob : public WriteChangesJob
-{
-public:
-    CopySetJob(Protocol protocol, const CopySetPlan &plan);
-};
 
 } // namespace DriveDesk

@@ -2,7 +2,6 @@
 
 #include "client/ValueRequests.h"
 #include "parameters/ParameterId.h"
-#include "session/ValueChange.h"
 
 #include <QCoreApplication>
 
@@ -17,23 +16,21 @@ QString tr(const char *text)
 
 } // namespace
 
-ScopeChannelsJob::ScopeChannelsJob(Protocol protocol, const DriveDescription &drive,
-                                   ScopeAssignment choices)
-    : m_protocol(protocol)
-    , m_parameters(scopeAssignmentParameters(drive))
+ScopeChannelWrites planScopeChannels(const DriveDescription &drive,
+                                     const ScopeAssignment &choices)
 {
+    ScopeChannelWrites planned;
     const bool anyChoice = std::any_of(choices.begin(), choices.end(),
                                        [](const auto &choice) { return choice.has_value(); });
-    if (!m_parameters) {
-        m_outcome.refusedChoice = anyChoice;
+    const std::optional<ScopeAssignmentParameters> parameters = scopeAssignmentParameters(drive);
+    if (!parameters) {
         if (anyChoice)
-            m_outcome.error = tr("This drive has no channel-assignment parameters (Sy.16 to "
-                                 "Sy.23): its channels are recorded as it has them assigned.");
-        return;
+            planned.error = tr("This drive has no channel-assignment parameters (Sy.16 to "
+                               "Sy.23): its channels are recorded as it has them assigned.");
+        return planned;
     }
     const QList<const ParameterDescription *> sources = scopeSources(drive);
-    for (std::size_t channel = 0; channel < choices.size() && m_outcome.error.isEmpty();
-         ++channel) {
+    for (std::size_t channel = 0; channel < choices.size(); ++channel) {
         const std::optional<ChannelAssignment> &choice = choices[channel];
         if (!choice)
             continue;
@@ -42,7 +39,7 @@ ScopeChannelsJob::ScopeChannelsJob(Protocol protocol, const DriveDescription &dr
                 sources.begin(), sources.end(),
                 [&](const ParameterDescription *p) { return p->address == choice->source; });
             if (!permitted) {
-                m_outcome.error
+                planned.error
                     = tr("Channel %1: %2 may not be recorded (the drive does not permit it as "
                          "process data).")
                           .arg(channel + 1)
@@ -51,54 +48,28 @@ ScopeChannelsJob::ScopeChannelsJob(Protocol protocol, const DriveDescription &dr
             }
         }
         if (choice->setMask == 0) {
-            m_outcome.error = tr("Channel %1: choose at least one set.").arg(channel + 1);
+            planned.error = tr("Channel %1: choose at least one set.").arg(channel + 1);
             break;
         }
-        const quint16 sourceParameter = m_parameters->source[channel];
-        const quint16 maskParameter = m_parameters->setMask[channel];
-        const ParameterDescription *source = drive.find(sourceParameter);
-        const ParameterDescription *mask = drive.find(maskParameter);
-        m_writes << Write{sourceParameter, source && source->isSetProgrammable(), choice->source}
-                 << Write{maskParameter, mask && mask->isSetProgrammable(), choice->setMask};
+        planned.writes << ScopeChannelWrites::Write { parameters->source[channel], choice->source }
+                       << ScopeChannelWrites::Write { parameters->setMask[channel],
+                                                      choice->setMask };
     }
-    m_outcome.refusedChoice = !m_outcome.error.isEmpty();
-    m_reads = m_parameters->all();
+    if (!planned.error.isEmpty())
+        planned.writes.clear();
+    return planned;
+}
+
+ScopeChannelsJob::ScopeChannelsJob(Protocol protocol, const DriveDescription &drive)
+    : m_protocol(protocol)
+{
+    if (const std::optional<ScopeAssignmentParameters> parameters
+        = scopeAssignmentParameters(drive))
+        m_reads = parameters->all();
 }
 
 void ScopeChannelsJob::start()
 {
-    if (!m_outcome.error.isEmpty() || !m_parameters)
-        return finish();
-    writeNext();
-}
-
-void ScopeChannelsJob::writeNext()
-{
-    if (isCancelled() || isStopRequested())
-        return finish();
-    if (m_nextWrite >= m_writes.size())
-        return readBack();
-    const Write write = m_writes.at(m_nextWrite++);
-    ValueChange change;
-    change.address = write.address;
-    change.setProgrammable = write.setProgrammable;
-    change.steps << WriteStep{0, write.raw, false}; // the active set: the one the drive uses
-    sendValueChange(sink(), m_protocol, change, [this](const WriteOutcome &outcome) {
-        if (!outcome.ok()) {
-            m_outcome.error = outcome.error;
-            m_outcome.connectionFailed = outcome.connectionFailed;
-            // What did reach the drive is still read back, where the link allows.
-            if (outcome.connectionFailed)
-                return finish();
-            return readBack();
-        }
-        writeNext();
-    });
-}
-
-void ScopeChannelsJob::readBack()
-{
-    m_nextRead = 0;
     readNext();
 }
 

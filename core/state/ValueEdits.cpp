@@ -5,11 +5,27 @@
 #include "parameters/ParameterAccess.h"
 #include "parameters/ParameterId.h"
 #include "parameters/SetList.h"
+#include "session/WriteChangesJob.h"
 #include "state/DriveState.h"
 
 #include <QFutureWatcher>
 
+#include <algorithm>
+
 namespace DriveDesk {
+
+namespace {
+
+// The sets an edit's steps write, the active set counted as set 0.
+quint8 setsOf(const QList<WriteStep> &steps)
+{
+    quint8 mask = 0;
+    for (const WriteStep &step : steps)
+        mask |= step.setMask ? step.setMask : quint8(1);
+    return mask;
+}
+
+} // namespace
 
 ValueEdits::ValueEdits(DriveClient *client, DriveState *state, QObject *parent)
     : QObject(parent)
@@ -27,6 +43,60 @@ void ValueEdits::restore(const ParameterDescription &parameter, quint8 setMask,
 
 void ValueEdits::apply(const ParameterDescription &parameter, QList<WriteStep> steps, bool reset,
                        Done done)
+{
+    const EditPtr edit = prepare(parameter, std::move(steps), reset);
+    edit->done = std::move(done);
+    setRunning(m_running + 1);
+    if (enqueue(edit))
+        begin(edit);
+}
+
+quint64 ValueEdits::applyAll(const QList<BatchItem> &items, ItemDone written, BatchDone done)
+{
+    auto owned = std::make_unique<Batch>();
+    Batch *batch = owned.get();
+    batch->number = ++m_lastBatch;
+    batch->written = std::move(written);
+    batch->done = std::move(done);
+    for (qsizetype index = 0; index < items.size(); ++index) {
+        const EditPtr edit = prepare(items.at(index).parameter, items.at(index).steps, false);
+        edit->batch = batch;
+        edit->done = [batch, index](const EditOutcome &outcome) {
+            if (batch->written)
+                batch->written(index, outcome);
+        };
+        batch->edits << edit;
+    }
+    m_batches.push_back(std::move(owned));
+    setRunning(m_running + int(items.size()));
+    for (const EditPtr &edit : std::as_const(batch->edits))
+        enqueue(edit);
+    const quint64 number = batch->number;
+    if (batch->edits.isEmpty())
+        endBatch(batch);
+    else
+        startFirst(batch->edits.constFirst());
+    return number;
+}
+
+void ValueEdits::stopBatch(quint64 number, const QString &reason)
+{
+    const auto found
+        = std::find_if(m_batches.begin(), m_batches.end(),
+                       [number](const auto &batch) { return batch->number == number; });
+    if (found == m_batches.end())
+        return;
+    Batch &batch = **found;
+    if (batch.stopReason.isEmpty())
+        batch.stopReason = reason;
+    // One that has not started ends unsent when its turn comes: its items hold their places in
+    // the queues until then.
+    if (batch.job)
+        batch.job->requestStop();
+}
+
+ValueEdits::EditPtr ValueEdits::prepare(const ParameterDescription &parameter,
+                                        QList<WriteStep> steps, bool reset)
 {
     auto edit = std::make_shared<Edit>();
     for (WriteStep &step : steps) {
@@ -47,7 +117,6 @@ void ValueEdits::apply(const ParameterDescription &parameter, QList<WriteStep> s
             return implausibleValue(parameter, value);
         };
     }
-    edit->done = std::move(done);
     edit->outcome.address = parameter.address;
     edit->outcome.reset = reset;
     edit->outcome.steps = std::move(steps);
@@ -56,21 +125,42 @@ void ValueEdits::apply(const ParameterDescription &parameter, QList<WriteStep> s
             m_state->markPending(parameter.address, step.setMask, step.raw);
         emit pending(parameter.address, step.setMask, step.raw);
     }
-    QList<EditPtr> &queue = m_queues[parameter.address];
+    return edit;
+}
+
+bool ValueEdits::enqueue(const EditPtr &edit)
+{
+    QList<EditPtr> &queue = m_queues[edit->change.address];
     queue << edit;
-    setRunning(m_running + 1);
-    if (queue.size() == 1)
-        begin(edit);
+    return queue.size() == 1;
+}
+
+void ValueEdits::startFirst(const EditPtr &edit)
+{
+    Batch *batch = edit->batch;
+    if (!batch)
+        return begin(edit);
+    const bool ready
+        = std::all_of(batch->edits.begin(), batch->edits.end(), [this](const EditPtr &item) {
+              return m_queues.value(item->change.address).value(0) == item;
+          });
+    if (ready && !batch->started)
+        beginBatch(batch);
+}
+
+void ValueEdits::takeBefore(Edit &edit) const
+{
+    // Taken as the edit begins, not when queued: the edit before it may have changed them.
+    if (!m_state)
+        return;
+    for (int set = 0; set < kParameterSets; ++set)
+        edit.outcome.before[std::size_t(set)] = m_state->value(edit.change.address, set);
 }
 
 void ValueEdits::begin(const EditPtr &edit)
 {
-    // Taken now, not when queued: the edit before it may have changed these values.
-    if (m_state) {
-        for (int set = 0; set < kParameterSets; ++set)
-            edit->outcome.before[std::size_t(set)] = m_state->value(edit->change.address, set);
-    }
-    if (m_journal && !journal(edit))
+    takeBefore(*edit);
+    if (m_journal && !journal({ edit }))
         return;
     auto *watcher = new QFutureWatcher<WriteOutcome>(this);
     connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, edit] {
@@ -92,7 +182,66 @@ void ValueEdits::begin(const EditPtr &edit)
         std::make_shared<WriteValueJob>(m_client->settings().protocol, edit->change)));
 }
 
-void ValueEdits::finish(const EditPtr &edit, const WriteOutcome &written)
+void ValueEdits::beginBatch(Batch *batch)
+{
+    batch->started = true;
+    if (!batch->stopReason.isEmpty())
+        return endBatch(batch);
+    for (const EditPtr &edit : std::as_const(batch->edits))
+        takeBefore(*edit);
+    if (m_journal && !journal(batch->edits))
+        return endBatch(batch);
+    QList<ValueChange> changes;
+    for (const EditPtr &edit : std::as_const(batch->edits))
+        changes << edit->change;
+    batch->job = std::make_shared<WriteChangesJob>(m_client->settings().protocol, changes);
+    auto *watcher = new QFutureWatcher<WriteOutcome>(this);
+    connect(watcher, &QFutureWatcherBase::resultsReadyAt, this,
+            [this, watcher, batch](int begin, int end) {
+                batchAnswered(batch, watcher->future(), begin, end);
+            });
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, batch] {
+        watcher->deleteLater();
+        endBatch(batch);
+    });
+    watcher->setFuture(m_client->run(batch->job));
+}
+
+void ValueEdits::batchAnswered(Batch *batch, const QFuture<WriteOutcome> &future, int begin,
+                               int end)
+{
+    for (int index = begin; index < end; ++index) {
+        const WriteOutcome outcome = future.resultAt(index);
+        if (outcome.connectionFailed && batch->stopReason.isEmpty())
+            batch->stopReason = outcome.error;
+        finish(batch->edits.at(index), outcome);
+    }
+}
+
+void ValueEdits::endBatch(Batch *batch)
+{
+    // An item still queued never went out: stopped, or the connection failed or went away
+    // first. One the journal refused has its outcome already.
+    const QString reason = batch->stopReason.isEmpty()
+        ? tr("the connection to the drive was closed")
+        : batch->stopReason;
+    QList<EditOutcome> outcomes;
+    for (const EditPtr &edit : std::as_const(batch->edits)) {
+        if (m_queues.value(edit->change.address).contains(edit)) {
+            edit->done = {};
+            finish(edit, EditJournal::notSent(edit->change.address, setsOf(edit->change.steps),
+                                              reason),
+                   true);
+        }
+        outcomes << edit->outcome;
+    }
+    const BatchDone done = std::move(batch->done);
+    std::erase_if(m_batches, [batch](const auto &owned) { return owned.get() == batch; });
+    if (done)
+        done(outcomes);
+}
+
+void ValueEdits::finish(const EditPtr &edit, const WriteOutcome &written, bool unsent)
 {
     EditOutcome &outcome = edit->outcome;
     static_cast<WriteOutcome &>(outcome) = written;
@@ -112,32 +261,41 @@ void ValueEdits::finish(const EditPtr &edit, const WriteOutcome &written)
     setRunning(m_running - 1);
     if (m_journal && !edit->journaled.isEmpty())
         m_journal->complete(edit->parameter, edit->journaled, outcome);
-    if (m_state)
+    if (m_state && unsent && !outcome.superseded)
+        m_state->clearEditState(outcome.address, outcome.askedMask());
+    else if (m_state)
         m_state->showOutcome(outcome, outcome.superseded);
     emit edited(outcome);
     if (edit->done)
         edit->done(outcome);
     if (next)
-        begin(next);
+        startFirst(next);
 }
 
-bool ValueEdits::journal(const EditPtr &edit)
+bool ValueEdits::journal(const QList<EditPtr> &edits)
 {
-    const quint16 address = edit->change.address;
-    const QString id
-        = m_state ? m_state->editText(address).id() : ParameterId::hexAddress(address);
+    QList<EditJournal::Write> writes;
+    for (const EditPtr &edit : edits) {
+        const quint16 address = edit->change.address;
+        const QString id
+            = m_state ? m_state->editText(address).id() : ParameterId::hexAddress(address);
+        writes << EditJournal::Write { id, &edit->parameter, edit->change.steps,
+                                       edit->outcome.before };
+    }
     QString error;
-    const std::optional<QList<EditJournal::Entry>> entries
-        = m_journal->begin(id, edit->parameter, edit->change.steps, edit->outcome.before, &error);
+    const std::optional<QList<QList<EditJournal::Entry>>> entries
+        = m_journal->begin(m_journal->drive(), writes, &error);
     if (entries) {
-        edit->journaled = *entries;
+        for (qsizetype index = 0; index < edits.size(); ++index)
+            edits.at(index)->journaled = entries->at(index);
         return true;
     }
     // Nothing is written that the journal could not record.
-    quint8 mask = 0;
-    for (const WriteStep &step : std::as_const(edit->change.steps))
-        mask |= step.setMask ? step.setMask : quint8(1);
-    finish(edit, EditJournal::notJournaled(address, mask, error));
+    for (const EditPtr &edit : edits) {
+        edit->done = edit->batch ? Done() : edit->done;
+        finish(edit, EditJournal::notJournaled(edit->change.address, setsOf(edit->change.steps),
+                                               error));
+    }
     return false;
 }
 

@@ -2,8 +2,12 @@
 
 #include "edit/AccessController.h"
 #include "edit/EditController.h"
+#include "journal/Journal.h"
 
 #include <QAbstractItemModelTester>
+#include <QSqlDatabase>
+#include <QSqlQuery>
+#include <QTemporaryDir>
 
 using namespace DriveDesk;
 using namespace DriveDesk::EditTest;
@@ -13,6 +17,23 @@ using namespace DriveDesk::EditTest;
 class TestEditController : public QObject
 {
     Q_OBJECT
+private:
+    // Replies that take their time (20 ms), and op.11 = 1111 and op.20 = -222 in set 0 alone:
+    // a copy from set 0 writes these two, op.11 first.
+    void startSlowDriveWithSetZeroChanged()
+    {
+        cleanup();
+        m_drive = std::make_unique<SimulatedDrive>(20000);
+        QVERIFY(m_drive->start({kMaxSpeedForward >> 8}));
+        m_editor = std::make_unique<EditController>(&m_drive->client, &m_drive->model,
+                                                    &m_drive->undoStack);
+        m_messages = std::make_unique<QSignalSpy>(m_editor.get(), &EditController::message);
+        QVERIFY(m_drive->model.requestWrite(kMaxSpeedForward, 0x01, 1111));
+        QVERIFY(m_drive->model.requestWrite(kFixedSpeed1, 0x01, -222));
+        QTRY_COMPARE_WITH_TIMEOUT(m_drive->undoStack.count(), 2, kWaitMs);
+        QTRY_VERIFY_WITH_TIMEOUT(!m_editor->isBusy(), kWaitMs);
+    }
+
 private slots:
     void init()
     {
@@ -271,16 +292,9 @@ private slots:
     {
         // Replies that take their time, so that the cancel comes while the first write is on
         // its way: the write the drive took is reported and undoable, the next is not sent.
-        cleanup();
-        m_drive = std::make_unique<SimulatedDrive>(20000);
-        QVERIFY(m_drive->start({kMaxSpeedForward >> 8}));
-        m_editor = std::make_unique<EditController>(&m_drive->client, &m_drive->model,
-                                                    &m_drive->undoStack);
-        m_messages = std::make_unique<QSignalSpy>(m_editor.get(), &EditController::message);
-        QVERIFY(m_drive->model.requestWrite(kMaxSpeedForward, 0x01, 1111));
-        QVERIFY(m_drive->model.requestWrite(kFixedSpeed1, 0x01, -222));
-        QTRY_COMPARE_WITH_TIMEOUT(m_drive->undoStack.count(), 2, kWaitMs);
-        QTRY_VERIFY_WITH_TIMEOUT(!m_editor->isBusy(), kWaitMs);
+        startSlowDriveWithSetZeroChanged();
+        if (QTest::currentTestFailed())
+            return;
 
         connect(&m_drive->client, &DriveClient::traffic, this, [this](const TrafficRecord &record) {
             if (record.kind == TrafficRecord::Kind::Sent && m_editor->isBusy())
@@ -302,6 +316,97 @@ private slots:
         m_drive->undoStack.undo();
         QTRY_VERIFY_WITH_TIMEOUT(!m_editor->isBusy(), kWaitMs);
         QCOMPARE(m_drive->driveValue(kMaxSpeedForward, 6), 3000);
+    }
+
+    // Every value a copy writes is journaled before anything is sent, all in one transaction,
+    // and completed with what the drive holds.
+    void copySetJournalsEveryValueTogether()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("journal.sqlite"));
+        Journal journal(path);
+        QVERIFY2(journal.open(), qPrintable(journal.errorString()));
+        EditJournal editJournal(&journal, JournalDrive {}, QStringLiteral("edit"));
+        m_editor->setJournal(&editJournal);
+        QVERIFY(m_drive->model.requestWrite(kMaxSpeedForward, 0x01, 1111));
+        QVERIFY(m_drive->model.requestWrite(kFixedSpeed1, 0x01, -222));
+        QTRY_COMPARE_WITH_TIMEOUT(m_drive->undoStack.count(), 2, kWaitMs);
+        QTRY_VERIFY_WITH_TIMEOUT(!m_editor->isBusy(), kWaitMs);
+        const qsizetype before = journal.entries().value_or(QList<JournalEntry>()).size();
+        QCOMPARE(before, 2);
+
+        m_editor->copySet(0, 5);
+        QTRY_VERIFY_WITH_TIMEOUT(!m_editor->isBusy(), kWaitMs);
+        const QList<JournalEntry> copied
+            = journal.entries().value_or(QList<JournalEntry>()).mid(before);
+        QVERIFY(copied.size() >= 2);
+        QList<quint16> addresses;
+        for (const JournalEntry &entry : copied) {
+            addresses << entry.parameterAddress;
+            QCOMPARE(entry.set, 5);
+            QCOMPARE(entry.outcome, JournalOutcome::Written);
+            QCOMPARE(entry.jobId, copied.constFirst().jobId);
+            const std::optional<qint32> held = m_drive->driveValue(entry.parameterAddress, 5);
+            QVERIFY(held.has_value());
+            QCOMPARE(entry.written.raw, held);
+            QCOMPARE(entry.readBack.raw, held);
+            QCOMPARE(m_drive->driveValue(entry.parameterAddress, 0), held);
+        }
+        QVERIFY(addresses.contains(kMaxSpeedForward) && addresses.contains(kFixedSpeed1));
+        QCOMPARE(copied.at(addresses.indexOf(kFixedSpeed1)).before.raw, 100);
+
+        // A journal that takes the first entry of the next copy and not the second keeps
+        // neither: the entries are one transaction. Nothing is sent, and each cell says why.
+        {
+            QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"),
+                                                        QStringLiteral("full"));
+            db.setDatabaseName(path);
+            QVERIFY(db.open());
+            QSqlQuery full(db);
+            QVERIFY(full.exec(QStringLiteral("CREATE TRIGGER full BEFORE INSERT ON entries "
+                                             "WHEN (SELECT count(*) FROM entries) > %1 "
+                                             "BEGIN SELECT RAISE(ABORT, 'full'); END")
+                                  .arg(before + copied.size())));
+            db.close();
+        }
+        QSqlDatabase::removeDatabase(QStringLiteral("full"));
+        m_editor->copySet(0, 6);
+        QTRY_VERIFY_WITH_TIMEOUT(!m_editor->isBusy(), kWaitMs);
+        QCOMPARE(journal.entries().value_or(QList<JournalEntry>()).size(),
+                 before + copied.size());
+        QCOMPARE(m_drive->driveValue(kMaxSpeedForward, 6), 3000);
+        QCOMPARE(m_drive->state(kMaxSpeedForward, 6), EditState::Failed);
+        QVERIFY2(m_drive->toolTip(kMaxSpeedForward, 6).contains(QStringLiteral("journal")),
+                 qPrintable(m_drive->toolTip(kMaxSpeedForward, 6)));
+        const QString said = m_messages->constLast().at(0).toString();
+        QVERIFY2(said.contains(QStringLiteral("not copied")), qPrintable(said));
+        QCOMPARE(m_drive->undoStack.count(), 3);
+        m_editor->setJournal(nullptr);
+    }
+
+    // A value typed while a copy writes the same parameter is written after the copy's write:
+    // the drive ends with what was typed.
+    void anEditDuringACopyWaitsForTheCopysWrite()
+    {
+        startSlowDriveWithSetZeroChanged();
+        if (QTest::currentTestFailed())
+            return;
+
+        QList<qint32> ended; // op.20's edits as they end, by the value each asked for
+        connect(m_editor->driveEdits(), &ValueEdits::edited, this,
+                [&ended](const EditOutcome &outcome) {
+                    if (outcome.address == kFixedSpeed1)
+                        ended << outcome.steps.constFirst().raw;
+                });
+        m_editor->copySet(0, 5);
+        QVERIFY(m_drive->model.requestWrite(kFixedSpeed1, 0x20, 777)); // set 5
+        QTRY_VERIFY_WITH_TIMEOUT(!m_editor->isBusy(), kWaitMs);
+        QCOMPARE(m_drive->driveValue(kFixedSpeed1, 5), 777);
+        QCOMPARE(ended, (QList<qint32> { -222, 777 }));
+        QCOMPARE(m_drive->model.state()->value(kFixedSpeed1, 5), 777);
+        QCOMPARE(m_drive->state(kFixedSpeed1, 5), EditState::Written);
+        QCOMPARE(m_drive->driveValue(kMaxSpeedForward, 5), 1111);
+        QCOMPARE(m_drive->undoStack.count(), 4);
     }
 
     void badSetsAreRefusedInWords()

@@ -21,11 +21,12 @@ drivedesk_add_test(NAME tst_lostanswers LABELS integration TIMEOUT 300
         ${CMAKE_CURRENT_LIST_DIR}/../client/SpoilingProxy.h
     LIBS drivedesk_state drivedesk_bus)
 
-# Scope recording: channels assigned and read back, samples in order with the drive's values,
-# the rate limit, a lost link and a silent drive, over HSP5 and DIN66019II.
+# Scope recording: channels assigned through the edit path (journaled, shown in the state) and
+# read back, samples in order with the drive's values, the rate limit, a lost link and a silent
+# drive, over HSP5 and DIN66019II.
 drivedesk_add_test(NAME tst_scoperecording LABELS integration TIMEOUT 300
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scoperecording.cpp
-    LIBS drivedesk_session drivedesk_bus)
+    LIBS drivedesk_state drivedesk_bus)
 
 # Upload (drive to parameter file): a whole read equals the drive; a refused value, a drive gone
 # silent or a cancel is refused, names what is missing and saves nothing.

@@ -3,9 +3,13 @@
 #include "bus/SimulatorServer.h"
 #include "scope/ScopeFileReader.h"
 #include "scope/ScopeRecording.h"
-#include "session/ScopeChannelsJob.h"
+#include "journal/Journal.h"
+#include "session/EditJournal.h"
 #include "session/ScopeOfflineJob.h"
 #include "session/ScopeRecorder.h"
+#include "state/DriveState.h"
+#include "state/ScopeChannelEdits.h"
+#include "state/ValueEdits.h"
 
 #include <QFutureWatcher>
 #include <QSignalSpy>
@@ -28,13 +32,22 @@ DriveDescription scanned(Session &s)
     return scan.result();
 }
 
+// Through the edit path, as the window and the command line assign them.
+ScopeChannelsOutcome assign(ValueEdits &edits, const DriveDescription &drive,
+                            ScopeAssignment choices)
+{
+    std::optional<ScopeChannelsOutcome> outcome;
+    assignScopeChannels(edits, drive, choices,
+                        [&outcome](const ScopeChannelsOutcome &assigned) { outcome = assigned; });
+    if (!QTest::qWaitFor([&outcome] { return outcome.has_value(); }, kWaitMs))
+        return {{}, QStringLiteral("the assignment did not finish"), false};
+    return *outcome;
+}
+
 ScopeChannelsOutcome assign(Session &s, const DriveDescription &drive, ScopeAssignment choices)
 {
-    const QFuture<ScopeChannelsOutcome> job = s.client->run(
-        std::make_shared<ScopeChannelsJob>(s.client->settings().protocol, drive, choices));
-    if (!waitFinished(job) || job.resultCount() == 0)
-        return {{}, QStringLiteral("the job did not finish"), false};
-    return job.result();
+    ValueEdits edits(s.client.get());
+    return assign(edits, drive, choices);
 }
 
 // Records until `done` says so or the recording ends by itself; returns how it ended.
@@ -155,6 +168,48 @@ private slots:
             QCOMPARE(recording.buffer.samples().value(i, 0), 2500);
             QCOMPARE(recording.buffer.samples().value(i, 1), kMaxSpeedDefault);
         }
+    }
+
+    // The assignment is an edit like any other: journaled, and shown in the drive's state as
+    // the drive holds it.
+    void theAssignmentIsJournaledAndShownInTheState()
+    {
+        Session s(simulated(Protocol::Hsp5, fast()));
+        QVERIFY(s.connected());
+        const DriveDescription drive = scanned(s);
+        DriveState state;
+        state.setDescription(drive);
+        QTemporaryDir dir;
+        Journal journal(dir.filePath(QStringLiteral("journal.sqlite")));
+        QVERIFY2(journal.open(), qPrintable(journal.errorString()));
+        EditJournal editJournal(&journal, JournalDrive {}, QStringLiteral("scope"));
+        ValueEdits edits(s.client.get(), &state);
+        edits.setJournal(&editJournal);
+
+        ScopeAssignment choices;
+        choices[0] = ChannelAssignment { kMaxSpeedForward, 0x04 };
+        const ScopeChannelsOutcome outcome = assign(edits, drive, choices);
+        QVERIFY2(outcome.error.isEmpty(), qPrintable(outcome.error));
+        QCOMPARE(outcome.assignment[0], choices[0]);
+        QCOMPARE(state.value(kChannel1Source, 0), std::optional<qint32>(kMaxSpeedForward));
+        QCOMPARE(state.value(kChannel1Set, 0), std::optional<qint32>(0x04));
+        QCOMPARE(state.editState(kChannel1Source, 0), EditState::Written);
+        QCOMPARE(state.editState(kChannel1Set, 0), EditState::Written);
+
+        const std::optional<QList<JournalEntry>> entries = journal.entries();
+        QVERIFY2(entries, qPrintable(journal.errorString()));
+        QCOMPARE(entries->size(), 2);
+        const QList<qint32> written { kMaxSpeedForward, 0x04 };
+        const QList<quint16> addresses { kChannel1Source, kChannel1Set };
+        for (qsizetype i = 0; i < entries->size(); ++i) {
+            const JournalEntry &entry = entries->at(i);
+            QCOMPARE(entry.parameterAddress, addresses.at(i));
+            QCOMPARE(entry.written.raw, written.at(i));
+            QCOMPARE(entry.readBack.raw, written.at(i));
+            QCOMPARE(entry.outcome, JournalOutcome::Written);
+            QCOMPARE(entry.jobId, entries->constFirst().jobId);
+        }
+        QCOMPARE(entries->at(0).parameterId, QStringLiteral("Sy.16"));
     }
 
     void refusesSourcesTheDriveDoesNotPermit()

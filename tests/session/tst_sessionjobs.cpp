@@ -1,6 +1,5 @@
 #include "../client/ClientTestSupport.h"
 
-#include "session/CopySet.h"
 #include "state/EditText.h"
 #include "session/PasswordLevelJob.h"
 #include "session/Polling.h"
@@ -228,24 +227,40 @@ private slots:
         QCOMPARE(outcome.level, PasswordLevel::DriveMode);
     }
 
-    void aCopyAskedToStopBeforeItBeganWritesNothing()
+    // A batch waits for the edits of its parameters given before it, and one stopped before
+    // its turn came ends without writing anything; the next is written and read back.
+    void aBatchStoppedBeforeItBeganWritesNothing()
     {
         Session session(simulated(Protocol::Hsp5, fast()));
         QVERIFY(session.connected());
-        CopySetPlan plan;
-        plan.from = 0;
-        plan.to = 3;
-        plan.items = {CopySetPlan::Item{kMaxSpeedForward, 1234}};
-        const auto job = std::make_shared<CopySetJob>(Protocol::Hsp5, plan);
-        job->requestStop();
-        QCOMPARE(resultsOf(session.client->run(job)).size(), 0);
+        ValueEdits edits(session.client.get());
+        const ParameterDescription speed = described(kMaxSpeedForward, true);
+        const QList<ValueEdits::BatchItem> items { { speed, { WriteStep { 0x08, 1234, false } } } };
+        QList<QString> ended;
+        edits.write(speed, 0x01, 2000, [&](const EditOutcome &) { ended << QStringLiteral("edit"); });
+        QList<EditOutcome> stopped;
+        const quint64 batch = edits.applyAll(
+            items, [&](qsizetype, const EditOutcome &) { ended << QStringLiteral("written"); },
+            [&](const QList<EditOutcome> &outcomes) {
+                ended << QStringLiteral("batch");
+                stopped = outcomes;
+            });
+        QCOMPARE(edits.runningCount(), 2);
+        edits.stopBatch(batch, QStringLiteral("stopped"));
+        QTRY_COMPARE_WITH_TIMEOUT(edits.runningCount(), 0, kWaitMs);
+        QCOMPARE(ended, (QList<QString> { QStringLiteral("edit"), QStringLiteral("batch") }));
+        QCOMPARE(stopped.size(), 1);
+        QCOMPARE(stopped.constFirst().notSentMask, quint8(0x08));
+        QCOMPARE(stopped.constFirst().error, QStringLiteral("stopped"));
         QCOMPARE(valueOf(session.call(session.client->readValue(kMaxSpeedForward, 0x08))),
                  kMaxSpeedDefault);
 
-        const auto copy = std::make_shared<CopySetJob>(Protocol::Hsp5, plan);
-        const QList<WriteOutcome> copied = resultsOf(session.client->run(copy));
-        QCOMPARE(copied.size(), 1);
-        QCOMPARE(copied.constFirst().readBack[3], 1234);
+        std::optional<QList<EditOutcome>> copied;
+        edits.applyAll(items, {}, [&](const QList<EditOutcome> &outcomes) { copied = outcomes; });
+        QTRY_VERIFY_WITH_TIMEOUT(copied, kWaitMs);
+        QCOMPARE(copied->size(), 1);
+        QVERIFY(copied->constFirst().complete());
+        QCOMPARE(copied->constFirst().readBack[3], 1234);
     }
 };
 

@@ -7,7 +7,6 @@
 #include "session/CopySet.h"
 #include "state/ValueEdits.h"
 
-#include <QFutureWatcher>
 #include <QHash>
 #include <QObject>
 #include <QPointer>
@@ -60,6 +59,7 @@ public:
     void setJournal(EditJournal *journal) { m_edits->setJournal(journal); }
 
     bool isBusy() const override { return m_busy; }
+    ValueEdits *driveEdits() const override { return m_edits; }
     // Why the last refresh could not read this value, or empty.
     QString readFailure(quint16 address, int set) const;
     int readFailureCount() const { return int(m_readFailures.size()); }
@@ -70,15 +70,13 @@ signals:
     void progress(int done, int total); // of a copy or refresh
 
 private:
-    // copySet() while its job runs in the client's thread.
+    // copySet() while its batch runs through ValueEdits.
     struct CopyJob
     {
         CopySetPlan plan;
-        std::shared_ptr<CopySetJob> job;
-        QList<ValueCommand::Values> before; // per item: the target set's value, for undo
-        QList<QList<EditJournal::Entry>> journaled; // per item, where the edits are journaled
-        QFutureWatcher<WriteOutcome> watcher;
+        quint64 batch = 0; // ValueEdits::applyAll()'s
         std::unique_ptr<QUndoCommand> macro; // the values written, one step on the stack
+        int answered = 0; // items the drive was asked and answered
         int written = 0;
         QStringList refusals;
         QString stopReason;
@@ -94,12 +92,8 @@ private:
     QString commandText(ValueCommand::Kind kind, quint16 address, quint8 setMask,
                         qint32 raw) const;
 
-    // Begins the journal's entries of every item of the copy; false (and said why) when the
-    // journal cannot take them: then nothing is sent.
-    bool journalCopy(CopyJob &job);
-    void completeJournal(const CopyJob &job, qsizetype index, const WriteOutcome &written);
-    void copyTake(int begin, int end);
-    void copyFinished();
+    void copyTake(qsizetype index, const EditOutcome &outcome);
+    void copyFinished(const QList<EditOutcome> &outcomes);
     void refreshFinished();
     void startReads(const QList<ValueRead> &reads);
     void startQueuedReads();

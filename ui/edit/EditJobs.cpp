@@ -40,115 +40,61 @@ void EditController::copySet(int fromSet, int toSet)
     job->plan = planCopySet(m_model->state()->description(), fromSet, toSet, m_model->state()->passwordLevel());
     job->macro
         = std::make_unique<QUndoCommand>(tr("Copy set %1 to set %2").arg(fromSet).arg(toSet));
+    QList<ValueEdits::BatchItem> items;
     for (const CopySetPlan::Item &item : std::as_const(job->plan.items)) {
-        ValueCommand::Values before{};
-        before[std::size_t(toSet)] = m_model->state()->value(item.address, toSet);
-        job->before << before;
+        // The plan is made of the state's own description: every parameter is there.
+        const ParameterDescription *parameter = m_model->state()->parameter(item.address);
+        Q_ASSERT(parameter);
+        items << ValueEdits::BatchItem { *parameter,
+                                         { WriteStep { quint8(1u << toSet), item.raw, false } } };
     }
-    if (!journalCopy(*job))
-        return;
-    for (const CopySetPlan::Item &item : std::as_const(job->plan.items))
-        m_model->state()->markPending(item.address, quint8(1u << toSet), item.raw);
-    connect(&job->watcher, &QFutureWatcherBase::resultsReadyAt, this, &EditController::copyTake);
-    connect(&job->watcher, &QFutureWatcherBase::progressValueChanged, this,
-            [this](int done) { emit progress(done, int(m_copy->plan.items.size())); });
-    connect(&job->watcher, &QFutureWatcherBase::finished, this, &EditController::copyFinished);
     m_copy = std::move(job);
     updateBusy();
-    emit progress(0, int(m_copy->plan.items.size()));
-    m_copy->job = std::make_shared<CopySetJob>(m_client->settings().protocol, m_copy->plan);
-    m_copy->watcher.setFuture(m_client->run(m_copy->job));
+    emit progress(0, int(items.size()));
+    const quint64 batch = m_edits->applyAll(
+        items, [this](qsizetype index, const EditOutcome &outcome) { copyTake(index, outcome); },
+        [this](const QList<EditOutcome> &outcomes) { copyFinished(outcomes); });
+    if (m_copy)
+        m_copy->batch = batch;
 }
 
-bool EditController::journalCopy(CopyJob &job)
-{
-    EditJournal *journal = m_edits->journal();
-    if (!journal)
-        return true;
-    const quint8 mask = quint8(1u << job.plan.to);
-    for (qsizetype index = 0; index < job.plan.items.size(); ++index) {
-        const CopySetPlan::Item &item = job.plan.items.at(index);
-        const ParameterDescription *parameter = m_model->state()->parameter(item.address);
-        QString error;
-        const std::optional<QList<EditJournal::Entry>> entries
-            = parameter ? journal->begin(m_model->state()->editText(item.address).id(), *parameter,
-                                         { WriteStep { mask, item.raw, false } },
-                                         job.before.at(index), &error)
-                        : std::nullopt;
-        if (!entries) {
-            // What was begun stays in the journal as not sent: nothing went out.
-            const WriteOutcome unsent = EditJournal::notJournaled(item.address, mask, error);
-            for (qsizetype begun = 0; begun < index; ++begun)
-                completeJournal(job, begun, unsent);
-            emit message(tr("Set %1 not copied to set %2: %3")
-                             .arg(job.plan.from)
-                             .arg(job.plan.to)
-                             .arg(unsent.error));
-            return false;
-        }
-        job.journaled << *entries;
-    }
-    return true;
-}
-
-void EditController::completeJournal(const CopyJob &job, qsizetype index,
-                                     const WriteOutcome &written)
-{
-    EditJournal *journal = m_edits->journal();
-    const ParameterDescription *parameter
-        = m_model->state()->parameter(job.plan.items.at(index).address);
-    if (!journal || !parameter || index >= job.journaled.size())
-        return;
-    EditOutcome outcome;
-    static_cast<WriteOutcome &>(outcome) = written;
-    outcome.steps = { WriteStep { quint8(1u << job.plan.to), job.plan.items.at(index).raw, false } };
-    journal->complete(*parameter, job.journaled.at(index), outcome);
-}
-
-void EditController::copyTake(int begin, int end)
+void EditController::copyTake(qsizetype index, const EditOutcome &outcome)
 {
     CopyJob &copy = *m_copy;
-    const QFuture<WriteOutcome> future = copy.watcher.future();
-    for (int index = begin; index < end; ++index) {
-        const WriteOutcome outcome = future.resultAt(index);
-        const CopySetPlan::Item &item = copy.plan.items.at(index);
-        completeJournal(copy, index, outcome);
-        m_model->state()->showOutcome(outcome);
-        if (outcome.acknowledgedMask) {
-            new ValueCommand(this, ValueCommand::Kind::Write, item.address,
-                                  outcome.acknowledgedMask, item.raw, copy.before.at(index),
-                                  commandText(ValueCommand::Kind::Write, item.address,
-                                              outcome.acknowledgedMask, item.raw),
-                                  copy.macro.get());
-            ++copy.written;
-        } else if (outcome.connectionFailed) {
-            copy.stopReason = outcome.error;
-        } else {
-            copy.refusals << tr("%1: %2").arg(m_model->state()->editText(item.address).id(), outcome.error);
-        }
+    const CopySetPlan::Item &item = copy.plan.items.at(index);
+    emit progress(++copy.answered, int(copy.plan.items.size()));
+    if (outcome.acknowledgedMask) {
+        new ValueCommand(this, ValueCommand::Kind::Write, item.address, outcome.acknowledgedMask,
+                         item.raw, outcome.before,
+                         commandText(ValueCommand::Kind::Write, item.address,
+                                     outcome.acknowledgedMask, item.raw),
+                         copy.macro.get());
+        ++copy.written;
+    } else if (outcome.connectionFailed) {
+        copy.stopReason = outcome.error;
+    } else {
+        copy.refusals << tr("%1: %2").arg(m_model->state()->editText(item.address).id(), outcome.error);
     }
 }
 
-void EditController::copyFinished()
+void EditController::copyFinished(const QList<EditOutcome> &outcomes)
 {
     const std::unique_ptr<CopyJob> job = std::move(m_copy);
     if (job->macro->childCount() > 0)
         m_undoStack->push(job->macro.release());
-    // An item without an outcome was never sent: its cell shows again what it held.
-    for (qsizetype index = 0; index < job->plan.items.size(); ++index) {
-        if (job->watcher.future().isResultReadyAt(int(index)))
-            continue;
-        m_model->state()->clearEditState(job->plan.items.at(index).address, quint8(1u << job->plan.to));
-        completeJournal(*job, index,
-                        EditJournal::notSent(job->plan.items.at(index).address,
-                                             quint8(1u << job->plan.to),
-                                             job->stopReason.isEmpty() ? tr("the copy was cancelled")
-                                                                       : job->stopReason));
+    if (job->answered == 0 && !outcomes.isEmpty() && !job->cancelled) {
+        // Nothing went out: the journal could not take the entries, or the connection went.
+        emit message(tr("Set %1 not copied to set %2: %3")
+                         .arg(job->plan.from)
+                         .arg(job->plan.to)
+                         .arg(outcomes.constFirst().error));
+        updateBusy();
+        return startQueuedReads();
     }
 
     const int from = job->plan.from;
     const int to = job->plan.to;
-    const int notCopied = int(job->plan.items.size()) - job->watcher.future().resultCount();
+    const int notCopied = int(job->plan.items.size()) - job->answered;
     QStringList parts;
     if (job->plan.items.isEmpty()) {
         parts << tr("Set %2 holds the values of set %1 already").arg(from).arg(to);
@@ -252,7 +198,7 @@ void EditController::cancel()
         // Stopped, not cancelled: the write on its way is still reported, so that what the
         // drive took reaches the undo history.
         m_copy->cancelled = true;
-        m_copy->job->requestStop();
+        m_edits->stopBatch(m_copy->batch, tr("the copy was cancelled"));
     }
     m_queuedReads.clear();
     if (m_refresh)

@@ -132,6 +132,8 @@ void ScopeDock::setClient(DriveClient *client)
         m_recordAction->setChecked(false);
     }
     m_client = client;
+    // An assignment on its way went with the old connection's edits.
+    m_assigning = false;
     m_hasDrive = false;
     m_panel->setDrive(nullptr);
     if (client && !m_recorder) {

@@ -7,11 +7,13 @@
 
 #include "client/DriveClient.h"
 #include "client/WhenFinished.h"
+#include "frame/ParameterEditing.h"
 #include "frame/WindowFeature.h"
 #include "model/ParameterModel.h"
 #include "scope/ScopeRecording.h"
 #include "session/ScopeChannelsJob.h"
 #include "session/ScopeOfflineJob.h"
+#include "state/ScopeChannelEdits.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -52,23 +54,17 @@ void ScopeDock::startRecording()
 
 void ScopeDock::startRecordingNow()
 {
-    if (!m_client || !m_recorder || isRecording() || m_assigning)
+    // The channels are written the way the table's edits are, ordered with them.
+    ParameterEditing *editing = m_frame.editing();
+    ValueEdits *edits = editing ? editing->driveEdits() : nullptr;
+    if (!m_client || !m_recorder || isRecording() || m_assigning || !edits)
         return updateActions();
     // The sources first, written and read back: the recording shows what the drive delivers.
     m_assigning = true;
     updateActions();
     showStatus(tr("Assigning the channels..."));
-    const auto job = std::make_shared<ScopeChannelsJob>(m_client->settings().protocol, m_drive,
-                                                        m_panel->choices());
-    whenFinished(
-        m_client->run(job), this,
-        [this](const ScopeChannelsOutcome &outcome) { channelsAssigned(outcome); },
-        [this] {
-            ScopeChannelsOutcome dropped;
-            dropped.error = tr("the connection went away");
-            dropped.connectionFailed = true;
-            channelsAssigned(dropped);
-        });
+    assignScopeChannels(*edits, m_drive, m_panel->choices(),
+                        [this](const ScopeChannelsOutcome &outcome) { channelsAssigned(outcome); });
 }
 
 void ScopeDock::showAssignmentInTable(const ScopeAssignment &assignment)
@@ -290,7 +286,7 @@ void ScopeDock::readOfflineRecordsNow()
     m_progress->show();
     // The channels as assigned now tell what the records hold.
     const auto channels = std::make_shared<ScopeChannelsJob>(m_client->settings().protocol,
-                                                             m_drive, ScopeAssignment{});
+                                                             m_drive);
     whenFinished(
         m_client->run(channels), this,
         [this](const ScopeChannelsOutcome &assigned) {
