@@ -1,5 +1,6 @@
 #include "tst_editsupport.h"
 
+#include "bus/SimulatorServer.h"
 #include "edit/AccessController.h"
 #include "edit/EditController.h"
 #include "journal/Journal.h"
@@ -19,11 +20,22 @@ class TestEditController : public QObject
     Q_OBJECT
 private:
     // Replies that take their time (20 ms), and op.11 = 1111 and op.20 = -222 in set 0 alone:
-    // a copy from set 0 writes these two, op.11 first.
+    // a copy from set 0 writes these two, op.11 first. The drive is served over TCP from this
+    // test's own thread: it answers only when the test's event loop runs, so that what the test
+    // does on seeing a request go out is done before the answer, however busy the machine.
     void startSlowDriveWithSetZeroChanged()
     {
         cleanup();
-        m_drive = std::make_unique<SimulatedDrive>(20000);
+        SimulationOptions slow;
+        slow.replyLatencyUs = 20000;
+        m_server = std::make_unique<SimulatorServer>(Protocol::Hsp5, slow);
+        QString error;
+        QVERIFY2(m_server->listenTcp(QStringLiteral("127.0.0.1"), 0, &error), qPrintable(error));
+        ConnectionSettings settings;
+        settings.kind = ConnectionSettings::Kind::Tcp;
+        settings.host = QStringLiteral("127.0.0.1");
+        settings.port = m_server->tcpPort();
+        m_drive = std::make_unique<SimulatedDrive>(settings);
         QVERIFY(m_drive->start({kMaxSpeedForward >> 8}));
         m_editor = std::make_unique<EditController>(&m_drive->client, &m_drive->model,
                                                     &m_drive->undoStack);
@@ -49,6 +61,7 @@ private slots:
         m_messages.reset();
         m_editor.reset();
         m_drive.reset();
+        m_server.reset();
     }
 
     void editInOneSetIsWrittenAndReadBack()
@@ -290,8 +303,8 @@ private slots:
 
     void cancelledCopyKeepsWhatWasWrittenUndoable()
     {
-        // Replies that take their time, so that the cancel comes while the first write is on
-        // its way: the write the drive took is reported and undoable, the next is not sent.
+        // The cancel comes as the first write goes out, before the drive (in this thread) can
+        // answer it: the write the drive took is reported and undoable, the next is not sent.
         startSlowDriveWithSetZeroChanged();
         if (QTest::currentTestFailed())
             return;
@@ -468,6 +481,7 @@ private slots:
     }
 
 private:
+    std::unique_ptr<SimulatorServer> m_server; // the slow drive's, when a test serves one
     std::unique_ptr<SimulatedDrive> m_drive;
     std::unique_ptr<EditController> m_editor;
     std::unique_ptr<QSignalSpy> m_messages;

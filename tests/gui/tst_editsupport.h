@@ -49,6 +49,9 @@ struct SimulatedDrive
     explicit SimulatedDrive(int replyLatencyUs = 0)
         : client(simulated(replyLatencyUs), everyLink())
     { }
+    explicit SimulatedDrive(const ConnectionSettings &settings)
+        : client(settings, everyLink())
+    { }
 
     // Connects and scans (values, no plaintexts; every group, or those of the pages given);
     // false when either did not work.
