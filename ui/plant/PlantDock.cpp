@@ -1,5 +1,6 @@
 #include "PlantDock.h"
 
+#include "PlantHistoryWindow.h"
 #include "PlantLinkDialog.h"
 #include "PlantModel.h"
 #include "PlantReportDialog.h"
@@ -153,6 +154,10 @@ void PlantDock::createActions()
     m_compareAction
         = add(tr("Compare"), QStringLiteral("plantCompareAction"),
               tr("Read the two selected drives afresh and compare them side by side"), QIcon());
+    m_historyAction = add(tr("History..."), QStringLiteral("plantHistoryAction"),
+                          tr("The backup folder's revisions: what changed when, two side by "
+                             "side, and a revision restored"),
+                          themedIcon("document-open-recent", QStyle::SP_FileDialogDetailedView));
     m_addLinkAction = add(tr("Add Link..."), QStringLiteral("plantAddLinkAction"),
                           tr("Add a link to the plant file"), QIcon());
     m_folderAction = add(tr("Backup Folder..."), QStringLiteral("plantFolderAction"),
@@ -177,6 +182,8 @@ void PlantDock::createActions()
         if (!QDir(backupFolder()).exists())
             return showMessage(tr("The backup folder %1 does not exist.")
                                    .arg(QDir::toNativeSeparators(backupFolder())));
+        m_revisionFiles.reset();
+        m_revision.clear();
         startJob(Job::DownloadLook, m_model->plant(), backupFolder());
     });
     connect(m_stopAction, &QAction::triggered, this, [this] {
@@ -184,6 +191,7 @@ void PlantDock::createActions()
             m_run->stop();
     });
     connect(m_compareAction, &QAction::triggered, this, &PlantDock::compareSelected);
+    connect(m_historyAction, &QAction::triggered, this, &PlantDock::showHistory);
     connect(m_addLinkAction, &QAction::triggered, this, &PlantDock::addLink);
     connect(m_folderAction, &QAction::triggered, this, &PlantDock::chooseBackupFolder);
 }
@@ -202,6 +210,8 @@ bool PlantDock::openPlant(const QString &path, QString *error)
     showPlantTitle();
     m_status->clear();
     updateActions();
+    if (m_history && m_history->isVisible())
+        showHistory();
     show();
     raise();
     emit plantOpened(m_path);
@@ -228,6 +238,8 @@ void PlantDock::setBackupFolder(const QString &directory)
     QSettings().setValue(folderKey(m_path), QDir(directory).absolutePath());
     m_model->setBackupFolder(backupFolder());
     showPlantTitle();
+    if (m_history && m_history->isVisible())
+        showHistory();
 }
 
 void PlantDock::chooseBackupFolder()
@@ -310,6 +322,40 @@ void PlantDock::compareSelected()
     startJob(Job::CompareRead, pair, m_compareFiles->path());
 }
 
+void PlantDock::showHistory()
+{
+    if (m_path.isEmpty())
+        return;
+    if (!m_history) {
+        m_history = new PlantHistoryWindow(this);
+        connect(m_history, &PlantHistoryWindow::compareRequested, this,
+                &PlantDock::compareRequested);
+        connect(m_history, &PlantHistoryWindow::restoreRequested, this,
+                &PlantDock::restoreRevision);
+    }
+    m_history->setRestoreAllowed(m_run.isNull());
+    m_history->showFolder(m_model->plant().name, backupFolder(), driveNames());
+    m_history->show();
+    m_history->raise();
+    m_history->activateWindow();
+}
+
+PlantHistoryWindow *PlantDock::historyWindow() const
+{
+    return m_history;
+}
+
+QStringList PlantDock::driveNames() const
+{
+    QStringList names;
+    for (int link = 0; link < m_model->rowCount(); ++link) {
+        const QModelIndex parent = m_model->index(link, PlantModel::NameColumn);
+        for (int drive = 0; drive < m_model->rowCount(parent); ++drive)
+            names << m_model->index(drive, PlantModel::NameColumn, parent).data().toString();
+    }
+    return names;
+}
+
 void PlantDock::updateActions()
 {
     const bool plant = !m_path.isEmpty() && !m_model->plant().links.isEmpty();
@@ -320,6 +366,9 @@ void PlantDock::updateActions()
     m_downloadAction->setEnabled(plant && idle);
     m_stopAction->setEnabled(!idle);
     m_compareAction->setEnabled(idle && selectedDrives().size() == 2);
+    m_historyAction->setEnabled(!m_path.isEmpty());
+    if (m_history)
+        m_history->setRestoreAllowed(plant && idle);
     m_addLinkAction->setEnabled(!m_path.isEmpty() && idle);
     m_folderAction->setEnabled(!m_path.isEmpty() && idle);
 }

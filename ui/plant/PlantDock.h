@@ -18,6 +18,7 @@ class QTreeView;
 
 namespace DriveDesk {
 
+class PlantHistoryWindow;
 class PlantModel;
 class WindowFrame;
 
@@ -25,8 +26,10 @@ class WindowFrame;
 // `drivedesk-cli plant` run on them by core's PlantRun: Find, Back Up All, Verify All and
 // Download All (a dry run as the last look per drive, then the writing and one combined
 // report), each with progress per drive and Stop. A drive opens in the window's editor with a
-// double click; two selected drives are read afresh and offered to the compare window. The
-// plant runs on connections of its own: the drive open in the editor goes on meanwhile.
+// double click; two selected drives are read afresh and offered to the compare window. History
+// shows the backup folder's revisions (PlantHistoryWindow); a revision restored goes through
+// Download All's last look. The plant runs on connections of its own: the drive open in the
+// editor goes on meanwhile.
 class PlantDock : public QDockWidget
 {
     Q_OBJECT
@@ -61,11 +64,18 @@ public:
     QAction *downloadAction() const { return m_downloadAction; }
     QAction *stopAction() const { return m_stopAction; }
     QAction *compareAction() const { return m_compareAction; }
+    QAction *historyAction() const { return m_historyAction; }
+    PlantHistoryWindow *historyWindow() const;
 
     // The drive at `index` in the window's editor: its session connects to the drive.
     void openDrive(const QModelIndex &index);
     // The two drives selected, read afresh, to the compare window (compareRequested).
     void compareSelected();
+    // The backup folder's revisions in the history window, made at the first call.
+    void showHistory();
+    // A revision's files (`files`, kept until the download is done) to the drives, as
+    // Download All does it: its last look first, then the writing and one report.
+    void restoreRevision(std::shared_ptr<QTemporaryDir> files, const QString &revision);
     void updateActions();
 
 signals:
@@ -81,6 +91,8 @@ private:
     void addLink();
     void chooseBackupFolder();
     void showPlantTitle();
+    // "cabinet-2", "cabinet-5", "hoist": the drives shown, by their files' names.
+    QStringList driveNames() const;
     void fitColumns();
     QList<QModelIndex> selectedDrives() const;
     // PlantDockJobs.cpp
@@ -107,6 +119,11 @@ private:
     ClientOptions m_clientOptions;
     std::function<bool()> m_journaled;
     std::unique_ptr<QTemporaryDir> m_compareFiles; // the two drives read for a comparison
+    QString m_jobDirectory; // the files the job at work reads or writes
+    // A revision being restored: its files and its short id; empty for Download All.
+    std::shared_ptr<QTemporaryDir> m_revisionFiles;
+    QString m_revision;
+    QPointer<PlantHistoryWindow> m_history;
     QPointer<PlantReportDialog> m_report;
 
     QAction *m_findAction = nullptr;
@@ -115,6 +132,7 @@ private:
     QAction *m_downloadAction = nullptr;
     QAction *m_stopAction = nullptr;
     QAction *m_compareAction = nullptr;
+    QAction *m_historyAction = nullptr;
     QAction *m_addLinkAction = nullptr;
     QAction *m_folderAction = nullptr;
 };

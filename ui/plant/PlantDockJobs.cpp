@@ -52,6 +52,7 @@ void PlantDock::startJob(Job job, const Plant &plant, const QString &directory)
     m_run = run;
     m_job = job;
     m_jobPlant = plant;
+    m_jobDirectory = directory;
     // A comparison reads into files of its own: the drives' last results stay shown.
     if (job != Job::CompareRead)
         m_model->startJob();
@@ -79,6 +80,17 @@ void PlantDock::startJob(Job job, const Plant &plant, const QString &directory)
     }
     updateActions();
     run->start();
+}
+
+void PlantDock::restoreRevision(std::shared_ptr<QTemporaryDir> files, const QString &revision)
+{
+    if (m_run)
+        return showMessage(tr("A job is running on the plant; restore once it is done."));
+    m_revisionFiles = std::move(files);
+    m_revision = revision;
+    startJob(Job::DownloadLook, m_model->plant(), m_revisionFiles->path());
+    if (m_job == Job::DownloadLook)
+        showMessage(tr("Reading every drive to see what restoring %1 would write...").arg(revision));
 }
 
 void PlantDock::onProgress(const QString &link, int address, int percent, const QString &what)
@@ -112,7 +124,11 @@ void PlantDock::onJobFinished()
         break;
     case Job::Download: {
         const QString text = PlantDrive::summary(drives, tr("downloaded or already equal"));
-        auto *report = new PlantReportDialog(tr("Download All: Report"), text, drives, false, this);
+        const QString title = m_revision.isEmpty() ? tr("Download All: Report")
+                                                   : tr("Restore to %1: Report").arg(m_revision);
+        m_revisionFiles.reset();
+        m_revision.clear();
+        auto *report = new PlantReportDialog(title, text, drives, false, this);
         m_report = report;
         report->setAttribute(Qt::WA_DeleteOnClose);
         report->show();
@@ -162,12 +178,22 @@ void PlantDock::downloadPlanned(const QList<PlantDrive> &drives)
              "take it (see why).")
         : tr("%n drive(s) would be written to. Look at what each gets, then write.", nullptr,
              int(toWrite));
-    auto *look
-        = new PlantReportDialog(tr("Download All: Last Look"), text, drives, toWrite > 0, this);
+    const QString title = m_revision.isEmpty() ? tr("Download All: Last Look")
+                                               : tr("Restore to %1: Last Look").arg(m_revision);
+    auto *look = new PlantReportDialog(title, text, drives, toWrite > 0, this);
     m_report = look;
     look->setAttribute(Qt::WA_DeleteOnClose);
+    // What is written is what was looked at: the same folder (a revision's files stay while
+    // their last look is open), whatever was started since.
     connect(look, &PlantReportDialog::accepted, this,
-            [this] { startJob(Job::Download, m_model->plant(), backupFolder()); });
+            [this, directory = m_jobDirectory, files = m_revisionFiles, revision = m_revision] {
+                if (m_run)
+                    return showMessage(tr("A job is running on the plant; start again once it "
+                                          "is done."));
+                m_revisionFiles = files;
+                m_revision = revision;
+                startJob(Job::Download, m_model->plant(), directory);
+            });
     look->show();
     showMessage(text);
 }
