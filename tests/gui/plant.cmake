@@ -3,3 +3,7 @@
 drivedesk_add_test(NAME tst_plantview LABELS gui integration
     SOURCES gui/tst_plantview.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui
     drivedesk_translations)
+# The plant view's History: backups committed, the revisions and their changes, two compared side
+# by side, one restored through Download All's last look (offscreen, git in temporary folders).
+drivedesk_add_test(NAME tst_planthistory LABELS gui integration
+    SOURCES gui/tst_planthistory.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui)
