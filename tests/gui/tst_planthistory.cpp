@@ -1,4 +1,7 @@
 #include "tst_mainwindow_support.h"
+#include "tst_plantsupport.h"
+
+#include "../history/GitTestHome.h"
 
 #include "compare/CompareWindow.h"
 #include "compare/ComparisonModel.h"
@@ -14,7 +17,6 @@
 #include <QFile>
 #include <QLineEdit>
 #include <QListWidget>
-#include <QProcess>
 #include <QPushButton>
 #include <QTreeWidget>
 
@@ -23,16 +25,8 @@ using namespace DriveDesk::MainWindowTest;
 
 namespace {
 
-constexpr int kJobWaitMs = 60000;
-
-QString git(const QString &directory, const QStringList &arguments)
-{
-    QProcess process;
-    process.setWorkingDirectory(directory);
-    process.start(QStringLiteral("git"), arguments);
-    process.waitForFinished();
-    return QString::fromUtf8(process.readAllStandardOutput()).trimmed();
-}
+using GitTest::git;
+using PlantTest::kJobWaitMs;
 
 QStringList listed(const QListWidget *list)
 {
@@ -60,19 +54,10 @@ private:
     PlantDock *m_dock = nullptr;
     qint32 m_before = 0;
 
-    bool runJob(QAction *action)
-    {
-        if (!action->isEnabled())
-            return false;
-        action->trigger();
-        return QTest::qWaitFor([this] { return m_dock->job() == PlantDock::Job::None; },
-                               kJobWaitMs);
-    }
-
     // Back Up All, then the files saved committed as `plant backup --commit` does.
     bool backUpAndCommit(const QString &message)
     {
-        if (!runJob(m_dock->backupAction()))
+        if (!PlantTest::runJob(*m_dock, m_dock->backupAction()))
             return false;
         QString error;
         auto repository = BackupRepository::open(m_dock->backupFolder(), true, &error);
@@ -124,14 +109,7 @@ private slots:
     void initTestCase()
     {
         // git's configuration of our own: an author, nothing of the user running the tests.
-        QVERIFY(m_home.isValid());
-        qputenv("HOME", m_home.path().toUtf8());
-        qputenv("XDG_CONFIG_HOME", m_home.filePath(QStringLiteral(".config")).toUtf8());
-        qputenv("GIT_CONFIG_NOSYSTEM", "1");
-        QFile config(m_home.filePath(QStringLiteral(".gitconfig")));
-        QVERIFY(config.open(QIODevice::WriteOnly));
-        config.write("[user]\n\tname = Test Engineer\n\temail = test@example.org\n");
-        config.close();
+        QVERIFY(GitTest::useHome(m_home));
 
         m_settings.clear();
         QVERIFY(m_dir.isValid());
