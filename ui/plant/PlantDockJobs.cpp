@@ -38,8 +38,12 @@ void PlantDock::startJob(Job job, const Plant &plant, const QString &directory)
     run->setLanguage(m_frame.language());
     run->setDownloadOptions(job == Job::DownloadLook, false);
     if (job == Job::Download && m_journaled && m_journaled()) {
+        // A restore says which revision its values came from, as the journal is read later.
+        const QString plantFile = QFileInfo(m_path).fileName();
         run->setJournal(RunJournal::attach(
-            run, tr("plant download of %1").arg(QFileInfo(m_path).fileName())));
+            run, m_revision.isEmpty()
+                     ? tr("plant download of %1").arg(plantFile)
+                     : tr("plant download of %1 at revision %2").arg(plantFile, m_revision)));
     }
     connect(run, &PlantRun::progress, this, &PlantDock::onProgress);
     connect(run, &PlantRun::driveDone, this, [this](const PlantDrive &done) {
