@@ -95,6 +95,21 @@ private:
         return gone ? value : std::nullopt;
     }
 
+    // The revision at `row` alone selected, cabinet-5 the drive to compare, and `button` of the
+    // history window clicked; false when it was not enabled.
+    bool clickForRevision(int row, const char *button)
+    {
+        PlantHistoryWindow *history = m_dock->historyWindow();
+        history->revisionList()->clearSelection();
+        history->revisionList()->setCurrentItem(history->revisionList()->topLevelItem(row));
+        history->compareDrive()->setCurrentText(QStringLiteral("cabinet-5"));
+        auto *clicked = history->findChild<QPushButton *>(QLatin1String(button));
+        if (history->selectedRevisions().size() != 1 || !clicked->isEnabled())
+            return false;
+        clicked->click();
+        return true;
+    }
+
     PlantHistoryWindow *openHistory()
     {
         m_window->findChild<QAction *>(QStringLiteral("plantHistoryMenuAction"))->trigger();
@@ -259,15 +274,9 @@ private slots:
 
     void theOlderRevisionIsRestoredThroughTheLastLook()
     {
-        PlantHistoryWindow *history = m_dock->historyWindow();
-        QTreeWidget *revisions = history->revisionList();
-        revisions->clearSelection();
-        revisions->setCurrentItem(revisions->topLevelItem(1));
-        QCOMPARE(history->selectedRevisions().size(), 1);
-        const QString older = history->selectedRevisions().first();
-        auto *restore = history->findChild<QPushButton *>(QStringLiteral("historyRestore"));
-        QVERIFY(restore->isEnabled());
-        restore->click();
+        const QString older = m_dock->historyWindow()->revisionList()->topLevelItem(1)->data(
+            0, Qt::UserRole).toString();
+        QVERIFY(clickForRevision(1, "historyRestore"));
         // The files read, the drives read and planned: the last look, nothing written yet.
         PlantReportDialog *look = nullptr;
         QVERIFY(QTest::qWaitFor(
@@ -292,6 +301,27 @@ private slots:
         // The backup folder and its repository stay as they were.
         QCOMPARE(git(m_dock->backupFolder(), {QStringLiteral("status"), QStringLiteral("--porcelain")}),
                  QString());
+    }
+
+    // Restored, the drive holds what the older revision holds: the newer differs from it.
+    void aRevisionIsComparedWithTheDrive()
+    {
+        QVERIFY(clickForRevision(0, "historyAgainstDrive"));
+        CompareWindow *compare = nullptr;
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                compare = m_window->findChild<CompareWindow *>();
+                return compare && compare->isVisible()
+                    && compare->message().contains(QStringLiteral("cabinet-5 as read at"));
+            },
+            kJobWaitMs));
+        const ComparisonTable &table = compare->comparisonModel()->comparison();
+        const auto different = std::count_if(table.rows.cbegin(), table.rows.cend(),
+                                             [](const ComparisonRow &row) {
+                                                 return row.state == ComparisonRow::State::Different;
+                                             });
+        QCOMPARE(different, 1);
+        compare->close();
     }
 };
 

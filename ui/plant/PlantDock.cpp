@@ -297,31 +297,6 @@ void PlantDock::openDrive(const QModelIndex &index)
     showMessage(tr("%1 opens in the editor.").arg(drive.data().toString()));
 }
 
-void PlantDock::compareSelected()
-{
-    const QList<QModelIndex> drives = selectedDrives();
-    if (drives.size() != 2 || m_run)
-        return showMessage(tr("Select two drives to compare."));
-    // Only the two drives, each read whole as a backup reads it, into files of their own.
-    Plant pair;
-    pair.name = m_model->plant().name;
-    for (const QModelIndex &drive : drives) {
-        const PlantLink *link = m_model->linkOf(drive);
-        PlantLink *taken = pair.link(link->name);
-        if (!taken) {
-            pair.links.append(*link);
-            taken = &pair.links.last();
-            taken->addresses.clear();
-        }
-        if (link->protocol != Protocol::Hsp5)
-            taken->addresses.append(drive.data(PlantModel::AddressRole).toInt());
-    }
-    m_compareFiles = std::make_unique<QTemporaryDir>();
-    if (!m_compareFiles->isValid())
-        return showMessage(m_compareFiles->errorString());
-    startJob(Job::CompareRead, pair, m_compareFiles->path());
-}
-
 void PlantDock::showHistory()
 {
     if (m_path.isEmpty())
@@ -330,11 +305,16 @@ void PlantDock::showHistory()
         m_history = new PlantHistoryWindow(this);
         connect(m_history, &PlantHistoryWindow::compareRequested, this,
                 &PlantDock::compareRequested);
+        connect(m_history, &PlantHistoryWindow::compareWithDriveRequested, this,
+                &PlantDock::compareWithDrive);
         connect(m_history, &PlantHistoryWindow::restoreRequested, this,
                 &PlantDock::restoreRevision);
     }
     m_history->setRestoreAllowed(m_run.isNull());
-    m_history->showFolder(m_model->plant().name, backupFolder(), driveNames());
+    QStringList drives;
+    for (const QModelIndex &row : driveRows())
+        drives << row.data().toString();
+    m_history->showFolder(m_model->plant().name, backupFolder(), drives);
     m_history->show();
     m_history->raise();
     m_history->activateWindow();
@@ -345,15 +325,15 @@ PlantHistoryWindow *PlantDock::historyWindow() const
     return m_history;
 }
 
-QStringList PlantDock::driveNames() const
+QList<QModelIndex> PlantDock::driveRows() const
 {
-    QStringList names;
+    QList<QModelIndex> rows;
     for (int link = 0; link < m_model->rowCount(); ++link) {
         const QModelIndex parent = m_model->index(link, PlantModel::NameColumn);
         for (int drive = 0; drive < m_model->rowCount(parent); ++drive)
-            names << m_model->index(drive, PlantModel::NameColumn, parent).data().toString();
+            rows << m_model->index(drive, PlantModel::NameColumn, parent);
     }
-    return names;
+    return rows;
 }
 
 void PlantDock::updateActions()

@@ -71,6 +71,9 @@ public:
     void openDrive(const QModelIndex &index);
     // The two drives selected, read afresh, to the compare window (compareRequested).
     void compareSelected();
+    // The file `file` (named `name`: a drive's file at a revision) as A, the drive `drive`
+    // ("cabinet-5") read afresh as B, to the compare window.
+    void compareWithDrive(const QString &file, const QString &name, const QString &drive);
     // The backup folder's revisions in the history window, made at the first call.
     void showHistory();
     // A revision's files (`files`, kept until the download is done) to the drives, as
@@ -91,8 +94,8 @@ private:
     void addLink();
     void chooseBackupFolder();
     void showPlantTitle();
-    // "cabinet-2", "cabinet-5", "hoist": the drives shown, by their files' names.
-    QStringList driveNames() const;
+    // Every drive's row (column 0), link by link; its text is its name ("cabinet-5").
+    QList<QModelIndex> driveRows() const;
     void fitColumns();
     QList<QModelIndex> selectedDrives() const;
     // PlantDockJobs.cpp
@@ -101,6 +104,8 @@ private:
     void onJobFinished();
     void findFinished(const PlantRun &run);
     void downloadPlanned(const QList<PlantDrive> &drives);
+    // The drives read afresh into files of their own, then to the compare window.
+    void readToCompare(const QList<QModelIndex> &drives);
     void compareRead(const QList<PlantDrive> &drives);
     // A drive that failed on the line the editor holds: its reason says to disconnect first.
     PlantDrive explained(PlantDrive drive) const;
@@ -118,7 +123,8 @@ private:
     Job m_job = Job::None;
     ClientOptions m_clientOptions;
     std::function<bool()> m_journaled;
-    std::unique_ptr<QTemporaryDir> m_compareFiles; // the two drives read for a comparison
+    std::unique_ptr<QTemporaryDir> m_compareFiles; // the drives read for a comparison
+    QStringList m_compareWith; // compareWithDrive(): the file and its name; empty otherwise
     QString m_jobDirectory; // the files the job at work reads or writes
     // A revision being restored: its files and its short id; empty for Download All.
     std::shared_ptr<QTemporaryDir> m_revisionFiles;

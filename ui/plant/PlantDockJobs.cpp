@@ -218,10 +218,55 @@ PlantDrive PlantDock::explained(PlantDrive drive) const
     return drive;
 }
 
+void PlantDock::compareSelected()
+{
+    const QList<QModelIndex> drives = selectedDrives();
+    if (drives.size() != 2 || m_run)
+        return showMessage(tr("Select two drives to compare."));
+    m_compareWith = {};
+    readToCompare(drives);
+}
+
+void PlantDock::compareWithDrive(const QString &file, const QString &name, const QString &drive)
+{
+    if (m_run)
+        return showMessage(tr("A job is running on the plant; compare once it is done."));
+    for (const QModelIndex &index : driveRows()) {
+        if (index.data().toString() == drive) {
+            m_compareWith = {file, name};
+            return readToCompare({index});
+        }
+    }
+    showMessage(tr("The plant has no drive %1.").arg(drive));
+}
+
+void PlantDock::readToCompare(const QList<QModelIndex> &drives)
+{
+    // Only these drives, each read whole as a backup reads it, into files of their own.
+    Plant pair;
+    pair.name = m_model->plant().name;
+    for (const QModelIndex &drive : drives) {
+        const PlantLink *link = m_model->linkOf(drive);
+        PlantLink *taken = pair.link(link->name);
+        if (!taken) {
+            pair.links.append(*link);
+            taken = &pair.links.last();
+            taken->addresses.clear();
+        }
+        if (link->protocol != Protocol::Hsp5)
+            taken->addresses.append(drive.data(PlantModel::AddressRole).toInt());
+    }
+    m_compareFiles = std::make_unique<QTemporaryDir>();
+    if (!m_compareFiles->isValid())
+        return showMessage(m_compareFiles->errorString());
+    startJob(Job::CompareRead, pair, m_compareFiles->path());
+}
+
 void PlantDock::compareRead(const QList<PlantDrive> &drives)
 {
-    QStringList files;
-    QStringList names;
+    // A file to compare with the drive read (a revision's) is side A.
+    QStringList files = m_compareWith.isEmpty() ? QStringList() : QStringList{m_compareWith[0]};
+    QStringList names = m_compareWith.isEmpty() ? QStringList() : QStringList{m_compareWith[1]};
     QStringList problems;
     const QString time = QLocale().toString(QTime::currentTime(), QLocale::ShortFormat);
     for (const PlantDrive &drive : drives) {
@@ -237,8 +282,11 @@ void PlantDock::compareRead(const QList<PlantDrive> &drives)
     if (files.size() != 2)
         return showMessage(
             tr("The drives could not be compared: %1").arg(problems.join(QStringLiteral("; "))));
-    showMessage(tr("%1 and %2 read; the compare window shows them side by side.")
-                    .arg(drives.at(0).name(), drives.at(1).name()));
+    if (m_compareWith.isEmpty())
+        showMessage(tr("%1 and %2 read; the compare window shows them side by side.")
+                        .arg(drives.at(0).name(), drives.at(1).name()));
+    else
+        showMessage(tr("%1 and %2 side by side in the compare window.").arg(names.at(0), names.at(1)));
     emit compareRequested(files.at(0), names.at(0), files.at(1), names.at(1));
 }
 

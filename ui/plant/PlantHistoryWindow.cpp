@@ -100,6 +100,10 @@ PlantHistoryWindow::PlantHistoryWindow(QWidget *parent)
     m_compareButton->setToolTip(
         tr("The drive's file at the two revisions selected, or at the one selected and in the "
            "backup folder now, side by side in the compare window"));
+    m_driveButton = new QPushButton(tr("Against the Dri&ve"), this);
+    m_driveButton->setObjectName(QStringLiteral("historyAgainstDrive"));
+    m_driveButton->setToolTip(tr("The drive's file at the revision selected against the drive "
+                                 "itself, read afresh, side by side in the compare window"));
     m_restoreButton = new QPushButton(tr("&Restore to This Revision..."), this);
     m_restoreButton->setObjectName(QStringLiteral("historyRestore"));
     m_restoreButton->setToolTip(
@@ -108,6 +112,7 @@ PlantHistoryWindow::PlantHistoryWindow(QWidget *parent)
     actions->addWidget(compareLabel);
     actions->addWidget(m_compareDrive);
     actions->addWidget(m_compareButton);
+    actions->addWidget(m_driveButton);
     actions->addStretch(1);
     actions->addWidget(m_restoreButton);
     m_message = new QLabel(this);
@@ -132,6 +137,7 @@ PlantHistoryWindow::PlantHistoryWindow(QWidget *parent)
         updateButtons();
     });
     connect(m_compareButton, &QPushButton::clicked, this, &PlantHistoryWindow::compareSelected);
+    connect(m_driveButton, &QPushButton::clicked, this, &PlantHistoryWindow::compareWithDrive);
     connect(m_restoreButton, &QPushButton::clicked, this, &PlantHistoryWindow::restoreSelected);
     connect(&m_reading, &QFutureWatcherBase::finished, this, &PlantHistoryWindow::onRead);
     connect(&m_extracting, &QFutureWatcherBase::finished, this, &PlantHistoryWindow::onExtracted);
@@ -257,15 +263,15 @@ QStringList PlantHistoryWindow::selectedRevisions() const
     return ids;
 }
 
-void PlantHistoryWindow::compareSelected()
+void PlantHistoryWindow::compare(Purpose purpose)
 {
     const QStringList ids = selectedRevisions();
     const QString drive = m_compareDrive->currentText();
-    if (ids.isEmpty() || ids.size() > 2 || drive.isEmpty())
+    if (ids.isEmpty() || ids.size() > (purpose == Purpose::Compare ? 2 : 1) || drive.isEmpty())
         return showMessage(tr("Select one or two revisions and a drive to compare."));
     m_extractedDrive = drive;
     // The older as A: a change reads from A to B, as in the list of changes.
-    extract({ids.constLast(), ids.constFirst()}, Purpose::Compare);
+    extract({ids.constLast(), ids.constFirst()}, purpose);
 }
 
 void PlantHistoryWindow::restoreSelected()
@@ -298,8 +304,7 @@ void PlantHistoryWindow::onExtracted()
         return showMessage(tr("The revision's files could not be read: %1").arg(extracted.error));
     if (m_purpose == Purpose::Restore) {
         showMessage(tr("%1 goes to Download All: look at what each drive would get, then "
-                       "write.")
-                        .arg(shortId(m_extractedIds.constFirst())));
+                       "write.").arg(shortId(m_extractedIds.constFirst())));
         emit restoreRequested(extracted.folders.constFirst(), shortId(m_extractedIds.constFirst()));
         return;
     }
@@ -310,7 +315,7 @@ void PlantHistoryWindow::onExtracted()
         paths << QDir(extracted.folders.at(i)->path()).filePath(file);
         names << revisionName(m_extractedIds.at(i));
     }
-    if (paths.size() == 1) { // one revision: against the backup folder now
+    if (paths.size() == 1 && m_purpose == Purpose::Compare) { // against the backup folder now
         paths << QDir(m_directory).filePath(file);
         names << tr("%1 in the backup folder now").arg(m_extractedDrive);
     }
@@ -319,6 +324,10 @@ void PlantHistoryWindow::onExtracted()
             return showMessage(tr("%1 has no file there: %2").arg(m_extractedDrive, names.at(i)));
     }
     m_compared = extracted.folders;
+    if (m_purpose == Purpose::CompareDrive) {
+        showMessage(tr("Reading %1 to compare it with %2...").arg(m_extractedDrive, names.at(0)));
+        return emit compareWithDriveRequested(paths.at(0), names.at(0), m_extractedDrive);
+    }
     showMessage(tr("%1 and %2 side by side in the compare window.").arg(names.at(0), names.at(1)));
     emit compareRequested(paths.at(0), names.at(0), paths.at(1), names.at(1));
 }
@@ -357,6 +366,8 @@ void PlantHistoryWindow::updateButtons()
     const bool idle = !m_extractPending;
     m_compareButton->setEnabled(idle && (selected == 1 || selected == 2)
                                 && m_compareDrive->count() > 0);
+    m_driveButton->setEnabled(idle && selected == 1 && m_restoreAllowed
+                              && m_compareDrive->count() > 0);
     m_restoreButton->setEnabled(idle && selected == 1 && m_restoreAllowed);
 }
 

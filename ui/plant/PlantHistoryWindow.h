@@ -27,6 +27,8 @@ namespace DriveDesk {
 class PlantHistoryWindow : public QWidget
 {
     Q_OBJECT
+    enum class Purpose { Compare, CompareDrive, Restore };
+
 public:
     explicit PlantHistoryWindow(QWidget *parent = nullptr);
     ~PlantHistoryWindow() override;
@@ -51,13 +53,17 @@ public:
 
     // The drive chosen at the two revisions selected (A the older), or at the one selected
     // (A) and in the backup folder now (B), to the compare window.
-    void compareSelected();
+    void compareSelected() { compare(Purpose::Compare); }
+    // The drive chosen at the revision selected (A) against the drive read afresh (B).
+    void compareWithDrive() { compare(Purpose::CompareDrive); }
     // The revision selected to the plant's Download All, with its last look.
     void restoreSelected();
 
 signals:
     void compareRequested(const QString &fileA, const QString &nameA, const QString &fileB,
                           const QString &nameB);
+    // The drive's file at a revision (`file`, named `name`) against `drive` read afresh.
+    void compareWithDriveRequested(const QString &file, const QString &name, const QString &drive);
     // The files of `revision` (its short id) in `files`, to be downloaded to the drives.
     void restoreRequested(std::shared_ptr<QTemporaryDir> files, const QString &revision);
 
@@ -65,11 +71,11 @@ protected:
     void hideEvent(QHideEvent *event) override;
 
 private:
-    enum class Purpose { Compare, Restore };
 
     void onRead();
     void showRevisions(const HistoryReading &reading);
     void showChanges();
+    void compare(Purpose purpose);
     void extract(const QStringList &revisions, Purpose purpose);
     void onExtracted();
     // "cabinet-5 at 3f2a1bc04e11 (2026-11-28 16:40:12)"
@@ -102,6 +108,7 @@ private:
     QListWidget *m_changes = nullptr;
     QComboBox *m_compareDrive = nullptr;
     QPushButton *m_compareButton = nullptr;
+    QPushButton *m_driveButton = nullptr;
     QPushButton *m_restoreButton = nullptr;
     QLabel *m_message = nullptr;
 };
