@@ -323,6 +323,21 @@ private slots:
         QCOMPARE(different, 1);
         compare->close();
     }
+
+    void theColumnsAndSizeAreRemembered()
+    {
+        PlantHistoryWindow *history = openHistory();
+        QVERIFY(history);
+        history->revisionList()->setColumnWidth(1, 222);
+        history->resize(777, 444);
+        history->close();
+        delete history; // the next History makes a window anew, as the next start does
+        history = openHistory();
+        QVERIFY(history);
+        QCOMPARE(history->revisionList()->columnWidth(1), 222);
+        QCOMPARE(history->size(), QSize(777, 444));
+        history->close();
+    }
 };
 
 QTEST_MAIN(TestPlantHistory)

@@ -146,7 +146,8 @@ PlantHistoryWindow::PlantHistoryWindow(QWidget *parent)
     settings.beginGroup(kSettingsGroup);
     if (!restoreGeometry(settings.value(QStringLiteral("geometry")).toByteArray()))
         resize(900, 560);
-    m_revisions->header()->restoreState(settings.value(QStringLiteral("columns")).toByteArray());
+    m_fitColumns = !m_revisions->header()->restoreState(
+        settings.value(QStringLiteral("columns")).toByteArray());
     m_splitter->restoreState(settings.value(QStringLiteral("splitter")).toByteArray());
     updateButtons();
 }
@@ -221,8 +222,12 @@ void PlantHistoryWindow::showRevisions(const HistoryReading &reading)
         item->setToolTip(AuthorColumn, revision.email);
         item->setToolTip(MessageColumn, revision.subject);
     }
-    for (int column : {IdColumn, TimeColumn, AuthorColumn})
-        m_revisions->resizeColumnToContents(column);
+    // Fitted to the first revisions shown, until the user sizes the columns (remembered).
+    if (m_fitColumns && !m_shown.isEmpty()) {
+        for (int column : {IdColumn, TimeColumn, AuthorColumn})
+            m_revisions->resizeColumnToContents(column);
+        m_fitColumns = false;
+    }
     if (!reading.error.isEmpty())
         showMessage(tr("No history to show: %1").arg(reading.error));
     else if (!reading.hasCommits)
@@ -353,11 +358,6 @@ void PlantHistoryWindow::setRestoreAllowed(bool allowed)
 {
     m_restoreAllowed = allowed;
     updateButtons();
-}
-
-bool PlantHistoryWindow::isBusy() const
-{
-    return m_readPending || m_extractPending;
 }
 
 void PlantHistoryWindow::updateButtons()

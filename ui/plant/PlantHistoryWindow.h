@@ -41,7 +41,8 @@ public:
     // Restore is offered only while the plant runs no job.
     void setRestoreAllowed(bool allowed);
 
-    bool isBusy() const;
+    // Reading the history or a revision's files.
+    bool isBusy() const { return m_readPending || m_extractPending; }
     QString message() const;
     QTreeWidget *revisionList() const { return m_revisions; }
     QListWidget *changeList() const { return m_changes; }
@@ -93,6 +94,7 @@ private:
     bool m_readPending = false;
     bool m_extractPending = false;
     bool m_readAgain = false;
+    bool m_fitColumns = true; // no column widths remembered yet
     bool m_restoreAllowed = true;
     Purpose m_purpose = Purpose::Compare;
     QStringList m_extractedIds; // what m_extracting extracts, in order
