@@ -4,6 +4,7 @@
 #include "CliFormatOption.h"
 
 #include "cli/CliPlantHistory.h"
+#include "history/BackupRepository.h"
 #include "history/Git.h"
 
 #include "bus/LinkFactory.h"

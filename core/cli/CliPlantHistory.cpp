@@ -162,27 +162,6 @@ int printPlantHistory(const CliRequest &request, QTextStream &out, QString *erro
     return 0;
 }
 
-std::unique_ptr<QTemporaryDir> extractRevision(const QString &directory, const QString &revision,
-                                               QString *commit, QString *error)
-{
-    const auto repository = BackupRepository::open(directory, false, error);
-    if (!repository)
-        return nullptr;
-    const std::optional<QString> id = repository->resolve(revision, error);
-    if (!id)
-        return nullptr;
-    auto folder = std::make_unique<QTemporaryDir>();
-    if (!folder->isValid()) {
-        *error = CliPlantHistoryText::tr("cannot make a temporary folder: %1")
-                     .arg(folder->errorString());
-        return nullptr;
-    }
-    if (!repository->extract(*id, folder->path(), error))
-        return nullptr;
-    *commit = *id;
-    return folder;
-}
-
 bool commitPlantBackup(const PlantRequest &request, const Plant &plant,
                        const QList<PlantDrive> &drives, QTextStream &out, QString *error)
 {

@@ -4,10 +4,7 @@
 
 #include <QList>
 #include <QString>
-#include <QTemporaryDir>
 #include <QTextStream>
-
-#include <memory>
 
 class QCommandLineParser;
 
@@ -18,7 +15,7 @@ struct PlantDrive;
 
 // A plant's backups as revisions of a git repository (docs/plant.md, "History"), on the
 // command line: `plant backup --commit [--message TEXT]`, `plant history`, and
-// `plant verify|download --at REV`.
+// `plant verify|download --at REV` (the revision's files: core's extractRevision()).
 
 // --commit, --message and --at, added to the command line's parser.
 void addPlantHistoryOptions(QCommandLineParser &parser);
@@ -33,12 +30,6 @@ bool parsePlantHistoryOptions(const QCommandLineParser &parser, PlantRequest &pl
 // changes, filtered and in the request's format. Returns the exit code: 0, or 2 with *error
 // for a directory that is no repository of backups or git failing or missing.
 int printPlantHistory(const CliRequest &request, QTextStream &out, QString *error);
-
-// The drives' files of `revision` of the repository at `directory` in a temporary folder, for
-// verify and download --at; the repository's working tree stays as it is. *commit: the commit
-// it named. Nothing and *error for a revision that does not exist, or git failing.
-std::unique_ptr<QTemporaryDir> extractRevision(const QString &directory, const QString &revision,
-                                               QString *commit, QString *error);
 
 // After `plant backup --commit`: the files saved, and those of drives `plant` (as the run left
 // it) no longer has, committed with the changes since the last commit, which are printed; no

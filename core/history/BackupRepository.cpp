@@ -157,6 +157,27 @@ bool BackupRepository::extract(const QString &commit, const QString &target, QSt
     return true;
 }
 
+std::unique_ptr<QTemporaryDir> extractRevision(const QString &directory, const QString &revision,
+                                               QString *commit, QString *error)
+{
+    const auto repository = BackupRepository::open(directory, false, error);
+    if (!repository)
+        return nullptr;
+    const std::optional<QString> id = repository->resolve(revision, error);
+    if (!id)
+        return nullptr;
+    auto folder = std::make_unique<QTemporaryDir>();
+    if (!folder->isValid()) {
+        *error = BackupRepository::tr("cannot make a temporary folder: %1")
+                     .arg(folder->errorString());
+        return nullptr;
+    }
+    if (!repository->extract(*id, folder->path(), error))
+        return nullptr;
+    *commit = *id;
+    return folder;
+}
+
 QList<ReadDescription> readDescriptions(const QList<QByteArray> &contents)
 {
     return QtConcurrent::blockingMapped(contents, [](const QByteArray &bytes) {

@@ -11,7 +11,9 @@
 #include <QMap>
 #include <QString>
 #include <QStringList>
+#include <QTemporaryDir>
 
+#include <memory>
 #include <optional>
 
 namespace DriveDesk {
@@ -65,6 +67,14 @@ struct ReadDescription
 // Each file's contents read, in order, on every core at once: reading is most of the work of
 // a commit and of a history, and each file stands alone.
 QList<ReadDescription> readDescriptions(const QList<QByteArray> &contents);
+
+// The drives' files of `revision` (as resolve() takes it) of the repository at `directory` in a
+// temporary folder of their own: what `plant verify|download --at` and the window's Restore
+// work on. The repository's working tree stays as it is. *commit: the commit it named. Nothing
+// and *error for a folder that is no repository of backups, a revision that does not exist, or
+// git failing. Blocks while git runs.
+std::unique_ptr<QTemporaryDir> extractRevision(const QString &directory, const QString &revision,
+                                               QString *commit, QString *error);
 
 // Reads each file's contents into a DriveFiles: a description per drive, or why it cannot be
 // read. `files`: file name -> contents.

@@ -281,8 +281,9 @@ private slots:
         // The View menu's windows and docks, after the table's filters and before the language.
         const QString view = menu("&View");
         QVERIFY2(view.endsWith(QStringLiteral("| compareAction | monitorAction scopeViewAction "
-                                              "plantViewAction journalViewAction | Language (from "
-                                              "the next start)")),
+                                              "plantViewAction plantHistoryMenuAction "
+                                              "journalViewAction | Language (from the next "
+                                              "start)")),
                  qPrintable(view));
         QCOMPARE(names(window.toolBar()->actions()),
                  QStringLiteral("connectAction disconnectAction openFileAction saveFileAction | "

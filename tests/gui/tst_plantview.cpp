@@ -1,4 +1,5 @@
 #include "tst_mainwindow_support.h"
+#include "tst_plantsupport.h"
 
 #include "compare/CompareWindow.h"
 #include "compare/ComparisonModel.h"
@@ -29,7 +30,7 @@ using namespace DriveDesk::MainWindowTest;
 
 namespace {
 
-constexpr int kJobWaitMs = 60000;
+using PlantTest::kJobWaitMs;
 
 bool writeText(const QString &path, const QString &text)
 {
@@ -76,14 +77,7 @@ private:
         return model()->driveIndex(link, address).siblingAtColumn(column).data().toString();
     }
 
-    bool runJob(QAction *action)
-    {
-        if (!action->isEnabled())
-            return false;
-        action->trigger();
-        return QTest::qWaitFor([this] { return m_dock->job() == PlantDock::Job::None; },
-                               kJobWaitMs);
-    }
+    bool runJob(QAction *action) { return PlantTest::runJob(*m_dock, action); }
 
     // Double-clicks the drive's row and waits until the window shows that drive.
     bool openDrive(const QString &link, int address, const QString &target)

@@ -1,4 +1,5 @@
 #include "../parameters/EditorSampleDrive.h"
+#include "GitTestHome.h"
 
 #include "history/BackupCommit.h"
 #include "history/PlantHistory.h"
@@ -20,15 +21,7 @@ ParameterDescription *find(DriveDescription &drive, quint16 address)
     return const_cast<ParameterDescription *>(drive.find(address));
 }
 
-// git itself, as a user would look at what DriveDesk committed.
-QString git(const QString &directory, const QStringList &arguments)
-{
-    QProcess process;
-    process.setWorkingDirectory(directory);
-    process.start(QStringLiteral("git"), arguments);
-    process.waitForFinished();
-    return QString::fromUtf8(process.readAllStandardOutput()).trimmed();
-}
+using GitTest::git;
 
 } // namespace
 
@@ -41,14 +34,7 @@ class TestBackupHistory : public QObject
 private slots:
     void initTestCase()
     {
-        QVERIFY(m_home.isValid());
-        // No configuration of the user running the tests: a home of our own with an author.
-        qputenv("HOME", m_home.path().toUtf8());
-        qputenv("XDG_CONFIG_HOME", m_home.filePath(QStringLiteral(".config")).toUtf8());
-        qputenv("GIT_CONFIG_NOSYSTEM", "1");
-        QFile config(m_home.filePath(QStringLiteral(".gitconfig")));
-        QVERIFY(config.open(QIODevice::WriteOnly));
-        config.write("[user]\n\tname = Test Engineer\n\temail = test@example.org\n");
+        QVERIFY(GitTest::useHome(m_home));
     }
 
     void aBackupIsCommittedWithItsChangesAndLiveValuesNeverCount()

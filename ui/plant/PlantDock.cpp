@@ -1,5 +1,6 @@
 #include "PlantDock.h"
 
+#include "PlantHistoryWindow.h"
 #include "PlantLinkDialog.h"
 #include "PlantModel.h"
 #include "PlantReportDialog.h"
@@ -154,6 +155,10 @@ void PlantDock::createActions()
     m_compareAction
         = add(tr("Compare"), QStringLiteral("plantCompareAction"),
               tr("Read the two selected drives afresh and compare them side by side"), QIcon());
+    m_historyAction = add(tr("History..."), QStringLiteral("plantHistoryAction"),
+                          tr("The backup folder's revisions: what changed when, two side by "
+                             "side, and a revision restored"),
+                          themedIcon("document-open-recent", QStyle::SP_FileDialogDetailedView));
     m_addLinkAction = add(tr("Add Link..."), QStringLiteral("plantAddLinkAction"),
                           tr("Add a link to the plant file"), QIcon());
     m_folderAction = add(tr("Backup Folder..."), QStringLiteral("plantFolderAction"),
@@ -178,6 +183,8 @@ void PlantDock::createActions()
         if (!QDir(backupFolder()).exists())
             return showMessage(tr("The backup folder %1 does not exist.")
                                    .arg(QDir::toNativeSeparators(backupFolder())));
+        m_revisionFiles.reset();
+        m_revision.clear();
         startJob(Job::DownloadLook, m_state->plant(), backupFolder());
     });
     connect(m_stopAction, &QAction::triggered, this, [this] {
@@ -185,6 +192,7 @@ void PlantDock::createActions()
             m_run->stop();
     });
     connect(m_compareAction, &QAction::triggered, this, &PlantDock::compareSelected);
+    connect(m_historyAction, &QAction::triggered, this, &PlantDock::showHistory);
     connect(m_addLinkAction, &QAction::triggered, this, &PlantDock::addLink);
     connect(m_folderAction, &QAction::triggered, this, &PlantDock::chooseBackupFolder);
 }
@@ -203,6 +211,8 @@ bool PlantDock::openPlant(const QString &path, QString *error)
     showPlantTitle();
     m_status->clear();
     updateActions();
+    if (m_history && m_history->isVisible())
+        showHistory();
     show();
     raise();
     emit plantOpened(m_path);
@@ -229,6 +239,8 @@ void PlantDock::setBackupFolder(const QString &directory)
     QSettings().setValue(folderKey(m_path), QDir(directory).absolutePath());
     m_state->setBackupFolder(backupFolder());
     showPlantTitle();
+    if (m_history && m_history->isVisible())
+        showHistory();
 }
 
 void PlantDock::chooseBackupFolder()
@@ -286,29 +298,43 @@ void PlantDock::openDrive(const QModelIndex &index)
     showMessage(tr("%1 opens in the editor.").arg(drive.data().toString()));
 }
 
-void PlantDock::compareSelected()
+void PlantDock::showHistory()
 {
-    const QList<QModelIndex> drives = selectedDrives();
-    if (drives.size() != 2 || m_run)
-        return showMessage(tr("Select two drives to compare."));
-    // Only the two drives, each read whole as a backup reads it, into files of their own.
-    Plant pair;
-    pair.name = m_state->plant().name;
-    for (const QModelIndex &drive : drives) {
-        const PlantLink *link = m_model->linkOf(drive);
-        PlantLink *taken = pair.link(link->name);
-        if (!taken) {
-            pair.links.append(*link);
-            taken = &pair.links.last();
-            taken->addresses.clear();
-        }
-        if (link->protocol != Protocol::Hsp5)
-            taken->addresses.append(drive.data(PlantModel::AddressRole).toInt());
+    if (m_path.isEmpty())
+        return;
+    if (!m_history) {
+        m_history = new PlantHistoryWindow(this);
+        connect(m_history, &PlantHistoryWindow::compareRequested, this,
+                &PlantDock::compareRequested);
+        connect(m_history, &PlantHistoryWindow::compareWithDriveRequested, this,
+                &PlantDock::compareWithDrive);
+        connect(m_history, &PlantHistoryWindow::restoreRequested, this,
+                &PlantDock::restoreRevision);
     }
-    m_compareFiles = std::make_unique<QTemporaryDir>();
-    if (!m_compareFiles->isValid())
-        return showMessage(m_compareFiles->errorString());
-    startJob(Job::CompareRead, pair, m_compareFiles->path());
+    m_history->setRestoreAllowed(m_run.isNull());
+    QStringList drives;
+    for (const QModelIndex &row : driveRows())
+        drives << row.data().toString();
+    m_history->showFolder(m_state->plant().name, backupFolder(), drives);
+    m_history->show();
+    m_history->raise();
+    m_history->activateWindow();
+}
+
+PlantHistoryWindow *PlantDock::historyWindow() const
+{
+    return m_history;
+}
+
+QList<QModelIndex> PlantDock::driveRows() const
+{
+    QList<QModelIndex> rows;
+    for (int link = 0; link < m_model->rowCount(); ++link) {
+        const QModelIndex parent = m_model->index(link, PlantModel::NameColumn);
+        for (int drive = 0; drive < m_model->rowCount(parent); ++drive)
+            rows << m_model->index(drive, PlantModel::NameColumn, parent);
+    }
+    return rows;
 }
 
 void PlantDock::updateActions()
@@ -321,6 +347,9 @@ void PlantDock::updateActions()
     m_downloadAction->setEnabled(plant && idle);
     m_stopAction->setEnabled(!idle);
     m_compareAction->setEnabled(idle && selectedDrives().size() == 2);
+    m_historyAction->setEnabled(!m_path.isEmpty());
+    if (m_history)
+        m_history->setRestoreAllowed(plant && idle);
     m_addLinkAction->setEnabled(!m_path.isEmpty() && idle);
     m_folderAction->setEnabled(!m_path.isEmpty() && idle);
 }

@@ -18,16 +18,18 @@ class QTreeView;
 
 namespace DriveDesk {
 
+class PlantHistoryWindow;
 class PlantModel;
 class WindowFrame;
 
 // The plant view: the links and drives of a plant file (core's PlantState, shown through
 // PlantModel) with the jobs of `drivedesk-cli plant` run on them by core's PlantRun: Find,
 // Back Up All, Verify All and Download All (a dry run as the last look per drive, then the
-// writing and one combined report), each with progress per drive and Stop. A drive opens in
-// the window's editor with a double click; two selected drives are read afresh and offered to
-// the compare window. The plant runs on connections of its own: the drive open in the editor
-// goes on meanwhile.
+// writing and one combined report), each with progress per drive and Stop. A drive opens in the window's editor with a
+// double click; two selected drives are read afresh and offered to the compare window. History
+// shows the backup folder's revisions (PlantHistoryWindow); a revision restored goes through
+// Download All's last look. The plant runs on connections of its own: the drive open in the
+// editor goes on meanwhile.
 class PlantDock : public QDockWidget
 {
     Q_OBJECT
@@ -64,11 +66,21 @@ public:
     QAction *downloadAction() const { return m_downloadAction; }
     QAction *stopAction() const { return m_stopAction; }
     QAction *compareAction() const { return m_compareAction; }
+    QAction *historyAction() const { return m_historyAction; }
+    PlantHistoryWindow *historyWindow() const;
 
     // The drive at `index` in the window's editor: its session connects to the drive.
     void openDrive(const QModelIndex &index);
     // The two drives selected, read afresh, to the compare window (compareRequested).
     void compareSelected();
+    // The file `file` (named `name`: a drive's file at a revision) as A, the drive `drive`
+    // ("cabinet-5") read afresh as B, to the compare window.
+    void compareWithDrive(const QString &file, const QString &name, const QString &drive);
+    // The backup folder's revisions in the history window, made at the first call.
+    void showHistory();
+    // A revision's files (`files`, kept until the download is done) to the drives, as
+    // Download All does it: its last look first, then the writing and one report.
+    void restoreRevision(std::shared_ptr<QTemporaryDir> files, const QString &revision);
     void updateActions();
 
 signals:
@@ -84,6 +96,8 @@ private:
     void addLink();
     void chooseBackupFolder();
     void showPlantTitle();
+    // Every drive's row (column 0), link by link; its text is its name ("cabinet-5").
+    QList<QModelIndex> driveRows() const;
     void fitColumns();
     QList<QModelIndex> selectedDrives() const;
     // PlantDockJobs.cpp
@@ -91,6 +105,8 @@ private:
     void onJobFinished();
     void findFinished(const PlantRun &run);
     void downloadPlanned(const QList<PlantDrive> &drives);
+    // The drives read afresh into files of their own, then to the compare window.
+    void readToCompare(const QList<QModelIndex> &drives);
     void compareRead(const QList<PlantDrive> &drives);
     // A drive that failed on the line the editor holds: its reason says to disconnect first.
     PlantDrive explained(PlantDrive drive) const;
@@ -109,7 +125,13 @@ private:
     Job m_job = Job::None;
     ClientOptions m_clientOptions;
     std::function<bool()> m_journaled;
-    std::unique_ptr<QTemporaryDir> m_compareFiles; // the two drives read for a comparison
+    std::unique_ptr<QTemporaryDir> m_compareFiles; // the drives read for a comparison
+    QStringList m_compareWith; // compareWithDrive(): the file and its name; empty otherwise
+    QString m_jobDirectory; // the files the job at work reads or writes
+    // A revision being restored: its files and its short id; empty for Download All.
+    std::shared_ptr<QTemporaryDir> m_revisionFiles;
+    QString m_revision;
+    QPointer<PlantHistoryWindow> m_history;
     QPointer<PlantReportDialog> m_report;
 
     QAction *m_findAction = nullptr;
@@ -118,6 +140,7 @@ private:
     QAction *m_downloadAction = nullptr;
     QAction *m_stopAction = nullptr;
     QAction *m_compareAction = nullptr;
+    QAction *m_historyAction = nullptr;
     QAction *m_addLinkAction = nullptr;
     QAction *m_folderAction = nullptr;
 };

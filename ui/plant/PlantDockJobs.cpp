@@ -1,6 +1,7 @@
 // PlantDock: the plant's jobs, each a PlantRun of core, and what the view makes of their end.
 #include "PlantDock.h"
 
+#include "PlantModel.h"
 #include "PlantReportDialog.h"
 
 #include "bus/LinkFactory.h"
@@ -37,8 +38,12 @@ void PlantDock::startJob(Job job, const Plant &plant, const QString &directory)
     run->setLanguage(m_frame.language());
     run->setDownloadOptions(job == Job::DownloadLook, false);
     if (job == Job::Download && m_journaled && m_journaled()) {
+        // A restore says which revision its values came from, as the journal is read later.
+        const QString plantFile = QFileInfo(m_path).fileName();
         run->setJournal(RunJournal::attach(
-            run, tr("plant download of %1").arg(QFileInfo(m_path).fileName())));
+            run, m_revision.isEmpty()
+                     ? tr("plant download of %1").arg(plantFile)
+                     : tr("plant download of %1 at revision %2").arg(plantFile, m_revision)));
     }
     // A comparison reads into files of its own: the drives' last results stay as they were.
     m_state->follow(run,
@@ -49,6 +54,7 @@ void PlantDock::startJob(Job job, const Plant &plant, const QString &directory)
     m_run = run;
     m_job = job;
     m_jobPlant = plant;
+    m_jobDirectory = directory;
     switch (job) {
     case Job::Find:
         showMessage(tr("Searching every link for its drives..."));
@@ -73,6 +79,17 @@ void PlantDock::startJob(Job job, const Plant &plant, const QString &directory)
     }
     updateActions();
     run->start();
+}
+
+void PlantDock::restoreRevision(std::shared_ptr<QTemporaryDir> files, const QString &revision)
+{
+    if (m_run)
+        return showMessage(tr("A job is running on the plant; restore once it is done."));
+    m_revisionFiles = std::move(files);
+    m_revision = revision;
+    startJob(Job::DownloadLook, m_state->plant(), m_revisionFiles->path());
+    if (m_job == Job::DownloadLook)
+        showMessage(tr("Reading every drive to see what restoring %1 would write...").arg(revision));
 }
 
 void PlantDock::onJobFinished()
@@ -100,7 +117,11 @@ void PlantDock::onJobFinished()
         break;
     case Job::Download: {
         const QString text = PlantDrive::summary(drives, tr("downloaded or already equal"));
-        auto *report = new PlantReportDialog(tr("Download All: Report"), text, drives, false, this);
+        const QString title = m_revision.isEmpty() ? tr("Download All: Report")
+                                                   : tr("Restore to %1: Report").arg(m_revision);
+        m_revisionFiles.reset();
+        m_revision.clear();
+        auto *report = new PlantReportDialog(title, text, drives, false, this);
         m_report = report;
         report->setAttribute(Qt::WA_DeleteOnClose);
         report->show();
@@ -119,6 +140,7 @@ void PlantDock::onJobFinished()
 
 void PlantDock::findFinished(const PlantRun &run)
 {
+    const QList<PlantDrive> drives = run.drives();
     QString text
         = PlantDrive::summary(run.drives(), PlantDrive::outcomeText(PlantDrive::Outcome::Found));
     // As `plant find --update`: the addresses found on the links searched to the end go into
@@ -146,12 +168,22 @@ void PlantDock::downloadPlanned(const QList<PlantDrive> &drives)
              "take it (see why).")
         : tr("%n drive(s) would be written to. Look at what each gets, then write.", nullptr,
              int(toWrite));
-    auto *look
-        = new PlantReportDialog(tr("Download All: Last Look"), text, drives, toWrite > 0, this);
+    const QString title = m_revision.isEmpty() ? tr("Download All: Last Look")
+                                               : tr("Restore to %1: Last Look").arg(m_revision);
+    auto *look = new PlantReportDialog(title, text, drives, toWrite > 0, this);
     m_report = look;
     look->setAttribute(Qt::WA_DeleteOnClose);
+    // What is written is what was looked at: the same folder (a revision's files stay while
+    // their last look is open), whatever was started since.
     connect(look, &PlantReportDialog::accepted, this,
-            [this] { startJob(Job::Download, m_state->plant(), backupFolder()); });
+            [this, directory = m_jobDirectory, files = m_revisionFiles, revision = m_revision] {
+                if (m_run)
+                    return showMessage(tr("A job is running on the plant; start again once it "
+                                          "is done."));
+                m_revisionFiles = files;
+                m_revision = revision;
+                startJob(Job::Download, m_state->plant(), directory);
+            });
     look->show();
     showMessage(text);
 }
@@ -172,10 +204,55 @@ PlantDrive PlantDock::explained(PlantDrive drive) const
     return drive;
 }
 
+void PlantDock::compareSelected()
+{
+    const QList<QModelIndex> drives = selectedDrives();
+    if (drives.size() != 2 || m_run)
+        return showMessage(tr("Select two drives to compare."));
+    m_compareWith = {};
+    readToCompare(drives);
+}
+
+void PlantDock::compareWithDrive(const QString &file, const QString &name, const QString &drive)
+{
+    if (m_run)
+        return showMessage(tr("A job is running on the plant; compare once it is done."));
+    for (const QModelIndex &index : driveRows()) {
+        if (index.data().toString() == drive) {
+            m_compareWith = {file, name};
+            return readToCompare({index});
+        }
+    }
+    showMessage(tr("The plant has no drive %1.").arg(drive));
+}
+
+void PlantDock::readToCompare(const QList<QModelIndex> &drives)
+{
+    // Only these drives, each read whole as a backup reads it, into files of their own.
+    Plant pair;
+    pair.name = m_state->plant().name;
+    for (const QModelIndex &drive : drives) {
+        const PlantLink *link = m_model->linkOf(drive);
+        PlantLink *taken = pair.link(link->name);
+        if (!taken) {
+            pair.links.append(*link);
+            taken = &pair.links.last();
+            taken->addresses.clear();
+        }
+        if (link->protocol != Protocol::Hsp5)
+            taken->addresses.append(drive.data(PlantModel::AddressRole).toInt());
+    }
+    m_compareFiles = std::make_unique<QTemporaryDir>();
+    if (!m_compareFiles->isValid())
+        return showMessage(m_compareFiles->errorString());
+    startJob(Job::CompareRead, pair, m_compareFiles->path());
+}
+
 void PlantDock::compareRead(const QList<PlantDrive> &drives)
 {
-    QStringList files;
-    QStringList names;
+    // A file to compare with the drive read (a revision's) is side A.
+    QStringList files = m_compareWith.isEmpty() ? QStringList() : QStringList{m_compareWith[0]};
+    QStringList names = m_compareWith.isEmpty() ? QStringList() : QStringList{m_compareWith[1]};
     QStringList problems;
     const QString time = QLocale().toString(QTime::currentTime(), QLocale::ShortFormat);
     for (const PlantDrive &drive : drives) {
@@ -191,8 +268,11 @@ void PlantDock::compareRead(const QList<PlantDrive> &drives)
     if (files.size() != 2)
         return showMessage(
             tr("The drives could not be compared: %1").arg(problems.join(QStringLiteral("; "))));
-    showMessage(tr("%1 and %2 read; the compare window shows them side by side.")
-                    .arg(drives.at(0).name(), drives.at(1).name()));
+    if (m_compareWith.isEmpty())
+        showMessage(tr("%1 and %2 read; the compare window shows them side by side.")
+                        .arg(drives.at(0).name(), drives.at(1).name()));
+    else
+        showMessage(tr("%1 and %2 side by side in the compare window.").arg(names.at(0), names.at(1)));
     emit compareRequested(files.at(0), names.at(0), files.at(1), names.at(1));
 }
 

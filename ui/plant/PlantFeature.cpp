@@ -58,6 +58,16 @@ PlantFeature::PlantFeature(WindowFrame &frame, QObject *parent)
     view->setObjectName(QStringLiteral("plantViewAction"));
     view->setText(tr("Pla&nt View"));
     frame.menu(WindowFrame::Menu::View)->addAction(view);
+    // The dock's History, with a shortcut and a mnemonic of the menu's own: the dock's toolbar
+    // buttons carry none (the window's Alt+letters are taken).
+    auto *history = new QAction(tr("Plant Hist&ory..."), this);
+    history->setObjectName(QStringLiteral("plantHistoryMenuAction"));
+    history->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_H));
+    history->setToolTip(m_dock->historyAction()->toolTip());
+    history->setEnabled(m_dock->historyAction()->isEnabled());
+    connect(m_dock->historyAction(), &QAction::enabledChanged, history, &QAction::setEnabled);
+    connect(history, &QAction::triggered, m_dock, &PlantDock::showHistory);
+    frame.menu(WindowFrame::Menu::View)->addAction(history);
 
     const QString shown = QSettings().value(kShownKey).toString();
     QString ignored;

@@ -12,7 +12,8 @@ class PlantDock;
 
 // Plants in the window: File > New Plant, Open Plant and Open Recent Plant (the plant files
 // used lately, in QSettings "plants/recent"), and the plant view (PlantDock) they show, with
-// View > Plant View. The plant shown when the window closed shows again when it opens.
+// View > Plant View and View > Plant History (the dock's History). The plant shown when the
+// window closed shows again when it opens.
 class PlantFeature : public WindowFeature
 {
     Q_OBJECT
