@@ -90,29 +90,6 @@ struct Journal::Statements
     QSqlQuery insertJob;
 };
 
-namespace {
-
-QString &chosenDefaultPath()
-{
-    static QString path;
-    return path;
-}
-
-} // namespace
-
-void Journal::setDefaultPath(const QString &path)
-{
-    chosenDefaultPath() = path.isEmpty() ? QString() : QDir::cleanPath(QDir().absoluteFilePath(path));
-}
-
-QString Journal::defaultPath()
-{
-    if (!chosenDefaultPath().isEmpty())
-        return chosenDefaultPath();
-    return QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation)
-        + QStringLiteral("/DriveDesk/journal.sqlite");
-}
-
 Journal::Journal(QString path)
     : m_path(path.isEmpty() ? defaultPath() : QDir::cleanPath(path))
 {
