@@ -7,15 +7,6 @@
 
 namespace DriveDesk {
 
-namespace {
-
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("ScopeChannelsJob", text);
-}
-
-} // namespace
-
 ScopeChannelWrites planScopeChannels(const DriveDescription &drive,
                                      const ScopeAssignment &choices)
 {
@@ -25,8 +16,10 @@ ScopeChannelWrites planScopeChannels(const DriveDescription &drive,
     const std::optional<ScopeAssignmentParameters> parameters = scopeAssignmentParameters(drive);
     if (!parameters) {
         if (anyChoice)
-            planned.error = tr("This drive has no channel-assignment parameters (Sy.16 to "
-                               "Sy.23): its channels are recorded as it has them assigned.");
+            planned.error = QCoreApplication::translate(
+                "DriveDesk::ScopeChannelsJob",
+                "This drive has no channel-assignment parameters (Sy.16 to Sy.23): its channels "
+                "are recorded as it has them assigned.");
         return planned;
     }
     const QList<const ParameterDescription *> sources = scopeSources(drive);
@@ -39,16 +32,19 @@ ScopeChannelWrites planScopeChannels(const DriveDescription &drive,
                 sources.begin(), sources.end(),
                 [&](const ParameterDescription *p) { return p->address == choice->source; });
             if (!permitted) {
-                planned.error
-                    = tr("Channel %1: %2 may not be recorded (the drive does not permit it as "
-                         "process data).")
-                          .arg(channel + 1)
-                          .arg(ParameterId::format(quint16(choice->source), drive));
+                planned.error = QCoreApplication::translate(
+                                    "DriveDesk::ScopeChannelsJob",
+                                    "Channel %1: %2 may not be recorded (the drive does not "
+                                    "permit it as process data).")
+                                    .arg(channel + 1)
+                                    .arg(ParameterId::format(quint16(choice->source), drive));
                 break;
             }
         }
         if (choice->setMask == 0) {
-            planned.error = tr("Channel %1: choose at least one set.").arg(channel + 1);
+            planned.error = QCoreApplication::translate("DriveDesk::ScopeChannelsJob",
+                                                        "Channel %1: choose at least one set.")
+                                .arg(channel + 1);
             break;
         }
         planned.writes << ScopeChannelWrites::Write { parameters->source[channel], choice->source }
