@@ -105,6 +105,10 @@
         <source>git cat-file: no object %1</source>
         <translation>git cat-file: kein Objekt %1</translation>
     </message>
+    <message>
+        <source>cannot make a temporary folder: %1</source>
+        <translation>ein temporärer Ordner kann nicht angelegt werden: %1</translation>
+    </message>
 </context>
 <context>
     <name>ChosenValues</name>
@@ -129,10 +133,6 @@
     <message>
         <source>no revision</source>
         <translation>keine Revision</translation>
-    </message>
-    <message>
-        <source>cannot make a temporary folder: %1</source>
-        <translation>ein temporärer Ordner kann nicht angelegt werden: %1</translation>
     </message>
     <message>
         <source>no drive saved: nothing committed</source>
@@ -1069,6 +1069,14 @@
     <message>
         <source>--no-journal downloads without it</source>
         <translation>--no-journal lädt ohne Journal</translation>
+    </message>
+    <message>
+        <source>scope channel assignment</source>
+        <translation>Kanalzuweisung des Scopes</translation>
+    </message>
+    <message>
+        <source>--no-journal writes without it</source>
+        <translation>--no-journal schreibt ohne Journal</translation>
     </message>
 </context>
 <context>
@@ -2023,10 +2031,6 @@
         <translation>die Werte von %1</translation>
     </message>
     <message>
-        <source>the values chosen from %1</source>
-        <translation>die aus %1 gewählten Werte</translation>
-    </message>
-    <message>
         <source>download of %1</source>
         <translation>Download: %1</translation>
     </message>
@@ -2689,7 +2693,7 @@
     </message>
     <message>
         <source>Stopping...</source>
-        <translation>Wird angehalten...</translation>
+        <translation>Wird angehalten …</translation>
     </message>
     <message>
         <source>Drive %1, connected now</source>
@@ -2808,7 +2812,7 @@
     </message>
     <message>
         <source>Revert...</source>
-        <translation>Zurücksetzen...</translation>
+        <translation>Zurücksetzen …</translation>
     </message>
     <message>
         <source>Write the values before the selected entries back to the drive, after a last look at what will change</source>
@@ -2820,7 +2824,7 @@
     </message>
     <message>
         <source>Reading the journal...</source>
-        <translation>Journal wird gelesen...</translation>
+        <translation>Journal wird gelesen …</translation>
     </message>
     <message numerus="yes">
         <source>%n entries</source>
@@ -2864,10 +2868,6 @@
 %1</source>
         <translation>Es wurde nichts geschrieben:
 %1</translation>
-    </message>
-    <message>
-        <source>the values before %1</source>
-        <translation>die Werte von vorher (%1)</translation>
     </message>
 </context>
 <context>
@@ -3143,7 +3143,7 @@
     </message>
     <message>
         <source>Closing the connection to %1...</source>
-        <translation>Die Verbindung zu %1 wird geschlossen...</translation>
+        <translation>Die Verbindung zu %1 wird geschlossen …</translation>
     </message>
     <message>
         <source>Connected: %1; the drive is not answering</source>
@@ -3528,7 +3528,7 @@
     </message>
     <message>
         <source>Asking the drive ...</source>
-        <translation>Der Umrichter wird gefragt ...</translation>
+        <translation>Der Umrichter wird gefragt …</translation>
     </message>
     <message>
         <source>Not accepted: %1</source>
@@ -3578,7 +3578,7 @@
     </message>
     <message>
         <source>Download All...</source>
-        <translation>Alle in die Umrichter laden...</translation>
+        <translation>Alle in die Umrichter laden …</translation>
     </message>
     <message>
         <source>Write each drive&apos;s file to the drive, after a last look at what each would get</source>
@@ -3602,7 +3602,7 @@
     </message>
     <message>
         <source>Add Link...</source>
-        <translation>Verbindung hinzufügen...</translation>
+        <translation>Verbindung hinzufügen …</translation>
     </message>
     <message>
         <source>Add a link to the plant file</source>
@@ -3610,7 +3610,7 @@
     </message>
     <message>
         <source>Backup Folder...</source>
-        <translation>Sicherungsordner...</translation>
+        <translation>Sicherungsordner …</translation>
     </message>
     <message>
         <source>Choose where the drives&apos; files are</source>
@@ -3658,31 +3658,27 @@
     </message>
     <message>
         <source>Searching every link for its drives...</source>
-        <translation>Jede Verbindung wird nach ihren Umrichtern durchsucht...</translation>
+        <translation>Jede Verbindung wird nach ihren Umrichtern durchsucht …</translation>
     </message>
     <message>
         <source>Backing up every drive...</source>
-        <translation>Jeder Umrichter wird gesichert...</translation>
+        <translation>Jeder Umrichter wird gesichert …</translation>
     </message>
     <message>
         <source>Verifying every drive against its file...</source>
-        <translation>Jeder Umrichter wird mit seiner Datei verglichen...</translation>
+        <translation>Jeder Umrichter wird mit seiner Datei verglichen …</translation>
     </message>
     <message>
         <source>Reading every drive to see what a download would write...</source>
-        <translation>Jeder Umrichter wird gelesen, um zu sehen, was ein Download schriebe...</translation>
+        <translation>Jeder Umrichter wird gelesen, um zu sehen, was ein Download schriebe …</translation>
     </message>
     <message>
         <source>Downloading to every drive...</source>
-        <translation>Download in jeden Umrichter...</translation>
+        <translation>Download in jeden Umrichter …</translation>
     </message>
     <message>
         <source>Reading the two drives to compare...</source>
-        <translation>Die zwei Umrichter werden zum Vergleich gelesen...</translation>
-    </message>
-    <message>
-        <source>reading</source>
-        <translation>liest</translation>
+        <translation>Die zwei Umrichter werden zum Vergleich gelesen …</translation>
     </message>
     <message>
         <source>downloaded or already equal</source>
@@ -3739,6 +3735,50 @@
         <source>plant download of %1</source>
         <translation>Anlagen-Download: %1</translation>
     </message>
+    <message>
+        <source>History...</source>
+        <translation>Historie …</translation>
+    </message>
+    <message>
+        <source>The backup folder&apos;s revisions: what changed when, two side by side, and a revision restored</source>
+        <translation>Die Revisionen des Sicherungsordners: was sich wann geändert hat, zwei nebeneinander, und eine Revision wiederhergestellt</translation>
+    </message>
+    <message>
+        <source>plant download of %1 at revision %2</source>
+        <translation>Anlagen-Download: %1 in Revision %2</translation>
+    </message>
+    <message>
+        <source>A job is running on the plant; restore once it is done.</source>
+        <translation>Auf der Anlage läuft ein Auftrag; erst nach seinem Ende wiederherstellen.</translation>
+    </message>
+    <message>
+        <source>Reading every drive to see what restoring %1 would write...</source>
+        <translation>Jeder Umrichter wird gelesen, um zu sehen, was die Wiederherstellung von %1 schriebe …</translation>
+    </message>
+    <message>
+        <source>Restore to %1: Report</source>
+        <translation>Wiederherstellen von %1: Bericht</translation>
+    </message>
+    <message>
+        <source>Restore to %1: Last Look</source>
+        <translation>Wiederherstellen von %1: letzter Blick</translation>
+    </message>
+    <message>
+        <source>A job is running on the plant; start again once it is done.</source>
+        <translation>Auf der Anlage läuft ein Auftrag; nach seinem Ende erneut starten.</translation>
+    </message>
+    <message>
+        <source>A job is running on the plant; compare once it is done.</source>
+        <translation>Auf der Anlage läuft ein Auftrag; erst nach seinem Ende vergleichen.</translation>
+    </message>
+    <message>
+        <source>The plant has no drive %1.</source>
+        <translation>Die Anlage hat keinen Umrichter %1.</translation>
+    </message>
+    <message>
+        <source>%1 and %2 side by side in the compare window.</source>
+        <translation>%1 und %2 nebeneinander im Vergleichsfenster.</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::PlantFeature</name>
@@ -3748,7 +3788,7 @@
     </message>
     <message>
         <source>&amp;New Plant...</source>
-        <translation>&amp;Neue Anlage...</translation>
+        <translation>&amp;Neue Anlage …</translation>
     </message>
     <message>
         <source>Name a machine and its first link, and save it as a plant file</source>
@@ -3756,7 +3796,7 @@
     </message>
     <message>
         <source>Open &amp;Plant...</source>
-        <translation>Anla&amp;ge öffnen...</translation>
+        <translation>Anla&amp;ge öffnen …</translation>
     </message>
     <message>
         <source>Show a plant file&apos;s links and drives in the plant view</source>
@@ -3785,6 +3825,165 @@
     <message>
         <source>Save New Plant</source>
         <translation>Neue Anlage speichern</translation>
+    </message>
+    <message>
+        <source>Plant Hist&amp;ory...</source>
+        <translation>Anlagen&amp;historie …</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::PlantHistoryWindow</name>
+    <message>
+        <source>Plant History - DriveDesk</source>
+        <translation>Anlagenhistorie - DriveDesk</translation>
+    </message>
+    <message>
+        <source>every drive</source>
+        <translation>jeder Umrichter</translation>
+    </message>
+    <message>
+        <source>Only the revisions that changed this drive (cabinet-5)</source>
+        <translation>Nur die Revisionen, die diesen Umrichter geändert haben (cabinet-5)</translation>
+    </message>
+    <message>
+        <source>&amp;Drive:</source>
+        <translation>&amp;Umrichter:</translation>
+    </message>
+    <message>
+        <source>every parameter</source>
+        <translation>jeder Parameter</translation>
+    </message>
+    <message>
+        <source>Only the revisions that changed this parameter (op.28)</source>
+        <translation>Nur die Revisionen, die diesen Parameter geändert haben (op.28)</translation>
+    </message>
+    <message>
+        <source>&amp;Parameter:</source>
+        <translation>&amp;Parameter:</translation>
+    </message>
+    <message>
+        <source>Re&amp;fresh</source>
+        <translation>A&amp;ktualisieren</translation>
+    </message>
+    <message>
+        <source>Read the backup folder&apos;s revisions again</source>
+        <translation>Die Revisionen des Sicherungsordners neu lesen</translation>
+    </message>
+    <message>
+        <source>Revision</source>
+        <translation>Revision</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>Author</source>
+        <translation>Autor</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Nachricht</translation>
+    </message>
+    <message>
+        <source>Changes</source>
+        <translation>Änderungen</translation>
+    </message>
+    <message>
+        <source>What the revision selected changed against the one before</source>
+        <translation>Was die gewählte Revision gegenüber der vorigen geändert hat</translation>
+    </message>
+    <message>
+        <source>Drive to co&amp;mpare:</source>
+        <translation>Zu verglei&amp;chender Umrichter:</translation>
+    </message>
+    <message>
+        <source>&amp;Side by Side</source>
+        <translation>&amp;Nebeneinander</translation>
+    </message>
+    <message>
+        <source>The drive&apos;s file at the two revisions selected, or at the one selected and in the backup folder now, side by side in the compare window</source>
+        <translation>Die Datei des Umrichters in den zwei gewählten Revisionen, oder in der gewählten und jetzt im Sicherungsordner, nebeneinander im Vergleichsfenster</translation>
+    </message>
+    <message>
+        <source>Against the Dri&amp;ve</source>
+        <translation>&amp;Gegen den Umrichter</translation>
+    </message>
+    <message>
+        <source>The drive&apos;s file at the revision selected against the drive itself, read afresh, side by side in the compare window</source>
+        <translation>Die Datei des Umrichters in der gewählten Revision gegen den Umrichter selbst, neu gelesen, nebeneinander im Vergleichsfenster</translation>
+    </message>
+    <message>
+        <source>&amp;Restore to This Revision...</source>
+        <translation>&amp;Diese Revision wiederherstellen …</translation>
+    </message>
+    <message>
+        <source>Download the revision&apos;s files to the drives, after Download All&apos;s last look at what each would get</source>
+        <translation>Die Dateien der Revision in die Umrichter laden, nach dem letzten Blick von „Alle in die Umrichter laden“ auf das, was jeder bekäme</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt; &amp;mdash; revisions of the backups in %2</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt; &amp;mdash; Revisionen der Sicherungen in %2</translation>
+    </message>
+    <message>
+        <source>Reading the revisions...</source>
+        <translation>Die Revisionen werden gelesen …</translation>
+    </message>
+    <message>
+        <source>No history to show: %1</source>
+        <translation>Keine Historie zu zeigen: %1</translation>
+    </message>
+    <message>
+        <source>%1 has no revisions yet: each backup committed with drivedesk-cli plant backup --commit becomes one.</source>
+        <translation>%1 hat noch keine Revisionen: jede mit drivedesk-cli plant backup --commit eingetragene Sicherung wird eine.</translation>
+    </message>
+    <message>
+        <source>No revision changed the drive or parameter the filter names.</source>
+        <translation>Keine Revision hat den Umrichter oder Parameter geändert, den der Filter nennt.</translation>
+    </message>
+    <message>
+        <source>Revisions: %1, newest first.</source>
+        <translation>Revisionen: %1, die neueste zuerst.</translation>
+    </message>
+    <message>
+        <source>Select one or two revisions and a drive to compare.</source>
+        <translation>Eine oder zwei Revisionen und einen Umrichter zum Vergleichen wählen.</translation>
+    </message>
+    <message>
+        <source>Select one revision to restore.</source>
+        <translation>Eine Revision zum Wiederherstellen wählen.</translation>
+    </message>
+    <message>
+        <source>Reading the revision&apos;s files...</source>
+        <translation>Die Dateien der Revision werden gelesen …</translation>
+    </message>
+    <message>
+        <source>The revision&apos;s files could not be read: %1</source>
+        <translation>Die Dateien der Revision konnten nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>%1 goes to Download All: look at what each drive would get, then write.</source>
+        <translation>%1 geht an „Alle in die Umrichter laden“: ansehen, was jeder Umrichter bekäme, dann schreiben.</translation>
+    </message>
+    <message>
+        <source>%1 in the backup folder now</source>
+        <translation>%1 jetzt im Sicherungsordner</translation>
+    </message>
+    <message>
+        <source>%1 has no file there: %2</source>
+        <translation>%1 hat dort keine Datei: %2</translation>
+    </message>
+    <message>
+        <source>Reading %1 to compare it with %2...</source>
+        <translation>%1 wird gelesen, um ihn mit %2 zu vergleichen …</translation>
+    </message>
+    <message>
+        <source>%1 and %2 side by side in the compare window.</source>
+        <translation>%1 und %2 nebeneinander im Vergleichsfenster.</translation>
+    </message>
+    <message>
+        <source>%1 at %2 (%3)</source>
+        <translation>%1 in %2 (%3)</translation>
     </message>
 </context>
 <context>
@@ -4000,6 +4199,10 @@
     <message>
         <source>Progress</source>
         <translation>Fortschritt</translation>
+    </message>
+    <message>
+        <source>reading</source>
+        <translation>lese</translation>
     </message>
 </context>
 <context>
@@ -4398,11 +4601,11 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
     </message>
     <message>
         <source>Open Recording...</source>
-        <translation>Aufzeichnung öffnen...</translation>
+        <translation>Aufzeichnung öffnen …</translation>
     </message>
     <message>
         <source>Record to File...</source>
-        <translation>In Datei aufzeichnen...</translation>
+        <translation>In Datei aufzeichnen …</translation>
     </message>
     <message>
         <source>Read Offline Records</source>
@@ -4410,19 +4613,19 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
     </message>
     <message>
         <source>Export All as CSV...</source>
-        <translation>Alles als CSV exportieren...</translation>
+        <translation>Alles als CSV exportieren …</translation>
     </message>
     <message>
         <source>Export Visible Range as CSV...</source>
-        <translation>Sichtbaren Bereich als CSV exportieren...</translation>
+        <translation>Sichtbaren Bereich als CSV exportieren …</translation>
     </message>
     <message>
         <source>Export Chart as PNG...</source>
-        <translation>Diagramm als PNG exportieren...</translation>
+        <translation>Diagramm als PNG exportieren …</translation>
     </message>
     <message>
         <source>Export Chart as PDF...</source>
-        <translation>Diagramm als PDF exportieren...</translation>
+        <translation>Diagramm als PDF exportieren …</translation>
     </message>
     <message>
         <source>Trigger</source>
@@ -4545,7 +4748,7 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
     </message>
     <message>
         <source>Assigning the channels...</source>
-        <translation>Kanäle werden zugewiesen...</translation>
+        <translation>Kanäle werden zugewiesen …</translation>
     </message>
     <message>
         <source>The channels could not be assigned: %1</source>
@@ -4553,11 +4756,11 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
     </message>
     <message>
         <source>Recording...</source>
-        <translation>Aufzeichnung läuft...</translation>
+        <translation>Aufzeichnung läuft …</translation>
     </message>
     <message>
         <source>Triggered; recording the rest of the shot...</source>
-        <translation>Getriggert; der Rest des Schusses wird aufgezeichnet...</translation>
+        <translation>Getriggert; der Rest des Schusses wird aufgezeichnet …</translation>
     </message>
     <message>
         <source>%1 samples, %2 Hz (average %3 Hz), %4 lost, %5 failed</source>
@@ -4591,11 +4794,11 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
     </message>
     <message>
         <source>Waiting for the trigger...</source>
-        <translation>Warte auf den Trigger...</translation>
+        <translation>Warte auf den Trigger …</translation>
     </message>
     <message>
         <source>Reading the offline records...</source>
-        <translation>Offline-Aufzeichnung wird gelesen...</translation>
+        <translation>Offline-Aufzeichnung wird gelesen …</translation>
     </message>
     <message>
         <source>The connection went away.</source>
@@ -4617,7 +4820,7 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
     </message>
     <message>
         <source>Save Recording As...</source>
-        <translation>Aufzeichnung speichern unter...</translation>
+        <translation>Aufzeichnung speichern unter …</translation>
     </message>
     <message>
         <source>There is nothing recorded to save.</source>
@@ -4668,7 +4871,7 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
     </message>
     <message>
         <source>&amp;Save...</source>
-        <translation>&amp;Speichern...</translation>
+        <translation>&amp;Speichern …</translation>
     </message>
     <message>
         <source>The recording shown is not saved. A new recording replaces it.</source>
@@ -4683,16 +4886,12 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
         <translation>Die gezeigte Scope-Aufzeichnung ist nicht gespeichert. Beim Schließen von DriveDesk geht sie verloren.</translation>
     </message>
     <message>
-        <source>the connection went away</source>
-        <translation>die Verbindung ist weg</translation>
-    </message>
-    <message>
         <source>A math channel cannot be computed: %1</source>
         <translation>Ein Mathe-Kanal kann nicht berechnet werden: %1</translation>
     </message>
     <message>
         <source>Add Math Channel...</source>
-        <translation>Mathe-Kanal hinzufügen...</translation>
+        <translation>Mathe-Kanal hinzufügen …</translation>
     </message>
     <message>
         <source>Remove Math Channels</source>
@@ -4994,6 +5193,8 @@ dialog.
   --baud N|auto        baud rate; auto (the default on a serial line) finds the rate
                        the drive answers at
   --language en|de     language of the window and of the drive&apos;s texts
+  --journal PATH       the journal of the values written, instead of
+                       ~/.local/share/DriveDesk/journal.sqlite
 </source>
         <translation>Aufruf: drivedesk [--connect ZIEL | --open DATEI] [Optionen]
 
@@ -5007,7 +5208,13 @@ Verbindungsdialog.
   --baud N|auto        Baudrate; auto (die Vorgabe an einer seriellen Leitung) findet die
                        Baudrate, bei der der Umrichter antwortet
   --language en|de     Sprache des Fensters und der Texte des Umrichters
+  --journal PFAD       das Journal der geschriebenen Werte, statt
+                       ~/.local/share/DriveDesk/journal.sqlite
 </translation>
+    </message>
+    <message>
+        <source>--journal names a file: give a path</source>
+        <translation>--journal nennt eine Datei: einen Pfad angeben</translation>
     </message>
 </context>
 <context>
@@ -5603,6 +5810,18 @@ Verbindungsdialog.
     <message>
         <source>&apos;%1&apos; names no entry: give an entry&apos;s number (12) or a range (12..15)</source>
         <translation>„%1“ nennt keinen Eintrag: eine Eintragsnummer (12) oder einen Bereich (12..15) angeben</translation>
+    </message>
+    <message>
+        <source>the value before entry %1</source>
+        <translation>den Wert vor Eintrag %1</translation>
+    </message>
+    <message>
+        <source>the values before the entries</source>
+        <translation>die Werte vor den Einträgen</translation>
+    </message>
+    <message>
+        <source>the values before entries %1..%2</source>
+        <translation>die Werte vor den Einträgen %1..%2</translation>
     </message>
 </context>
 <context>

@@ -105,6 +105,10 @@
         <source>git cat-file: no object %1</source>
         <translation>git cat-file: no object %1</translation>
     </message>
+    <message>
+        <source>cannot make a temporary folder: %1</source>
+        <translation>cannot make a temporary folder: %1</translation>
+    </message>
 </context>
 <context>
     <name>ChosenValues</name>
@@ -129,10 +133,6 @@
     <message>
         <source>no revision</source>
         <translation>no revision</translation>
-    </message>
-    <message>
-        <source>cannot make a temporary folder: %1</source>
-        <translation>cannot make a temporary folder: %1</translation>
     </message>
     <message>
         <source>no drive saved: nothing committed</source>
@@ -1069,6 +1069,14 @@
     <message>
         <source>--no-journal downloads without it</source>
         <translation>--no-journal downloads without it</translation>
+    </message>
+    <message>
+        <source>scope channel assignment</source>
+        <translation>scope channel assignment</translation>
+    </message>
+    <message>
+        <source>--no-journal writes without it</source>
+        <translation>--no-journal writes without it</translation>
     </message>
 </context>
 <context>
@@ -2023,10 +2031,6 @@
         <translation>the values of %1</translation>
     </message>
     <message>
-        <source>the values chosen from %1</source>
-        <translation>the values chosen from %1</translation>
-    </message>
-    <message>
         <source>download of %1</source>
         <translation>download of %1</translation>
     </message>
@@ -2865,10 +2869,6 @@
         <translation>Nothing was written:
 %1</translation>
     </message>
-    <message>
-        <source>the values before %1</source>
-        <translation>the values before %1</translation>
-    </message>
 </context>
 <context>
     <name>DriveDesk::JournalTableModel</name>
@@ -3681,10 +3681,6 @@
         <translation>Reading the two drives to compare...</translation>
     </message>
     <message>
-        <source>reading</source>
-        <translation>reading</translation>
-    </message>
-    <message>
         <source>downloaded or already equal</source>
         <translation>downloaded or already equal</translation>
     </message>
@@ -3739,6 +3735,50 @@
         <source>plant download of %1</source>
         <translation>plant download of %1</translation>
     </message>
+    <message>
+        <source>History...</source>
+        <translation>History...</translation>
+    </message>
+    <message>
+        <source>The backup folder&apos;s revisions: what changed when, two side by side, and a revision restored</source>
+        <translation>The backup folder&apos;s revisions: what changed when, two side by side, and a revision restored</translation>
+    </message>
+    <message>
+        <source>plant download of %1 at revision %2</source>
+        <translation>plant download of %1 at revision %2</translation>
+    </message>
+    <message>
+        <source>A job is running on the plant; restore once it is done.</source>
+        <translation>A job is running on the plant; restore once it is done.</translation>
+    </message>
+    <message>
+        <source>Reading every drive to see what restoring %1 would write...</source>
+        <translation>Reading every drive to see what restoring %1 would write...</translation>
+    </message>
+    <message>
+        <source>Restore to %1: Report</source>
+        <translation>Restore to %1: Report</translation>
+    </message>
+    <message>
+        <source>Restore to %1: Last Look</source>
+        <translation>Restore to %1: Last Look</translation>
+    </message>
+    <message>
+        <source>A job is running on the plant; start again once it is done.</source>
+        <translation>A job is running on the plant; start again once it is done.</translation>
+    </message>
+    <message>
+        <source>A job is running on the plant; compare once it is done.</source>
+        <translation>A job is running on the plant; compare once it is done.</translation>
+    </message>
+    <message>
+        <source>The plant has no drive %1.</source>
+        <translation>The plant has no drive %1.</translation>
+    </message>
+    <message>
+        <source>%1 and %2 side by side in the compare window.</source>
+        <translation>%1 and %2 side by side in the compare window.</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::PlantFeature</name>
@@ -3785,6 +3825,165 @@
     <message>
         <source>Save New Plant</source>
         <translation>Save New Plant</translation>
+    </message>
+    <message>
+        <source>Plant Hist&amp;ory...</source>
+        <translation>Plant Hist&amp;ory...</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::PlantHistoryWindow</name>
+    <message>
+        <source>Plant History - DriveDesk</source>
+        <translation>Plant History - DriveDesk</translation>
+    </message>
+    <message>
+        <source>every drive</source>
+        <translation>every drive</translation>
+    </message>
+    <message>
+        <source>Only the revisions that changed this drive (cabinet-5)</source>
+        <translation>Only the revisions that changed this drive (cabinet-5)</translation>
+    </message>
+    <message>
+        <source>&amp;Drive:</source>
+        <translation>&amp;Drive:</translation>
+    </message>
+    <message>
+        <source>every parameter</source>
+        <translation>every parameter</translation>
+    </message>
+    <message>
+        <source>Only the revisions that changed this parameter (op.28)</source>
+        <translation>Only the revisions that changed this parameter (op.28)</translation>
+    </message>
+    <message>
+        <source>&amp;Parameter:</source>
+        <translation>&amp;Parameter:</translation>
+    </message>
+    <message>
+        <source>Re&amp;fresh</source>
+        <translation>Re&amp;fresh</translation>
+    </message>
+    <message>
+        <source>Read the backup folder&apos;s revisions again</source>
+        <translation>Read the backup folder&apos;s revisions again</translation>
+    </message>
+    <message>
+        <source>Revision</source>
+        <translation>Revision</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Time</translation>
+    </message>
+    <message>
+        <source>Author</source>
+        <translation>Author</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Message</translation>
+    </message>
+    <message>
+        <source>Changes</source>
+        <translation>Changes</translation>
+    </message>
+    <message>
+        <source>What the revision selected changed against the one before</source>
+        <translation>What the revision selected changed against the one before</translation>
+    </message>
+    <message>
+        <source>Drive to co&amp;mpare:</source>
+        <translation>Drive to co&amp;mpare:</translation>
+    </message>
+    <message>
+        <source>&amp;Side by Side</source>
+        <translation>&amp;Side by Side</translation>
+    </message>
+    <message>
+        <source>The drive&apos;s file at the two revisions selected, or at the one selected and in the backup folder now, side by side in the compare window</source>
+        <translation>The drive&apos;s file at the two revisions selected, or at the one selected and in the backup folder now, side by side in the compare window</translation>
+    </message>
+    <message>
+        <source>Against the Dri&amp;ve</source>
+        <translation>Against the Dri&amp;ve</translation>
+    </message>
+    <message>
+        <source>The drive&apos;s file at the revision selected against the drive itself, read afresh, side by side in the compare window</source>
+        <translation>The drive&apos;s file at the revision selected against the drive itself, read afresh, side by side in the compare window</translation>
+    </message>
+    <message>
+        <source>&amp;Restore to This Revision...</source>
+        <translation>&amp;Restore to This Revision...</translation>
+    </message>
+    <message>
+        <source>Download the revision&apos;s files to the drives, after Download All&apos;s last look at what each would get</source>
+        <translation>Download the revision&apos;s files to the drives, after Download All&apos;s last look at what each would get</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1&lt;/b&gt; &amp;mdash; revisions of the backups in %2</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt; &amp;mdash; revisions of the backups in %2</translation>
+    </message>
+    <message>
+        <source>Reading the revisions...</source>
+        <translation>Reading the revisions...</translation>
+    </message>
+    <message>
+        <source>No history to show: %1</source>
+        <translation>No history to show: %1</translation>
+    </message>
+    <message>
+        <source>%1 has no revisions yet: each backup committed with drivedesk-cli plant backup --commit becomes one.</source>
+        <translation>%1 has no revisions yet: each backup committed with drivedesk-cli plant backup --commit becomes one.</translation>
+    </message>
+    <message>
+        <source>No revision changed the drive or parameter the filter names.</source>
+        <translation>No revision changed the drive or parameter the filter names.</translation>
+    </message>
+    <message>
+        <source>Revisions: %1, newest first.</source>
+        <translation>Revisions: %1, newest first.</translation>
+    </message>
+    <message>
+        <source>Select one or two revisions and a drive to compare.</source>
+        <translation>Select one or two revisions and a drive to compare.</translation>
+    </message>
+    <message>
+        <source>Select one revision to restore.</source>
+        <translation>Select one revision to restore.</translation>
+    </message>
+    <message>
+        <source>Reading the revision&apos;s files...</source>
+        <translation>Reading the revision&apos;s files...</translation>
+    </message>
+    <message>
+        <source>The revision&apos;s files could not be read: %1</source>
+        <translation>The revision&apos;s files could not be read: %1</translation>
+    </message>
+    <message>
+        <source>%1 goes to Download All: look at what each drive would get, then write.</source>
+        <translation>%1 goes to Download All: look at what each drive would get, then write.</translation>
+    </message>
+    <message>
+        <source>%1 in the backup folder now</source>
+        <translation>%1 in the backup folder now</translation>
+    </message>
+    <message>
+        <source>%1 has no file there: %2</source>
+        <translation>%1 has no file there: %2</translation>
+    </message>
+    <message>
+        <source>Reading %1 to compare it with %2...</source>
+        <translation>Reading %1 to compare it with %2...</translation>
+    </message>
+    <message>
+        <source>%1 and %2 side by side in the compare window.</source>
+        <translation>%1 and %2 side by side in the compare window.</translation>
+    </message>
+    <message>
+        <source>%1 at %2 (%3)</source>
+        <translation>%1 at %2 (%3)</translation>
     </message>
 </context>
 <context>
@@ -4000,6 +4199,10 @@
     <message>
         <source>Progress</source>
         <translation>Progress</translation>
+    </message>
+    <message>
+        <source>reading</source>
+        <translation>reading</translation>
     </message>
 </context>
 <context>
@@ -4683,10 +4886,6 @@ Home: the whole recording; End: follow the newest samples; A: fit the values; Sp
         <translation>The scope recording shown is not saved. Closing DriveDesk loses it.</translation>
     </message>
     <message>
-        <source>the connection went away</source>
-        <translation>the connection went away</translation>
-    </message>
-    <message>
         <source>A math channel cannot be computed: %1</source>
         <translation>A math channel cannot be computed: %1</translation>
     </message>
@@ -4994,6 +5193,8 @@ dialog.
   --baud N|auto        baud rate; auto (the default on a serial line) finds the rate
                        the drive answers at
   --language en|de     language of the window and of the drive&apos;s texts
+  --journal PATH       the journal of the values written, instead of
+                       ~/.local/share/DriveDesk/journal.sqlite
 </source>
         <translation>Usage: drivedesk [--connect TARGET | --open FILE] [options]
 
@@ -5007,7 +5208,13 @@ dialog.
   --baud N|auto        baud rate; auto (the default on a serial line) finds the rate
                        the drive answers at
   --language en|de     language of the window and of the drive&apos;s texts
+  --journal PATH       the journal of the values written, instead of
+                       ~/.local/share/DriveDesk/journal.sqlite
 </translation>
+    </message>
+    <message>
+        <source>--journal names a file: give a path</source>
+        <translation>--journal names a file: give a path</translation>
     </message>
 </context>
 <context>
@@ -5603,6 +5810,18 @@ dialog.
     <message>
         <source>&apos;%1&apos; names no entry: give an entry&apos;s number (12) or a range (12..15)</source>
         <translation>&apos;%1&apos; names no entry: give an entry&apos;s number (12) or a range (12..15)</translation>
+    </message>
+    <message>
+        <source>the value before entry %1</source>
+        <translation>the value before entry %1</translation>
+    </message>
+    <message>
+        <source>the values before the entries</source>
+        <translation>the values before the entries</translation>
+    </message>
+    <message>
+        <source>the values before entries %1..%2</source>
+        <translation>the values before entries %1..%2</translation>
     </message>
 </context>
 <context>
