@@ -107,8 +107,10 @@ ConnectionSettings serialTo(const QString &link, Protocol protocol, qint32 baud)
 }
 
 // DriveDesk's cold scan (metadata refreshed into a fresh cache folder), timed from the scan's
-// start to its result; the connection is made before the clock starts.
-ScanRun driveDeskScan(const ConnectionSettings &settings)
+// start to its result; the connection is made before the clock starts. With `requests`, what
+// it sent is recorded there: the client then describes every telegram, as it does for the
+// window's telegram monitor, so the timed runs leave it out, as the command line does.
+ScanRun driveDeskScan(const ConnectionSettings &settings, bool recordRequests)
 {
     ScanRun run;
     QTemporaryDir cache;
@@ -120,10 +122,12 @@ ScanRun driveDeskScan(const ConnectionSettings &settings)
         std::fprintf(stderr, "cannot connect: %s\n", qPrintable(reason));
         failed = true;
     });
-    QObject::connect(&client, &DriveClient::traffic, [&](const TrafficRecord &record) {
-        if (record.kind == TrafficRecord::Kind::Sent)
-            run.requests.append(record.bytes);
-    });
+    if (recordRequests) {
+        QObject::connect(&client, &DriveClient::traffic, [&](const TrafficRecord &record) {
+            if (record.kind == TrafficRecord::Kind::Sent)
+                run.requests.append(record.bytes);
+        });
+    }
     client.connectToDrive();
     runUntil([&] { return connected || failed; });
     if (failed)
@@ -218,17 +222,17 @@ int benchmark(Protocol protocol, qint32 baud, int rounds)
         return 1;
     }
     const ConnectionSettings settings = serialTo(drive.link(), protocol, baud);
+    // The requests of a scan, once, untimed: the blocking client sends the same.
+    const QList<QByteArray> requests = driveDeskScan(settings, true).requests;
+    if (requests.isEmpty())
+        return 1;
     Series quietDriveDesk, quietBlocking, loadedDriveDesk, loadedBlocking;
     const auto round = [&](Series &driveDesk, Series &blocking) {
-        const ScanRun run = driveDeskScan(settings);
-        driveDesk.add(run.seconds);
-        if (run.seconds >= 0)
-            blocking.add(blockingScan(settings, run.requests));
-        return run.requests.size();
+        driveDesk.add(driveDeskScan(settings, false).seconds);
+        blocking.add(blockingScan(settings, requests));
     };
-    qsizetype requests = 0;
     for (int i = 0; i < rounds; ++i) {
-        requests = round(quietDriveDesk, quietBlocking);
+        round(quietDriveDesk, quietBlocking);
         const BusyCore load;
         round(loadedDriveDesk, loadedBlocking);
         std::fprintf(stderr, "%s round %d of %d done\n", qPrintable(protocolName(protocol)), i + 1,
@@ -236,7 +240,7 @@ int benchmark(Protocol protocol, qint32 baud, int rounds)
     }
     const char *name = qPrintable(protocolName(protocol));
     std::printf("%s cold scan at %d baud, %lld requests, median (min-max):\n", name, baud,
-                qlonglong(requests));
+                qlonglong(requests.size()));
     std::printf("  quiet    DriveDesk %s   blocking client %s\n",
                 qPrintable(quietDriveDesk.spread()), qPrintable(quietBlocking.spread()));
     std::printf("  one core busy  DriveDesk %s   blocking client %s\n",
