@@ -20,6 +20,8 @@
 #include <QThread>
 
 #include <algorithm>
+
+#include <sys/resource.h>
 #include <cstdio>
 
 using namespace DriveDesk;
@@ -29,13 +31,25 @@ namespace {
 constexpr int kLatencyUs = 1000;
 constexpr int kAnswerTimeoutMs = 2000;
 
+// Processor time of this program so far (every thread), in seconds: what a client costs the
+// machine beside the time it takes.
+double processorSeconds()
+{
+    rusage usage {};
+    getrusage(RUSAGE_SELF, &usage);
+    const auto seconds = [](const timeval &t) { return double(t.tv_sec) + t.tv_usec / 1e6; };
+    return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
 // The one event loop of this program, run from main's straight-line flow until `done`.
 template<typename Done>
 void runUntil(Done done)
 {
+    // Without a time limit: processEvents(flags, maxTime) ignores WaitForMoreEvents and spins,
+    // and a benchmark that burns a core measures itself on a loaded machine.
     QEventLoop loop;
     while (!done())
-        loop.processEvents(QEventLoop::WaitForMoreEvents, 50);
+        loop.processEvents(QEventLoop::WaitForMoreEvents);
 }
 
 // drivedesk-sim serving one paced drive over a pseudo-terminal linked in a folder of its own.
@@ -91,8 +105,13 @@ private:
     QProcess m_process;
 };
 
+struct Timed {
+    double seconds = -1; // < 0: the run failed
+    double processor = 0; // processor seconds the program used meanwhile
+};
+
 struct ScanRun {
-    double seconds = -1; // < 0: the scan failed
+    Timed timed;
     QList<QByteArray> requests;
 };
 
@@ -138,21 +157,22 @@ ScanRun driveDeskScan(const ConnectionSettings &settings, bool recordRequests)
     options.cacheDirectory = cache.path();
     QElapsedTimer timer;
     timer.start();
+    const double processor = processorSeconds();
     QFutureWatcher<DriveDescription> watcher;
     watcher.setFuture(client.scan(options));
     runUntil([&] { return watcher.isFinished(); });
-    const double seconds = timer.nsecsElapsed() / 1e9;
+    const Timed timed{timer.nsecsElapsed() / 1e9, processorSeconds() - processor};
     const DriveDescription description = watcher.future().result();
     if (!description.incompleteReason.isEmpty()) {
         std::fprintf(stderr, "incomplete scan: %s\n", qPrintable(description.incompleteReason));
         return run;
     }
-    run.seconds = seconds;
+    run.timed = timed;
     return run;
 }
 
 // The same requests, one at a time: write one, block until its answer is read whole.
-double blockingScan(const ConnectionSettings &settings, const QList<QByteArray> &requests)
+Timed blockingScan(const ConnectionSettings &settings, const QList<QByteArray> &requests)
 {
     QSerialPort port(settings.device);
     port.setBaudRate(settings.baudRate);
@@ -162,12 +182,13 @@ double blockingScan(const ConnectionSettings &settings, const QList<QByteArray> 
     if (!port.open(QIODevice::ReadWrite)) {
         std::fprintf(stderr, "cannot open %s: %s\n", qPrintable(settings.device),
                      qPrintable(port.errorString()));
-        return -1;
+        return {};
     }
     const std::unique_ptr<ProtocolCodec> codec = makeCodec(settings.protocol);
     const std::unique_ptr<FrameDecoder> decoder = codec->makeDecoder(Role::Operator);
     QElapsedTimer timer;
     timer.start();
+    const double processor = processorSeconds();
     for (const QByteArray &request : requests) {
         port.write(request);
         port.waitForBytesWritten(kAnswerTimeoutMs);
@@ -175,42 +196,46 @@ double blockingScan(const ConnectionSettings &settings, const QList<QByteArray> 
         while (!(answer = decoder->next())) {
             if (!port.waitForReadyRead(kAnswerTimeoutMs)) {
                 std::fprintf(stderr, "blocking client: no answer in %d ms\n", kAnswerTimeoutMs);
-                return -1;
+                return {};
             }
             decoder->feed(port.readAll());
         }
         if (!std::holds_alternative<Telegram>(*answer)) {
             std::fprintf(stderr, "blocking client: an answer did not decode\n");
-            return -1;
+            return {};
         }
     }
-    return timer.nsecsElapsed() / 1e9;
+    return Timed{timer.nsecsElapsed() / 1e9, processorSeconds() - processor};
 }
 
 struct Series {
     QList<double> seconds;
-    void add(double s)
+    QList<double> processor;
+    void add(const Timed &run)
     {
-        if (s >= 0)
-            seconds.append(s);
+        if (run.seconds < 0)
+            return;
+        seconds.append(run.seconds);
+        processor.append(run.processor);
     }
-    double median() const
+    static double median(QList<double> values)
     {
-        QList<double> sorted = seconds;
-        std::sort(sorted.begin(), sorted.end());
-        const qsizetype n = sorted.size();
-        return n == 0 ? 0 : n % 2 ? sorted[n / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2;
+        std::sort(values.begin(), values.end());
+        const qsizetype n = values.size();
+        return n == 0 ? 0 : n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
     }
+    double median() const { return median(seconds); }
     QString spread() const
     {
         if (seconds.isEmpty())
             return QStringLiteral("no run");
         const auto [low, high] = std::minmax_element(seconds.begin(), seconds.end());
-        return QStringLiteral("%1 s (%2-%3, %4 runs)")
+        return QStringLiteral("%1 s (%2-%3, %4 runs; processor %5 s)")
             .arg(median(), 0, 'f', 2)
             .arg(*low, 0, 'f', 2)
             .arg(*high, 0, 'f', 2)
-            .arg(seconds.size());
+            .arg(seconds.size())
+            .arg(median(processor), 0, 'f', 2);
     }
 };
 
@@ -228,7 +253,7 @@ int benchmark(Protocol protocol, qint32 baud, int rounds)
         return 1;
     Series quietDriveDesk, quietBlocking, loadedDriveDesk, loadedBlocking;
     const auto round = [&](Series &driveDesk, Series &blocking) {
-        driveDesk.add(driveDeskScan(settings, false).seconds);
+        driveDesk.add(driveDeskScan(settings, false).timed);
         blocking.add(blockingScan(settings, requests));
     };
     for (int i = 0; i < rounds; ++i) {
