@@ -4,8 +4,8 @@
 // or answer only with garbage (a wrong baud rate or character format on a device server, a
 // gateway that cuts or repeats telegrams, a stream from something that is not a drive). Each
 // request would still spend every attempt, and a job of thousands of requests would run for
-// many minutes. So once kUnansweredRequestsToStop requests in a row were given up without a
-// valid answer (one matched to its request, even a refusal), the drive has stopped answering:
+// many minutes. So once kUnansweredRequestsToStop requests in a row (and at least
+// kUnansweredAttemptsToStop attempts) were given up without a valid answer (one matched to its request, even a refusal), the drive has stopped answering:
 // everything queued fails at once (Reply::Status::DriveSilent), and from then on one request at
 // a time goes out, once, as the check whether the drive is back; the others fail at once. The
 // first valid answer ends it. The reason says what came instead: nothing, or the kind of
@@ -72,6 +72,7 @@ void ClientWorker::noteAnswered()
     m_sinceLastAnswer.restart();
     m_sentSinceAnswer = 0;
     m_unansweredInARow = 0;
+    m_unansweredAttempts = 0;
     m_givenUpInARow = 0;
     m_runGarbage.fill(0);
     if (m_driveStopped) {
@@ -155,6 +156,7 @@ void ClientWorker::resetSilence()
 {
     m_sentSinceAnswer = 0;
     m_unansweredInARow = 0;
+    m_unansweredAttempts = 0;
     m_givenUpInARow = 0;
     m_driveStopped = false;
     m_runGarbage.fill(0);
@@ -225,6 +227,7 @@ void ClientWorker::noteUnanswered(PendingRequest &request, Reply::Status *status
     const bool tooManyGivenUp = ++m_givenUpInARow >= kGivenUpRequestsToStop;
     if (lineWithErrors && !tooManyGivenUp && !m_driveStopped) {
         m_unansweredInARow = 0;
+        m_unansweredAttempts = 0;
         m_runGarbage.fill(0);
         return;
     }
@@ -233,7 +236,10 @@ void ClientWorker::noteUnanswered(PendingRequest &request, Reply::Status *status
     got = request.laterAttemptsGot;
     ++got[int(request.firstAttemptGot.value_or(Garbage::Nothing))];
     ++m_runGarbage[int(std::max_element(got.begin(), got.end()) - got.begin())];
-    if (!m_driveStopped && ++m_unansweredInARow < kUnansweredRequestsToStop && !tooManyGivenUp)
+    m_unansweredAttempts += request.attempts;
+    const bool enoughUnanswered = ++m_unansweredInARow >= kUnansweredRequestsToStop
+        && m_unansweredAttempts >= kUnansweredAttemptsToStop;
+    if (!m_driveStopped && !enoughUnanswered && !tooManyGivenUp)
         return;
     *status = Reply::Status::DriveSilent;
     *detail = silenceText();

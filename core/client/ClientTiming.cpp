@@ -86,7 +86,7 @@ int silenceLimitMs(const ConnectionSettings &settings, const ClientOptions &opti
     const int attempts = 1 + std::max(options.retries, 0);
     const int quietLine = settings.protocol == Protocol::Hsp5 ? quietLineMs(settings) : 0;
     const int timeout = answerTimeoutMs(settings, options);
-    return timeout + kUnansweredRequestsToStop * attempts * (timeout + quietLine);
+    return timeout + unansweredRequestsToStop(attempts) * attempts * (timeout + quietLine);
 }
 
 int garbageLimitMs(const ConnectionSettings &settings, const ClientOptions &options)
@@ -94,7 +94,7 @@ int garbageLimitMs(const ConnectionSettings &settings, const ClientOptions &opti
     const int attempts = 1 + std::max(options.retries, 0);
     const int busyLine = settings.protocol == Protocol::Hsp5 ? 2 * quietLineMs(settings) : 0;
     const int timeout = answerTimeoutMs(settings, options);
-    return timeout + kUnansweredRequestsToStop * attempts * (timeout + busyLine);
+    return timeout + unansweredRequestsToStop(attempts) * attempts * (timeout + busyLine);
 }
 
 int idleSilenceLimitMs(const ConnectionSettings &settings, const ClientOptions &options)

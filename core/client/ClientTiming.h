@@ -2,6 +2,8 @@
 
 #include "client/DriveClient.h"
 
+#include <algorithm>
+
 namespace DriveDesk {
 
 // How long the client waits for an answer, from the options or from the line: the time the
@@ -21,6 +23,17 @@ int quietLineMs(const ConnectionSettings &settings);
 // A drive has stopped answering once this many requests in a row were given up after every
 // attempt without a valid answer: nothing at all came, or only garbage (ClientSilence.cpp).
 constexpr int kUnansweredRequestsToStop = 4;
+// ... and together they spent at least this many attempts. A client that does not try again
+// (retries 0) would otherwise stop after one broken HSP5 answer on a busy line: the decoder
+// finds its step again only after a quiet line, and the polls on the wire behind the broken
+// answer are lost with it.
+constexpr int kUnansweredAttemptsToStop = 2 * kUnansweredRequestsToStop;
+// The requests in a row, each spending `attempts`, that stop a drive: both rules above.
+constexpr int unansweredRequestsToStop(int attempts)
+{
+    const int forAttempts = (kUnansweredAttemptsToStop + attempts - 1) / std::max(attempts, 1);
+    return std::max(kUnansweredRequestsToStop, forAttempts);
+}
 // A request whose attempts got a wrong checksum and garbage of another kind looks like a line
 // with errors, and does not count towards kUnansweredRequestsToStop. But a line with errors still
 // lets valid answers through: this many requests given up in a row, whatever they got, is a
@@ -30,7 +43,7 @@ constexpr int kGivenUpRequestsToStop = 2 * kUnansweredRequestsToStop;
 
 // The longest a client takes to decide that a drive stopped answering, from the moment it
 // falls silent: up to the requests on the wire then timing out once, and then
-// kUnansweredRequestsToStop requests each spending every attempt (an answer timeout each, and
+// unansweredRequestsToStop() requests each spending every attempt (an answer timeout each, and
 // HSP5's quiet line before each attempt while it recovers). HSP5 at 38400 baud: 2.0 s.
 int silenceLimitMs(const ConnectionSettings &settings, const ClientOptions &options);
 

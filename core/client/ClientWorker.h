@@ -209,6 +209,7 @@ private:
     int m_sentSinceAnswer = 0;
     qint64 m_firstUnansweredMs = 0;
     int m_unansweredInARow = 0;
+    int m_unansweredAttempts = 0; // the attempts those requests spent
     int m_givenUpInARow = 0; // requests given up since the last valid answer, whatever they got
     bool m_driveStopped = false;
     // The run's requests by what they got instead of answers.
