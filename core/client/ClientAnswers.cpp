@@ -82,13 +82,13 @@ void ClientWorker::onAnswer(const Telegram &answer)
     PendingRequest *request = awaitingAnswer(answer.operatorInvoke);
     const QString mismatch
         = request ? replyMismatch(m_settings.protocol, request->wire, answer) : QString();
-    // The monitor shows an answer with the request it answers, named as that request names it.
-    if (request && mismatch.isEmpty()) {
-        const Telegram completed = completeAnswer(request->wire, answer);
-        record(TrafficRecord::Kind::Received, m_codec->encode(answer), describe(completed),
-               &completed, &request->wire);
-    } else {
-        record(TrafficRecord::Kind::Received, m_codec->encode(answer), describe(answer), &answer);
+    if (tracing()) {
+        // The monitor shows an answer with the request it answers, named as that request names
+        // it.
+        const bool matched = request && mismatch.isEmpty();
+        const Telegram shown = matched ? completeAnswer(request->wire, answer) : answer;
+        record(TrafficRecord::Kind::Received, m_codec->encode(answer), describe(shown), &shown,
+               matched ? &request->wire : nullptr);
     }
     if (!request || !mismatch.isEmpty())
         noteGarbage(unmatchedAnswer(answer));

@@ -263,12 +263,14 @@ void ClientWorker::transmit(PendingRequest &request)
     request.answersBefore = m_answersMatched;
     m_sinceLastSend.restart();
     m_busyLineSince.invalidate();
-    QString meaning = describe(request.wire);
-    if (request.wire.driveAddress >= 0)
-        meaning = tr("to drive %1: %2").arg(request.wire.driveAddress).arg(meaning);
-    record(TrafficRecord::Kind::Sent, bytes, meaning, &request.wire);
     noteSent(request);
     m_link->send(bytes);
+    if (tracing()) {
+        QString meaning = describe(request.wire);
+        if (request.wire.driveAddress >= 0)
+            meaning = tr("to drive %1: %2").arg(request.wire.driveAddress).arg(meaning);
+        record(TrafficRecord::Kind::Sent, bytes, meaning, &request.wire);
+    }
 
     if (!expectsAnswer(request)) {
         Request owned = takeInFlight(request.ticket);
@@ -336,6 +338,8 @@ void ClientWorker::record(TrafficRecord::Kind kind, const QByteArray &bytes, con
 {
     if (kind == TrafficRecord::Kind::Error)
         ++m_lineErrors;
+    if (!tracing())
+        return;
     TrafficRecord entry;
     entry.kind = kind;
     entry.msecsSinceEpoch = QDateTime::currentMSecsSinceEpoch();

@@ -12,6 +12,7 @@
 #include <QPromise>
 
 #include <array>
+#include <functional>
 #include <deque>
 #include <memory>
 #include <optional>
@@ -50,6 +51,11 @@ public:
         return m_codec->supports(service, access);
     }
     quint64 lineErrors() const override { return m_lineErrors; }
+    // Asked before each record whether anyone listens to traffic() (it is called in this
+    // worker's thread). Without a listener the records are not made: describing every telegram
+    // costs line time between an answer and the next request, and each record would wake the
+    // listener's thread for nothing. Unset: always recorded.
+    void setTrafficWanted(std::function<bool()> wanted) { m_trafficWanted = std::move(wanted); }
 
     // The facade's requests: the result goes to the promise; cancelling its future drops the
     // request from the queue, or has its answer ignored when it is already on the wire.
@@ -172,6 +178,7 @@ private:
     qint64 quietLineWaitMs();
     // Puts a request back into the queue in the order it was submitted.
     void requeue(Request request);
+    bool tracing() const { return !m_trafficWanted || m_trafficWanted(); }
     void record(TrafficRecord::Kind kind, const QByteArray &bytes, const QString &meaning,
                 const Telegram *telegram = nullptr, const Telegram *request = nullptr);
     // An attempt that got no answer in time, and whether it is asked again.
@@ -201,6 +208,7 @@ private:
     quint64 m_answersMatched = 0;
     quint64 m_receptions = 0; // chunks of bytes received from the drive
     quint64 m_lineErrors = 0; // error notes recorded (RequestSink::lineErrors)
+    std::function<bool()> m_trafficWanted;
     bool m_driveSilent = false;
     // Silence: telegrams sent since the last valid answer, when the first of them went out (on
     // m_clock), the requests given up in a row without a valid answer, and whether the drive

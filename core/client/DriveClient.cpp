@@ -4,6 +4,7 @@
 #include "ScanJob.h"
 #include "ValueRequests.h"
 
+#include <QMetaMethod>
 #include <QThread>
 
 namespace DriveDesk {
@@ -34,6 +35,12 @@ DriveClient::DriveClient(ConnectionSettings settings, LinkMaker makeLink, Client
     m_thread = new QThread; // not a child: it must outlive everything the worker does
     m_thread->setObjectName(QStringLiteral("DriveDesk client: %1").arg(m_settings.displayName()));
     m_worker = new ClientWorker(m_settings, m_options, m_makeLink);
+    // isSignalConnected() takes the signals' lock: safe from the worker's thread, and this
+    // object outlives the worker (the destructor joins its thread).
+    m_worker->setTrafficWanted(
+        [this, traffic = QMetaMethod::fromSignal(&DriveClient::traffic)] {
+            return isSignalConnected(traffic);
+        });
     m_worker->moveToThread(m_thread);
     connect(m_thread, &QThread::started, m_worker, &ClientWorker::init);
     connect(m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
