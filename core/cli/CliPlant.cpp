@@ -208,7 +208,8 @@ void CliPlant::onFinished()
     case PlantRequest::Action::Backup:
         printBackup(drives);
         if (m_plant.commit && !m_interrupted)
-            committed = commitPlantBackup(m_plant, m_run->plant(), drives, m_out, &commitError);
+            committed = commitAndPrintPlantBackup(m_plant, m_run->plant(), drives, m_out,
+                                                  &commitError);
         break;
     case PlantRequest::Action::Verify:
         if (m_request.format == CliRequest::Format::Json)

@@ -21,11 +21,6 @@ class CliPlantHistoryText
     Q_DECLARE_TR_FUNCTIONS(CliPlantHistory)
 };
 
-QString shortId(const QString &id)
-{
-    return id.left(12);
-}
-
 QJsonObject changeJson(const DriveChange &change, const ParameterDifference &difference)
 {
     QJsonObject row{{QStringLiteral("drive"), change.drive},
@@ -148,7 +143,7 @@ int printPlantHistory(const CliRequest &request, QTextStream &out, QString *erro
     }
     for (const PlantRevision &revision : *revisions) {
         out << QStringLiteral("%1  %2  %3  %4")
-                   .arg(shortId(revision.id),
+                   .arg(PlantRevision::shortId(revision.id),
                         revision.time.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")),
                         revision.author, revision.subject)
             << '\n';
@@ -162,39 +157,27 @@ int printPlantHistory(const CliRequest &request, QTextStream &out, QString *erro
     return 0;
 }
 
-bool commitPlantBackup(const PlantRequest &request, const Plant &plant,
-                       const QList<PlantDrive> &drives, QTextStream &out, QString *error)
+bool commitAndPrintPlantBackup(const PlantRequest &request, const Plant &plant,
+                               const QList<PlantDrive> &drives, QTextStream &out, QString *error)
 {
-    BackupCommit backup;
-    backup.plantName = plant.name;
-    backup.message = request.message;
-    for (const PlantDrive &drive : drives) {
-        if (drive.outcome == PlantDrive::Outcome::Saved)
-            backup.saved << QFileInfo(drive.file).fileName();
-    }
-    // A backup that saved nothing is no revision of the machine, whatever the plant file says.
-    if (backup.saved.isEmpty()) {
+    const auto committed
+        = commitPlantBackup(request.directory, plant, drives, request.message, error);
+    if (!committed)
+        return false;
+    if (!committed->savedAny) {
         out << CliPlantHistoryText::tr("no drive saved: nothing committed") << '\n';
         return true;
     }
-    auto repository = BackupRepository::open(request.directory, true, error);
-    if (!repository)
-        return false;
-    backup.plant = &plant;
-    const auto outcome = backup.commit(*repository, error);
-    if (!outcome)
-        return false;
-    if (!outcome->committed) {
+    if (!committed->outcome.committed) {
         out << CliPlantHistoryText::tr("no setting changed since the last commit: nothing "
                                        "committed")
             << '\n';
         return true;
     }
     out << CliPlantHistoryText::tr("committed %1: %2")
-               .arg(shortId(outcome->id), backup.commitMessage(outcome->changes)
-                                              .section(QLatin1Char('\n'), 0, 0))
+               .arg(PlantRevision::shortId(committed->outcome.id), committed->subject)
         << '\n';
-    for (const DriveChange &change : outcome->changes) {
+    for (const DriveChange &change : committed->outcome.changes) {
         for (const QString &line : change.lines())
             out << QStringLiteral("  ") << line << '\n';
     }

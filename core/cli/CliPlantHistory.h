@@ -34,7 +34,7 @@ int printPlantHistory(const CliRequest &request, QTextStream &out, QString *erro
 // After `plant backup --commit`: the files saved, and those of drives `plant` (as the run left
 // it) no longer has, committed with the changes since the last commit, which are printed; no
 // commit where no setting changed, and that said. False and *error when git fails.
-bool commitPlantBackup(const PlantRequest &request, const Plant &plant,
-                       const QList<PlantDrive> &drives, QTextStream &out, QString *error);
+bool commitAndPrintPlantBackup(const PlantRequest &request, const Plant &plant,
+                               const QList<PlantDrive> &drives, QTextStream &out, QString *error);
 
 } // namespace DriveDesk

@@ -176,4 +176,33 @@ QStringList filesOfNoDrive(const Plant &plant, const QStringList &files)
     return result;
 }
 
+std::optional<PlantBackupCommitted> commitPlantBackup(const QString &directory,
+                                                      const Plant &plant,
+                                                      const QList<PlantDrive> &drives,
+                                                      const QString &message, QString *error)
+{
+    BackupCommit backup;
+    backup.plantName = plant.name;
+    backup.message = message;
+    for (const PlantDrive &drive : drives) {
+        if (drive.outcome == PlantDrive::Outcome::Saved)
+            backup.saved << QFileInfo(drive.file).fileName();
+    }
+    PlantBackupCommitted committed;
+    if (backup.saved.isEmpty())
+        return committed;
+    committed.savedAny = true;
+    auto repository = BackupRepository::open(directory, true, error);
+    if (!repository)
+        return std::nullopt;
+    backup.plant = &plant;
+    const auto outcome = backup.commit(*repository, error);
+    if (!outcome)
+        return std::nullopt;
+    committed.outcome = *outcome;
+    if (outcome->committed)
+        committed.subject = backup.commitMessage(outcome->changes).section(QLatin1Char('\n'), 0, 0);
+    return committed;
+}
+
 } // namespace DriveDesk

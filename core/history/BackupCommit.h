@@ -12,6 +12,7 @@
 namespace DriveDesk {
 
 struct Plant;
+struct PlantDrive;
 
 // One plant backup made a commit of its folder's repository (`plant backup --commit`).
 struct BackupCommit
@@ -47,6 +48,24 @@ public:
     // line a change.
     QString commitMessage(const QList<DriveChange> &changes) const;
 };
+
+// A plant backup's run committed to its folder's repository, as `plant backup --commit` and
+// the plant view's Back Up All with "Commit to History" do it.
+struct PlantBackupCommitted
+{
+    bool savedAny = false; // false: the run saved no drive, and nothing was committed
+    BackupCommit::Outcome outcome;
+    QString subject; // the commit message's first line, where one was made
+};
+
+// The files the run saved and those of drives `plant` (as the run left it) no longer has,
+// committed with the changes since the last commit; `directory` becomes a repository if it is
+// not one. A run that saved nothing is no revision of the machine, whatever it was asked.
+// Nothing and *error, naming what git said, when git fails.
+std::optional<PlantBackupCommitted> commitPlantBackup(const QString &directory,
+                                                      const Plant &plant,
+                                                      const QList<PlantDrive> &drives,
+                                                      const QString &message, QString *error);
 
 // The files of a plant's backup folder that belong to no drive of `plant`: its links as a run
 // left them (a DIN link searched to the end holds the addresses found). A file of a link whose

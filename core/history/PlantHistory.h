@@ -20,6 +20,10 @@ struct PlantRevision
     QString email;
     QString subject; // the message's first line
     QList<DriveChange> changes; // computed from the files, not read from the message
+
+    // A commit id as the user reads it: 12 characters, short enough to read, long enough to
+    // stay unique in a plant's lifetime of backups (git accepts it for --at).
+    static QString shortId(const QString &id) { return id.left(12); }
 };
 
 // Which revisions and changes a history shows: one drive ("cabinet-5"), one parameter

@@ -15,6 +15,7 @@
 #include <QAction>
 #include <QComboBox>
 #include <QFile>
+#include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPushButton>
@@ -337,6 +338,51 @@ private slots:
         QCOMPARE(history->revisionList()->columnWidth(1), 222);
         QCOMPARE(history->size(), QSize(777, 444));
         history->close();
+    }
+
+    void backUpAllCommitsWhenAsked()
+    {
+        const QString folder = m_dock->backupFolder();
+        const auto revisions = [&folder] {
+            return git(folder, {QStringLiteral("rev-list"), QStringLiteral("--count"),
+                                QStringLiteral("HEAD")})
+                .trimmed()
+                .toInt();
+        };
+        const auto said = [this] {
+            return m_dock->findChild<QLabel *>(QStringLiteral("plantStatus"))->text();
+        };
+        const auto backUp = [this] {
+            return PlantTest::runJob(*m_dock, m_dock->backupAction())
+                   && QTest::qWaitFor([this] { return !m_dock->isCommitting(); }, kJobWaitMs);
+        };
+        const int before = revisions();
+        QVERIFY(before >= 2);
+        // Unchecked (as a first start has it): a backup is no revision.
+        QVERIFY(!m_dock->commitAction()->isChecked());
+        QVERIFY(backUp());
+        QCOMPARE(revisions(), before);
+
+        const std::optional<qint32> now = fixedSpeedOf5();
+        QVERIFY(now);
+        QCOMPARE(fixedSpeedOf5(*now + 3), *now + 3);
+        m_dock->commitAction()->setChecked(true);
+        QVERIFY(backUp());
+        QCOMPARE(revisions(), before + 1);
+        QVERIFY2(said().contains(QStringLiteral("Committed "))
+                     && said().endsWith(QStringLiteral(": Line 3: backup, cabinet-5 changed")),
+                 qPrintable(said()));
+        const QString subject
+            = git(folder, {QStringLiteral("log"), QStringLiteral("-1"), QStringLiteral("--format=%B")});
+        QVERIFY2(subject.contains(QStringLiteral("cabinet-5 op.20 set 0: ")), qPrintable(subject));
+
+        // Nothing changed: no revision, and the view says so.
+        QVERIFY(backUp());
+        QCOMPARE(revisions(), before + 1);
+        QVERIFY2(said().endsWith(
+                     QStringLiteral("No setting changed since the last revision: nothing committed.")),
+                 qPrintable(said()));
+        m_dock->commitAction()->setChecked(false);
     }
 };
 

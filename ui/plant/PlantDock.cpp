@@ -141,6 +141,7 @@ void PlantDock::createActions()
     m_backupAction = add(tr("Back Up All"), QStringLiteral("plantBackupAction"),
                          tr("Read every drive whole and save it to its file in the backup folder"),
                          themedIcon("document-save-all", QStyle::SP_DialogSaveButton));
+    createCommitAction();
     m_verifyAction = add(tr("Verify All"), QStringLiteral("plantVerifyAction"),
                          tr("Check every drive's settings against its file in the backup folder"),
                          themedIcon("dialog-ok", QStyle::SP_DialogApplyButton));
@@ -342,7 +343,7 @@ void PlantDock::updateActions()
     const bool plant = !m_path.isEmpty() && !m_state->plant().links.isEmpty();
     const bool idle = m_run.isNull();
     m_findAction->setEnabled(plant && idle);
-    m_backupAction->setEnabled(plant && idle);
+    m_backupAction->setEnabled(plant && idle && !m_committing);
     m_verifyAction->setEnabled(plant && idle);
     m_downloadAction->setEnabled(plant && idle);
     m_stopAction->setEnabled(!idle);

@@ -67,6 +67,11 @@ public:
     QAction *stopAction() const { return m_stopAction; }
     QAction *compareAction() const { return m_compareAction; }
     QAction *historyAction() const { return m_historyAction; }
+    // Checked: each Back Up All becomes a revision of the backup folder's repository, as
+    // `plant backup --commit` makes it. Remembered.
+    QAction *commitAction() const { return m_commitAction; }
+    // A finished backup is being committed (git runs in the thread pool).
+    bool isCommitting() const { return m_committing; }
     PlantHistoryWindow *historyWindow() const;
 
     // The drive at `index` in the window's editor: its session connects to the drive.
@@ -108,6 +113,10 @@ private:
     // The drives read afresh into files of their own, then to the compare window.
     void readToCompare(const QList<QModelIndex> &drives);
     void compareRead(const QList<PlantDrive> &drives);
+    // PlantDockCommit.cpp: after Back Up All, with Commit to History checked.
+    void createCommitAction();
+    // `plant` as the run left it (a DIN link searched holds the addresses found).
+    void commitBackup(const Plant &plant, const QList<PlantDrive> &drives, const QString &summary);
     // A drive that failed on the line the editor holds: its reason says to disconnect first.
     PlantDrive explained(PlantDrive drive) const;
     void showMessage(const QString &text);
@@ -133,6 +142,7 @@ private:
     QString m_revision;
     QPointer<PlantHistoryWindow> m_history;
     QPointer<PlantReportDialog> m_report;
+    bool m_committing = false;
 
     QAction *m_findAction = nullptr;
     QAction *m_backupAction = nullptr;
@@ -141,6 +151,7 @@ private:
     QAction *m_stopAction = nullptr;
     QAction *m_compareAction = nullptr;
     QAction *m_historyAction = nullptr;
+    QAction *m_commitAction = nullptr;
     QAction *m_addLinkAction = nullptr;
     QAction *m_folderAction = nullptr;
 };

@@ -106,9 +106,14 @@ void PlantDock::onJobFinished()
     case Job::Find:
         findFinished(*run);
         break;
-    case Job::Backup:
-        showMessage(PlantDrive::summary(drives, PlantDrive::outcomeText(PlantDrive::Outcome::Saved)));
+    case Job::Backup: {
+        const QString summary
+            = PlantDrive::summary(drives, PlantDrive::outcomeText(PlantDrive::Outcome::Saved));
+        showMessage(summary);
+        if (m_commitAction->isChecked())
+            commitBackup(run->plant(), drives, summary);
         break;
+    }
     case Job::Verify:
         showMessage(PlantDrive::summary(drives, PlantDrive::outcomeText(PlantDrive::Outcome::Equal)));
         break;

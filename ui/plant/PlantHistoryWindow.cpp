@@ -27,11 +27,6 @@ const QString kSettingsGroup = QStringLiteral("plantHistory");
 const QString kTimeFormat = QStringLiteral("yyyy-MM-dd HH:mm:ss"); // as `plant history` prints
 enum Column { IdColumn, TimeColumn, AuthorColumn, MessageColumn, ChangesColumn };
 
-QString shortId(const QString &id)
-{
-    return id.left(12);
-}
-
 } // namespace
 
 PlantHistoryWindow::PlantHistoryWindow(QWidget *parent)
@@ -216,8 +211,9 @@ void PlantHistoryWindow::showRevisions(const HistoryReading &reading)
         for (const DriveChange &change : revision.changes)
             lines += change.lines().size();
         auto *item = new QTreeWidgetItem(
-            m_revisions, {shortId(revision.id), revision.time.toLocalTime().toString(kTimeFormat),
-                          revision.author, revision.subject, QString::number(lines)});
+            m_revisions, {PlantRevision::shortId(revision.id),
+                          revision.time.toLocalTime().toString(kTimeFormat), revision.author,
+                          revision.subject, QString::number(lines)});
         item->setData(IdColumn, Qt::UserRole, revision.id);
         item->setToolTip(AuthorColumn, revision.email);
         item->setToolTip(MessageColumn, revision.subject);
@@ -308,9 +304,10 @@ void PlantHistoryWindow::onExtracted()
     if (!extracted.error.isEmpty())
         return showMessage(tr("The revision's files could not be read: %1").arg(extracted.error));
     if (m_purpose == Purpose::Restore) {
+        const QString id = PlantRevision::shortId(m_extractedIds.constFirst());
         showMessage(tr("%1 goes to Download All: look at what each drive would get, then "
-                       "write.").arg(shortId(m_extractedIds.constFirst())));
-        emit restoreRequested(extracted.folders.constFirst(), shortId(m_extractedIds.constFirst()));
+                       "write.").arg(id));
+        emit restoreRequested(extracted.folders.constFirst(), id);
         return;
     }
     const QString file = m_extractedDrive + QStringLiteral(".json");
@@ -341,7 +338,7 @@ QString PlantHistoryWindow::revisionName(const QString &id) const
 {
     const PlantRevision *shown = revision(id);
     return tr("%1 at %2 (%3)")
-        .arg(m_extractedDrive, shortId(id),
+        .arg(m_extractedDrive, PlantRevision::shortId(id),
              shown ? shown->time.toLocalTime().toString(kTimeFormat) : QString());
 }
 

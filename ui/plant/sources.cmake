@@ -2,7 +2,7 @@
 # up, verify, download) with progress per drive; a drive opens in the editor, two are compared;
 # the backup folder's history (core/history) with a revision compared or restored.
 target_sources(drivedesk_ui PRIVATE
-    plant/PlantDock.cpp plant/PlantDockJobs.cpp plant/PlantDock.h
+    plant/PlantDock.cpp plant/PlantDockCommit.cpp plant/PlantDockJobs.cpp plant/PlantDock.h
     plant/PlantFeature.cpp plant/PlantFeature.h
     plant/PlantHistoryReading.cpp plant/PlantHistoryReading.h
     plant/PlantHistoryWindow.cpp plant/PlantHistoryWindow.h
