@@ -6,10 +6,13 @@
 #include "cli/CliSpectrum.h"
 #include "cli/CommandLineUsage.h"
 #include "link/ConnectionOptions.h"
+#include "scope/ScopePreset.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QRegularExpression>
+
+#include <algorithm>
 
 namespace DriveDesk {
 
@@ -19,7 +22,7 @@ namespace {
 bool parseScopeOptions(const QCommandLineParser &parser, CliRequest &request, QString *error)
 {
     const bool scope = request.command == CliRequest::Command::Scope;
-    for (const char *name : {"channels", "duration", "rate", "csv", "offline"}) {
+    for (const char *name : {"channels", "duration", "rate", "csv", "offline", "preset"}) {
         if (!scope && parser.isSet(QLatin1String(name))) {
             *error = QStringLiteral("--%1 belongs to scope").arg(QLatin1String(name));
             return false;
@@ -34,7 +37,7 @@ bool parseScopeOptions(const QCommandLineParser &parser, CliRequest &request, QS
     }
     request.offline = parser.isSet(QStringLiteral("offline"));
     if (request.offline) {
-        for (const char *name : {"channels", "duration", "rate"}) {
+        for (const char *name : {"channels", "duration", "rate", "preset"}) {
             if (parser.isSet(QLatin1String(name))) {
                 *error = QStringLiteral("--offline reads what the drive recorded: --%1 does not "
                                         "apply").arg(QLatin1String(name));
@@ -49,6 +52,24 @@ bool parseScopeOptions(const QCommandLineParser &parser, CliRequest &request, QS
             *error = QStringLiteral("--channels takes one to four parameters, e.g. ru.3,ru.9");
             return false;
         }
+    }
+    // A preset gives the channels and the rate limit that --channels and --rate do not; its
+    // trigger and looks are the window's. Read before anything reaches the drive.
+    if (parser.isSet(QStringLiteral("preset"))) {
+        const std::optional<ScopePreset> preset
+            = ScopePresetFile::load(parser.value(QStringLiteral("preset")), error);
+        if (!preset)
+            return false;
+        const bool anySource
+            = std::any_of(preset->channels.begin(), preset->channels.end(),
+                          [](const ScopePresetChannel &c) { return c.source.has_value(); });
+        if (!parser.isSet(QStringLiteral("channels")) && anySource) {
+            // An empty entry: the channel as the drive has it.
+            for (const ScopePresetChannel &channel : preset->channels)
+                request.channels << (channel.source ? channel.source->text() : QString());
+        }
+        if (!parser.isSet(QStringLiteral("rate")))
+            request.rateHz = preset->rateLimitHz;
     }
     if (parser.isSet(QStringLiteral("duration"))) {
         const auto ms = parseDuration(parser.value(QStringLiteral("duration")), error);
@@ -140,6 +161,7 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     const QCommandLineOption rate(QStringLiteral("rate"), {}, QStringLiteral("hz"));
     const QCommandLineOption csv(QStringLiteral("csv"), {}, QStringLiteral("file"));
     const QCommandLineOption offline(QStringLiteral("offline"));
+    const QCommandLineOption preset(QStringLiteral("preset"), {}, QStringLiteral("file"));
     const QCommandLineOption version(QStringLiteral("version"));
     const QCommandLineOption update(QStringLiteral("update")); // plant find
     // spectrum
@@ -148,8 +170,8 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     const QCommandLineOption to(QStringLiteral("to"), {}, QStringLiteral("ms"));
     const QCommandLineOption peaks(QStringLiteral("peaks"), {}, QStringLiteral("n"));
     parser.addOptions({help, timeout, quiet, format, values, set, sets, raw, noCache, password,
-                       dryRun, force, channels, duration, rate, csv, offline, version, update,
-                       channel, from, to, peaks});
+                       dryRun, force, channels, duration, rate, csv, offline, preset, version,
+                       update, channel, from, to, peaks});
     addJournalOptions(parser);
     addPlantHistoryOptions(parser);
     *helpText = cliUsage();
@@ -376,7 +398,7 @@ bool refuseDriveOptions(const QCommandLineParser &parser, const ConnectionOption
     }
     for (const char *name :
          { "values", "set", "sets", "raw", "password", "channels", "duration", "rate", "csv",
-           "offline", "dry-run", "force", "update", "no-cache", "timeout" }) {
+           "offline", "preset", "dry-run", "force", "update", "no-cache", "timeout" }) {
         if (parser.isSet(QLatin1String(name))) {
             *error = QStringLiteral("--%1 does not belong to %2").arg(QLatin1String(name), command);
             return false;
