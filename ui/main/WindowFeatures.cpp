@@ -43,9 +43,10 @@ QList<WindowFeature *> makeWindowFeatures(WindowFrame &frame)
     features << editing << access;
     // The download journals its writes as the edits do, by the one setting.
     download->setJournaled([editing] { return editing->journalsWrites(); });
+    auto *monitor = new MonitorFeature(frame);
     auto *scope = new ScopeFeature(frame);
     features << QList<WindowFeature *>{
-        new MonitorFeature(frame),
+        monitor,
         scope,
         download,
         compare,
