@@ -150,6 +150,10 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(file), kWaitMs);
         QVERIFY2(status(*dock).contains(QStringLiteral("Preset 'Speed step' saved")),
                  qPrintable(status(*dock)));
+        // Made for this kind of drive: another kind's list leaves it out.
+        const std::optional<ScopePreset> saved = ScopePresetFile::load(file);
+        QVERIFY(saved && !saved->driveKind.isEmpty());
+        QVERIFY(ScopePresetLibrary().list(QStringLiteral("another kind")).isEmpty());
 
         // Everything changed, then the preset loaded again.
         chooseSource(*dock, 0, kOutputVoltage);
