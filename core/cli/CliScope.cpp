@@ -1,7 +1,6 @@
 // drivedesk-cli scope: records the drive's scope data for a while and writes it as CSV.
 #include "CliRunner.h"
 
-#include "parameters/ParameterId.h"
 #include "scope/ScopeCsv.h"
 #include "scope/ScopeRecording.h"
 #include "session/EditJournal.h"
@@ -30,21 +29,18 @@ void CliRunner::runScope()
                 choices[channel] = ChannelAssignment{ChannelAssignment::kOff, 0x01};
                 if (qsizetype(channel) >= m_request.channels.size())
                     continue;
-                // "op.11@2": the source read from set 2.
-                const QStringList parts = m_request.channels.at(qsizetype(channel)).split(QLatin1Char('@'));
-                QString error;
-                const auto address = ParameterId::parse(parts.first(), drive, &error);
-                if (!address)
-                    return fail(2, error);
-                choices[channel]->source = *address;
-                if (parts.size() > 1) {
-                    bool ok = false;
-                    const int set = parts.at(1).toInt(&ok);
-                    if (parts.size() > 2 || !ok || set < 0 || set >= kParameterSets)
-                        return fail(2, tr("'%1': the set after @ is 0..7, e.g. op.11@2")
-                                           .arg(m_request.channels.at(qsizetype(channel))));
-                    choices[channel]->setMask = quint8(1u << set);
+                const QString &text = m_request.channels.at(qsizetype(channel));
+                // A preset's channel left as the drive has it.
+                if (text.isEmpty()) {
+                    choices[channel].reset();
+                    continue;
                 }
+                // "op.11@2": the source read from set 2.
+                QString error;
+                const std::optional<ScopeSourceText> source = ScopeSourceText::parse(text, &error);
+                choices[channel] = source ? scopeSourceOn(*source, drive, &error) : std::nullopt;
+                if (!choices[channel])
+                    return fail(2, error);
             }
         }
         m_state->setDescription(drive);

@@ -3,6 +3,7 @@
 #include "cli/CliJournal.h"
 #include "cli/CliPlant.h"
 #include "cli/CliPlantHistory.h"
+#include "cli/CliScopeOptions.h"
 #include "cli/CliSpectrum.h"
 #include "cli/CommandLineUsage.h"
 #include "link/ConnectionOptions.h"
@@ -12,62 +13,6 @@
 #include <QRegularExpression>
 
 namespace DriveDesk {
-
-namespace {
-
-// The scope's options: they belong to scope alone, which needs --csv.
-bool parseScopeOptions(const QCommandLineParser &parser, CliRequest &request, QString *error)
-{
-    const bool scope = request.command == CliRequest::Command::Scope;
-    for (const char *name : {"channels", "duration", "rate", "csv", "offline"}) {
-        if (!scope && parser.isSet(QLatin1String(name))) {
-            *error = QStringLiteral("--%1 belongs to scope").arg(QLatin1String(name));
-            return false;
-        }
-    }
-    if (!scope)
-        return true;
-    request.csvFile = parser.value(QStringLiteral("csv"));
-    if (request.csvFile.isEmpty()) {
-        *error = QStringLiteral("scope needs --csv FILE: where to write what it records");
-        return false;
-    }
-    request.offline = parser.isSet(QStringLiteral("offline"));
-    if (request.offline) {
-        for (const char *name : {"channels", "duration", "rate"}) {
-            if (parser.isSet(QLatin1String(name))) {
-                *error = QStringLiteral("--offline reads what the drive recorded: --%1 does not "
-                                        "apply").arg(QLatin1String(name));
-                return false;
-            }
-        }
-    }
-    if (parser.isSet(QStringLiteral("channels"))) {
-        for (const QString &id : parser.value(QStringLiteral("channels")).split(QLatin1Char(',')))
-            request.channels << id.trimmed();
-        if (request.channels.size() > 4 || request.channels.contains(QString())) {
-            *error = QStringLiteral("--channels takes one to four parameters, e.g. ru.3,ru.9");
-            return false;
-        }
-    }
-    if (parser.isSet(QStringLiteral("duration"))) {
-        const auto ms = parseDuration(parser.value(QStringLiteral("duration")), error);
-        if (!ms)
-            return false;
-        request.durationMs = *ms;
-    }
-    if (parser.isSet(QStringLiteral("rate"))) {
-        bool ok = false;
-        request.rateHz = parser.value(QStringLiteral("rate")).toDouble(&ok);
-        if (!ok || request.rateHz <= 0 || request.rateHz > 100000) {
-            *error = QStringLiteral("--rate takes polls a second, more than 0 and at most 100000");
-            return false;
-        }
-    }
-    return true;
-}
-
-} // namespace
 
 std::optional<quint8> parseSetList(const QString &text, QString *error)
 {
@@ -140,6 +85,7 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     const QCommandLineOption rate(QStringLiteral("rate"), {}, QStringLiteral("hz"));
     const QCommandLineOption csv(QStringLiteral("csv"), {}, QStringLiteral("file"));
     const QCommandLineOption offline(QStringLiteral("offline"));
+    const QCommandLineOption preset(QStringLiteral("preset"), {}, QStringLiteral("file"));
     const QCommandLineOption version(QStringLiteral("version"));
     const QCommandLineOption update(QStringLiteral("update")); // plant find
     // spectrum
@@ -148,8 +94,8 @@ std::optional<CliRequest> parseCommandLine(const QStringList &arguments, QString
     const QCommandLineOption to(QStringLiteral("to"), {}, QStringLiteral("ms"));
     const QCommandLineOption peaks(QStringLiteral("peaks"), {}, QStringLiteral("n"));
     parser.addOptions({help, timeout, quiet, format, values, set, sets, raw, noCache, password,
-                       dryRun, force, channels, duration, rate, csv, offline, version, update,
-                       channel, from, to, peaks});
+                       dryRun, force, channels, duration, rate, csv, offline, preset, version,
+                       update, channel, from, to, peaks});
     addJournalOptions(parser);
     addPlantHistoryOptions(parser);
     *helpText = cliUsage();
@@ -376,7 +322,7 @@ bool refuseDriveOptions(const QCommandLineParser &parser, const ConnectionOption
     }
     for (const char *name :
          { "values", "set", "sets", "raw", "password", "channels", "duration", "rate", "csv",
-           "offline", "dry-run", "force", "update", "no-cache", "timeout" }) {
+           "offline", "preset", "dry-run", "force", "update", "no-cache", "timeout" }) {
         if (parser.isSet(QLatin1String(name))) {
             *error = QStringLiteral("--%1 does not belong to %2").arg(QLatin1String(name), command);
             return false;

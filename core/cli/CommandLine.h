@@ -66,8 +66,9 @@ struct CliRequest {
     bool quiet = false;       // no progress on stderr
     bool useCache = true;     // metadata of a known kind of drive from the metadata cache
     std::optional<qint32> password; // entered (ud.01) before the command
-    // scope: the sources for channels 1..4 in order (empty: as the drive has them assigned),
-    // how long to record, an optional rate limit, and the CSV to write
+    // scope: the sources for channels 1..4 in order (empty: as the drive has them assigned; an
+    // empty entry, from a --preset: that channel as the drive has it), how long to record, an
+    // optional rate limit, and the CSV to write
     QStringList channels;
     qint64 durationMs = 10000;
     double rateHz = 0;

@@ -4,6 +4,32 @@
 
 namespace DriveDesk {
 
+namespace {
+
+// "0x0203", "0203h"
+const QRegularExpression &hexPattern()
+{
+    static const QRegularExpression pattern(
+        QStringLiteral("^(?:0[xX]([0-9A-Fa-f]+)|([0-9A-Fa-f]+)[hH])$"));
+    return pattern;
+}
+
+// "ru.03", or without the dot ("ru03") where the group id is letters only.
+const QRegularExpression &idPattern()
+{
+    static const QRegularExpression pattern(
+        QStringLiteral("^(?:([^.\\s]+)\\.|([A-Za-z]+))([0-9]+)$"));
+    return pattern;
+}
+
+} // namespace
+
+bool ParameterId::isWellFormed(const QString &text)
+{
+    const QString trimmed = text.trimmed();
+    return hexPattern().match(trimmed).hasMatch() || idPattern().match(trimmed).hasMatch();
+}
+
 QList<GroupAddress> ParameterId::groupsOf(const DriveDescription &drive)
 {
     QList<GroupAddress> groups;
@@ -71,9 +97,7 @@ std::optional<quint16> ParameterId::parse(const QString &input, const QList<Grou
     if (text.isEmpty())
         return fail(tr("no parameter given"));
 
-    static const QRegularExpression hexPattern(
-        QStringLiteral("^(?:0[xX]([0-9A-Fa-f]+)|([0-9A-Fa-f]+)[hH])$"));
-    const QRegularExpressionMatch hex = hexPattern.match(text);
+    const QRegularExpressionMatch hex = hexPattern().match(text);
     if (hex.hasMatch()) {
         QString digits = hex.captured(1).isEmpty() ? hex.captured(2) : hex.captured(1);
         while (digits.size() > 1 && digits.startsWith(QLatin1Char('0')))
@@ -84,10 +108,7 @@ std::optional<quint16> ParameterId::parse(const QString &input, const QList<Grou
         return quint16(address);
     }
 
-    // "ru.03", or without the dot ("ru03") where the group id is letters only.
-    static const QRegularExpression idPattern(
-        QStringLiteral("^(?:([^.\\s]+)\\.|([A-Za-z]+))([0-9]+)$"));
-    const QRegularExpressionMatch id = idPattern.match(text);
+    const QRegularExpressionMatch id = idPattern().match(text);
     if (!id.hasMatch()) {
         return fail(tr("'%1' is not a parameter id: write it as group.number (ru.03, ru03) or "
                        "as a hexadecimal address (0203h, 0x0203)")

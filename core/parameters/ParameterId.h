@@ -33,6 +33,9 @@ public:
                                         QString *error = nullptr);
     static std::optional<quint16> parse(const QString &text, const DriveDescription &drive,
                                         QString *error = nullptr);
+    // Whether `text` has the form parse() takes, whatever groups a drive has: what a file
+    // naming parameters for drives not yet seen can check.
+    static bool isWellFormed(const QString &text);
 
     // The id messages and the parameter table name a parameter by: "op.11", or "0203h".
     static QString format(quint16 address, const GroupAddress &group);

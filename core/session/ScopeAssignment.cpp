@@ -92,4 +92,25 @@ ScopeChannels scopeChannels(const DriveDescription &drive, const ScopeAssignment
     return channels;
 }
 
+std::optional<ChannelAssignment> scopeSourceOn(const ScopeSourceText &source,
+                                               const DriveDescription &drive, QString *error)
+{
+    if (source.isOff())
+        return ChannelAssignment{ChannelAssignment::kOff, 0x01};
+    const std::optional<quint16> address = ParameterId::parse(source.id, drive, error);
+    if (!address)
+        return std::nullopt;
+    return ChannelAssignment{*address, quint8(1u << source.set)};
+}
+
+ScopeSourceText scopeSourceText(const ChannelAssignment &assignment, const DriveDescription &drive)
+{
+    if (assignment.source == ChannelAssignment::kOff || assignment.source < 0)
+        return {};
+    int set = 0;
+    while (set < kParameterSets - 1 && !(assignment.setMask & (1u << set)))
+        ++set;
+    return {ParameterId::format(quint16(assignment.source), drive), set};
+}
+
 } // namespace DriveDesk

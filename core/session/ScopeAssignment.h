@@ -2,6 +2,7 @@
 
 #include "parameters/DriveDescription.h"
 #include "scope/ScopeChannel.h"
+#include "scope/ScopePreset.h"
 
 #include <QList>
 
@@ -47,5 +48,14 @@ bool fitsNarrowChannel(const ParameterDescription &parameter);
 // assignment names a parameter the scan found, the bare address where it names another, raw
 // ("Channel 2") where the assignment is not known.
 ScopeChannels scopeChannels(const DriveDescription &drive, const ScopeAssignment &assignment);
+
+// A source as a user writes it ("ru.03", "op.11@2", "off") on this drive: the bus address and
+// set mask to assign; nothing, and why, where the drive has no such group or number. Whether
+// the drive permits it as process data is planScopeChannels()'s to say.
+std::optional<ChannelAssignment> scopeSourceOn(const ScopeSourceText &source,
+                                               const DriveDescription &drive,
+                                               QString *error = nullptr);
+// The other way: how a user writes an assignment ("op.11@2"; the lowest set of a mask).
+ScopeSourceText scopeSourceText(const ChannelAssignment &assignment, const DriveDescription &drive);
 
 } // namespace DriveDesk

@@ -21,6 +21,37 @@ QStringList csvLines(const QString &path)
     return lines;
 }
 
+// A scope preset as the window saves it: channel 1 on `first`, 2 off, 3 and 4 as the drive
+// has them, at most `rateHz` polls a second.
+QByteArray presetJson(const QString &first, int rateHz)
+{
+    return QStringLiteral(R"({
+    "channels": [
+        {"color": "#0072b2", "ownAxis": false, "source": "%1", "visible": true},
+        {"ownAxis": false, "source": "off", "visible": true},
+        {"ownAxis": false, "source": null, "visible": true},
+        {"ownAxis": false, "source": null, "visible": false}
+    ],
+    "driveKind": "",
+    "format": "drivedesk-scope-preset",
+    "name": "DC link",
+    "rateLimitHz": %2,
+    "rollSeconds": 10,
+    "trigger": {"channel": 1, "edge": "rising", "level": 0, "preTrigger": 0.2, "shotMs": 1000},
+    "version": 1
+}
+)").arg(first).arg(rateHz).toUtf8();
+}
+
+QString writePreset(const QTemporaryDir &dir, const QByteArray &json)
+{
+    const QString path = dir.filePath(QStringLiteral("preset.json"));
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(json) != json.size())
+        return {};
+    return path;
+}
+
 } // namespace
 
 // drivedesk-cli scope against the simulated drive: channels chosen by id, the CSV a user opens
@@ -103,6 +134,10 @@ private slots:
         QTest::newRow("offline with channels")
             << QStringList{QStringLiteral("--offline"), QStringLiteral("--channels"),
                            QStringLiteral("ru.3")}
+            << QStringLiteral("--offline");
+        QTest::newRow("offline with a preset")
+            << QStringList{QStringLiteral("--offline"), QStringLiteral("--preset"),
+                           QStringLiteral("preset.json")}
             << QStringLiteral("--offline");
         QTest::newRow("set out of range")
             << QStringList{QStringLiteral("--channels"), QStringLiteral("op.11@9")}
@@ -232,6 +267,75 @@ private slots:
         QCOMPARE(process.exitCode(), 0);
         QVERIFY(csvLines(csv).size() > 2);
         QVERIFY(QString::fromUtf8(process.readAllStandardOutput()).contains(QStringLiteral("achieved")));
+    }
+
+    // The channels and the rate limit of a preset saved in the window.
+    void recordsWithAPreset()
+    {
+        QTemporaryDir dir;
+        const QString preset = writePreset(dir, presetJson(QStringLiteral("ru.18"), 40));
+        const QString csv = dir.filePath(QStringLiteral("preset.csv"));
+        const Run run = sim({QStringLiteral("scope"), QStringLiteral("--preset"), preset,
+                             QStringLiteral("--duration"), QStringLiteral("1s"),
+                             QStringLiteral("--csv"), csv});
+        QVERIFY2(run.exitCode == 0, qPrintable(explain(run)));
+        const QStringList lines = csvLines(csv);
+        QCOMPARE(lines.first(), QStringLiteral("Time [ms],ru.18 DC link voltage [V]"));
+        QVERIFY2(lines.size() - 1 <= 42, qPrintable(QString::number(lines.size())));
+        QVERIFY(lines.size() - 1 >= 10);
+
+        // --channels and --rate given win over the preset's.
+        const QString overridden = dir.filePath(QStringLiteral("overridden.csv"));
+        const Run both = sim({QStringLiteral("scope"), QStringLiteral("--preset"), preset,
+                              QStringLiteral("--channels"), QStringLiteral("ru.9,op.11"),
+                              QStringLiteral("--rate"), QStringLiteral("400"),
+                              QStringLiteral("--duration"), QStringLiteral("500ms"),
+                              QStringLiteral("--csv"), overridden});
+        QVERIFY2(both.exitCode == 0, qPrintable(explain(both)));
+        const QStringList bothLines = csvLines(overridden);
+        QCOMPARE(bothLines.first(), QStringLiteral("Time [ms],ru.09 Output voltage [V],"
+                                                   "op.11 Maximum speed forward [1/min]"));
+        QVERIFY2(bothLines.size() - 1 > 42, qPrintable(QString::number(bothLines.size())));
+    }
+
+    // A bad preset is refused before the drive is reached: the port below has no drive.
+    void aBadPresetIsRefusedBeforeTheDriveIsReached_data()
+    {
+        QTest::addColumn<QByteArray>("json");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("not a parameter") << presetJson(QStringLiteral("speed"), 0)
+                                         << QStringLiteral("channel 1's source: 'speed' is not a "
+                                                           "parameter id");
+        QTest::newRow("not JSON") << QByteArray("{\"channels\": [") << QStringLiteral("not JSON");
+        QTest::newRow("newer") << presetJson(QStringLiteral("ru.18"), 0)
+                                      .replace("\"version\": 1", "\"version\": 7")
+                               << QStringLiteral("newer format");
+    }
+
+    void aBadPresetIsRefusedBeforeTheDriveIsReached()
+    {
+        QFETCH(QByteArray, json);
+        QFETCH(QString, message);
+        QTemporaryDir dir;
+        const QString preset = writePreset(dir, json);
+        const QString csv = dir.filePath(QStringLiteral("never.csv"));
+        const Run run = cli({QStringLiteral("--connect"), QStringLiteral("tcp:127.0.0.1:9"),
+                             QStringLiteral("--timeout"), QStringLiteral("200"),
+                             QStringLiteral("scope"), QStringLiteral("--preset"), preset,
+                             QStringLiteral("--csv"), csv});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.contains(QStringLiteral("preset file '%1'").arg(preset)),
+                 qPrintable(explain(run)));
+        QVERIFY2(run.err.contains(message), qPrintable(explain(run)));
+        QVERIFY(!QFile::exists(csv));
+
+        // A source this drive has no group for: the drive's to say, exit 2, no file.
+        const QString unknown = writePreset(dir, presetJson(QStringLiteral("zz.3"), 0));
+        const Run drive = sim({QStringLiteral("scope"), QStringLiteral("--preset"), unknown,
+                               QStringLiteral("--csv"), csv});
+        QCOMPARE(drive.exitCode, 2);
+        QVERIFY2(drive.err.contains(QStringLiteral("zz")), qPrintable(explain(drive)));
+        QVERIFY(!QFile::exists(csv));
     }
 };
 

@@ -11,3 +11,8 @@ drivedesk_add_test(NAME tst_scopedock LABELS gui
 drivedesk_add_test(NAME tst_scopeanalysis LABELS gui
     SOURCES gui/tst_scopeanalysis.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui
     drivedesk_translations)
+# Scope presets in the dock: a set-up saved and loaded back, a source the drive lacks said, a
+# preset kept beside the plant open.
+drivedesk_add_test(NAME tst_scopepresets LABELS gui
+    SOURCES gui/tst_scopepresets.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui
+    drivedesk_translations)

@@ -25,3 +25,6 @@ drivedesk_add_test(NAME tst_scopemath LABELS unit
 drivedesk_add_test(NAME tst_scopespectrum LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopespectrum.cpp
             ${CMAKE_CURRENT_LIST_DIR}/ScopeTestRecording.h LIBS drivedesk_scope)
+# Scope presets: a set-up saved and loaded again, bad files refused, where they are listed.
+drivedesk_add_test(NAME tst_scopepreset LABELS unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopepreset.cpp LIBS drivedesk_scope)

@@ -10,6 +10,7 @@
 #include "monitor/MonitorFeature.h"
 #include "plant/PlantDock.h"
 #include "plant/PlantFeature.h"
+#include "scope/ScopeDock.h"
 #include "scope/ScopeFeature.h"
 #include "transfer/DownloadFeature.h"
 #include "transfer/ExportFeature.h"
@@ -42,9 +43,11 @@ QList<WindowFeature *> makeWindowFeatures(WindowFrame &frame)
     features << editing << access;
     // The download journals its writes as the edits do, by the one setting.
     download->setJournaled([editing] { return editing->journalsWrites(); });
+    auto *monitor = new MonitorFeature(frame);
+    auto *scope = new ScopeFeature(frame);
     features << QList<WindowFeature *>{
-        new MonitorFeature(frame),
-        new ScopeFeature(frame),
+        monitor,
+        scope,
         download,
         compare,
         new ExportFeature(frame),
@@ -60,6 +63,10 @@ QList<WindowFeature *> makeWindowFeatures(WindowFrame &frame)
                          window->compare();
                      });
     plant->dock()->setJournaled([editing] { return editing->journalsWrites(); });
+    // A plant's scope presets are kept beside its file, and listed first.
+    scope->dock()->setPlantFile(plant->dock()->plantPath());
+    QObject::connect(plant->dock(), &PlantDock::plantOpened, scope->dock(),
+                     &ScopeDock::setPlantFile);
     features << plant;
     auto *journal = new JournalFeature(frame);
     // Journal entries reverted reach the drive as the compare window's chosen values do.

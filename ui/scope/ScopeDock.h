@@ -1,6 +1,7 @@
 #pragma once
 
 #include "parameters/DriveDescription.h"
+#include "scope/ScopePreset.h"
 #include "scope/ScopeTrigger.h"
 #include "session/ScopeAssignment.h"
 #include "session/ScopeRecorder.h"
@@ -15,6 +16,7 @@ class QAction;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
+class QMenu;
 class QProgressBar;
 class QSpinBox;
 class QToolBar;
@@ -68,6 +70,20 @@ public:
     bool exportCsv(const QString &path, bool visibleOnly, QString *error = nullptr);
 
     void saveSettings() const;
+
+    // Presets (ScopeDockPresets.cpp). The plant file open in the window: its presets are kept
+    // beside it; empty: none.
+    void setPlantFile(const QString &path);
+    // The set-up shown, as a preset named `name`.
+    ScopePreset currentPreset(const QString &name) const;
+    // Saves the set-up shown for this kind of drive (ScopePresetLibrary), its file's path in
+    // `path`; false with the reason.
+    bool savePreset(const QString &name, QString *path, QString *error = nullptr);
+    // Shows a preset's sources (written to the drive at Record, as the panel's), looks,
+    // trigger, roll and rate limit. Returns what could not be applied, a channel a line (a
+    // source this drive does not have or permit, its channel then off); the rest is applied.
+    QStringList applyPreset(const ScopePreset &preset);
+
     // The connection changed state: what can be done now.
     void updateActions();
 
@@ -125,6 +141,12 @@ private:
     void confirmReplacing(const QString &title, const QString &text,
                           const std::function<void()> &proceed);
 
+    // ScopeDockPresets.cpp
+    void buildPresetButton(QToolBar *bar);
+    void fillPresetMenu();
+    void choosePresetName();
+    void loadPreset(const QString &path);
+
     WindowFrame &m_frame;
     QPointer<DriveClient> m_client;
     DriveDescription m_drive;
@@ -136,12 +158,15 @@ private:
     bool m_readingOffline = false;
     bool m_unsaved = false; // the recording shown is in memory only
     QString m_recordFile; // where the next recording also goes; empty: memory only
+    QString m_plantFile; // the plant open in the window; empty: none
+    QString m_presetName; // the preset saved or loaded last, offered as the next name
 
     ScopeChart *m_chart = nullptr;
     ScopeChannelPanel *m_panel = nullptr;
     ScopeMeasurementTable *m_measurements = nullptr;
     ScopeMathChannels *m_math = nullptr;
     QAction *m_removeMathAction = nullptr;
+    QMenu *m_presetMenu = nullptr;
     QLabel *m_status = nullptr;
     QProgressBar *m_progress = nullptr;
     QAction *m_recordAction = nullptr;

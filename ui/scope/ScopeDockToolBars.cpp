@@ -114,6 +114,7 @@ void ScopeDock::buildToolBars()
     fileButton->setMenu(fileMenu);
     fileButton->setPopupMode(QToolButton::InstantPopup);
     triggerBar->addWidget(fileButton);
+    buildPresetButton(triggerBar);
 }
 
 void ScopeDock::buildTriggerBar(QToolBar *bar)

@@ -15,6 +15,6 @@ target_sources(drivedesk_ui PRIVATE
     scope/QCustomPlotInclude.h
     scope/ScopeChannelPanel.cpp scope/ScopeChannelPanel.h
     scope/ScopeDock.cpp scope/ScopeDockRecording.cpp scope/ScopeDockFiles.cpp
-    scope/ScopeDockToolBars.cpp scope/ScopeDock.h
+    scope/ScopeDockToolBars.cpp scope/ScopeDockPresets.cpp scope/ScopeDock.h
     scope/ScopeFeature.cpp scope/ScopeFeature.h
 )
