@@ -11,3 +11,6 @@ drivedesk_add_test(NAME tst_scopedock LABELS gui
 drivedesk_add_test(NAME tst_scopeanalysis LABELS gui
     SOURCES gui/tst_scopeanalysis.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui
     drivedesk_translations)
+# A math trace drawn from its min/max levels: the points a scan of its values gives.
+drivedesk_add_test(NAME tst_scopemathtraces LABELS gui
+    SOURCES gui/tst_scopemathtraces.cpp LIBS drivedesk_ui)
