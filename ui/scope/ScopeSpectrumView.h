@@ -42,8 +42,8 @@ public:
     ScopeSpectrumView(ScopeChart *chart, ScopeMathChannels *math, QWidget *parent = nullptr);
     ~ScopeSpectrumView() override;
 
-    // "Spectrum..." in `menu` (Ctrl+Shift+F, also where the dock has focus): shows the dock's
-    // spectrum window, made on first use.
+    // "Spectrum..." in `menu` (Ctrl+Shift+F, in the whole window while the dock is shown):
+    // shows the dock's spectrum window, made on first use.
     static QAction *addOpenAction(QMenu *menu, ScopeDock *dock);
 
     // The channels offered: the recording's recorded channels, then the math channels.
