@@ -87,9 +87,13 @@ void adviseHugePages([[maybe_unused]] void *begin, [[maybe_unused]] std::size_t 
 Buffer allocateBuffer(std::size_t count)
 {
 #ifdef __linux__
-    const std::size_t bytes = (count * sizeof(double) + kHugePage - 1) / kHugePage * kHugePage;
-    auto *memory = static_cast<double *>(std::aligned_alloc(kHugePage, bytes));
-    if (memory)
+    // Under a huge page, small buffers in FFTW's alignment (64 bytes is more than its SIMD
+    // wants): a huge page asked for is a whole 2 MiB when first touched.
+    const std::size_t needed = count * sizeof(double);
+    const std::size_t alignment = needed < kHugePage ? 64 : kHugePage;
+    const std::size_t bytes = (needed + alignment - 1) / alignment * alignment;
+    auto *memory = static_cast<double *>(std::aligned_alloc(alignment, bytes));
+    if (memory && alignment == kHugePage)
         adviseHugePages(memory, bytes);
     return Buffer(memory);
 #else

@@ -27,8 +27,8 @@ struct BufferFree
 };
 using Buffer = std::unique_ptr<double[], BufferFree>;
 
-// `count` doubles in FFTW's alignment; on Linux in whole huge pages (adviseHugePages()). Null
-// when there is not the memory.
+// `count` doubles in FFTW's alignment; on Linux, from 2 MiB up, in whole huge pages
+// (adviseHugePages()). Null when there is not the memory.
 Buffer allocateBuffer(std::size_t count);
 
 // Fresh memory costs a page fault every 4 KiB, and on a virtual machine a fault is dear: the
