@@ -8,6 +8,7 @@
 #include "scope/ScopeChart.h"
 #include "scope/ScopeColumnGrid.h"
 #include "scope/ScopeMath.h"
+#include "scope/ScopeSeriesLevels.h"
 #include "scope/ScopeTraces.h"
 
 #include <QAbstractEventDispatcher>
@@ -129,11 +130,19 @@ Decimation decimation(const ScopeRecording &recording, ScopeTimeRange range, int
     return result;
 }
 
-// A derivative of channel 1: what the window computes in the thread pool, drawn by the chart.
+// A derivative of channel 1 and its min/max levels: what the window computes in the thread
+// pool, drawn by the chart. BENCH_MATH_NO_LEVELS=1: without the levels (every value in view
+// scanned a redraw), for comparison.
 void addMath(ScopeChart &chart, const ScopeRecording &recording)
 {
     ScopeMathResult derivative = computeScopeMath(ScopeMathDefinition(), recording);
-    chart.setMathSeries({ std::make_shared<const ScopeSeries>(std::move(derivative.series)) });
+    auto series = std::make_shared<const ScopeSeries>(std::move(derivative.series));
+    if (qEnvironmentVariableIntValue("BENCH_MATH_NO_LEVELS") != 0) {
+        chart.setMathSeries({ series });
+        return;
+    }
+    auto levels = std::make_shared<const ScopeSeriesLevels>(*series);
+    chart.setMathSeries({ series }, { levels });
 }
 
 // (a) The whole recording, decimated anew each time (as after new samples).

@@ -1,5 +1,6 @@
 #include "ScopeSpectrum.h"
 
+#include "ScopeFftw.h"
 #include "ScopeSampleWindow.h"
 
 #include <QCoreApplication>
@@ -8,26 +9,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
-#include <mutex>
 #include <numbers>
+#include <vector>
 
 namespace DriveDesk {
 
 namespace {
-
-// FFTW's planner keeps global state and is not thread-safe; executing a plan is.
-std::mutex &plannerMutex()
-{
-    static std::mutex mutex;
-    return mutex;
-}
-
-struct FftwFree
-{
-    void operator()(void *memory) const { fftw_free(memory); }
-};
-template<typename T> using FftwArray = std::unique_ptr<T[], FftwFree>;
 
 // The largest 2^a 3^b 5^c 7^d <= n: a size FFTW transforms quickly (a prime one takes it ten
 // times as long).
@@ -136,27 +123,56 @@ double removeMeanAndWindow(double *values, qsizetype n)
 // |X_k| scaled to the amplitude of a sine at bin k: 2 |X_k| / sum(w), the bins at 0 and
 // n / 2 once. In place: `values` holds n reals padded to n / 2 + 1 complex numbers, which the
 // transform overwrites (fresh memory costs page faults: one buffer, not two).
+//
+// An even n is transformed as n / 2 complex numbers z_k = x_2k + i x_2k+1 (the same memory),
+// and the real transform's bins are unpicked from theirs:
+//   X_k = (Z_k + conj Z_(n/2-k)) / 2 - i e^(-2 pi i k / n) (Z_k - conj Z_(n/2-k)) / 2.
+// FFTW's own real-to-complex plan of a million points takes it ten times as long to make as
+// the complex plan of half a million (FFTW 3.3.10, FFTW_ESTIMATE; docs/performance.md), and
+// the transform is no quicker. An odd n (a few small counts) takes the real plan.
 std::vector<double> amplitudes(double *values, qsizetype n, double windowSum)
 {
     const qsizetype bins = n / 2 + 1;
     auto *transformed = reinterpret_cast<fftw_complex *>(values);
-    fftw_plan plan = nullptr;
-    {
-        const std::lock_guard lock(plannerMutex());
-        plan = fftw_plan_dft_r2c_1d(int(n), values, transformed, FFTW_ESTIMATE);
-    }
-    fftw_execute(plan);
-    {
-        const std::lock_guard lock(plannerMutex());
-        fftw_destroy_plan(plan);
-    }
     std::vector<double> amplitude;
     amplitude.reserve(std::size_t(bins));
-    for (qsizetype k = 0; k < bins; ++k) {
-        const double re = transformed[k][0];
-        const double im = transformed[k][1];
+    ScopeFftw::adviseHugePages(amplitude.data(), std::size_t(bins) * sizeof(double));
+    const auto add = [&](qsizetype k, double re, double im) {
         const bool once = k == 0 || 2 * k == n;
         amplitude.push_back(std::sqrt(re * re + im * im) * (once ? 1 : 2) / windowSum);
+    };
+    // Kept plans run on the arrays they were made on, or on others of FFTW's alignment.
+    const ScopeFftw::Plan plan = ScopeFftw::plan(int(n), values);
+    if (n % 2 != 0) {
+        fftw_execute_dft_r2c(plan.get(), values, transformed);
+        for (qsizetype k = 0; k < bins; ++k)
+            add(k, transformed[k][0], transformed[k][1]);
+        return amplitude;
+    }
+    fftw_execute_dft(plan.get(), transformed, transformed);
+    const qsizetype half = n / 2;
+    // e^(-2 pi i k / n) stepped by rotation, seeded afresh every 1024 bins.
+    const double angle = -2 * std::numbers::pi / double(n);
+    const double stepCos = std::cos(angle);
+    const double stepSin = std::sin(angle);
+    double c = 1;
+    double s = 0;
+    for (qsizetype k = 0; k < bins; ++k) {
+        if (k % 1024 == 0) {
+            c = std::cos(angle * double(k));
+            s = std::sin(angle * double(k));
+        }
+        const fftw_complex &a = transformed[k % half];
+        const fftw_complex &b = transformed[(half - k % half) % half];
+        // even = (a + conj b) / 2, odd = -i (a - conj b) / 2
+        const double evenRe = (a[0] + b[0]) / 2;
+        const double evenIm = (a[1] - b[1]) / 2;
+        const double oddRe = (a[1] + b[1]) / 2;
+        const double oddIm = -(a[0] - b[0]) / 2;
+        add(k, evenRe + c * oddRe - s * oddIm, evenIm + c * oddIm + s * oddRe);
+        const double nextC = c * stepCos - s * stepSin;
+        s = s * stepCos + c * stepSin;
+        c = nextC;
     }
     return amplitude;
 }
@@ -186,7 +202,7 @@ std::optional<ScopeSpectrum> compute(const Window &window, const ScopeSpectrumOp
 
     spectrum.points = smoothCount(spectrum.samples);
     // The points, then (in place) their transform: n / 2 + 1 complex numbers.
-    FftwArray<double> values(fftw_alloc_real(2 * std::size_t(spectrum.points / 2 + 1)));
+    const ScopeFftw::Buffer values = ScopeFftw::allocateBuffer(2 * std::size_t(spectrum.points / 2 + 1));
     if (!values)
         return fail(
             QCoreApplication::translate("ScopeSpectrum", "not enough memory for a spectrum"));
@@ -258,6 +274,18 @@ std::optional<ScopeSpectrum> computeScopeSpectrum(const ScopeRecording &recordin
     spectrum.title = recording.channels.at(channel).title(channel);
     spectrum.unit = recording.channels.at(channel).unit();
     return compute(ScopeSampleWindow::OfRecording(recording, channel, options.fromMs, options.toMs),
+                   options, std::move(spectrum), error);
+}
+
+std::optional<ScopeSpectrum> computeScopeSpectrum(const ScopeSnapshot &snapshot, int channel,
+                                                  const ScopeSpectrumOptions &options,
+                                                  QString *error)
+{
+    Q_ASSERT(channel >= 0 && channel < snapshot.channels.size());
+    ScopeSpectrum spectrum;
+    spectrum.title = snapshot.channels.at(channel).title(channel);
+    spectrum.unit = snapshot.channels.at(channel).unit();
+    return compute(ScopeSampleWindow::OfRecording(snapshot, channel, options.fromMs, options.toMs),
                    options, std::move(spectrum), error);
 }
 

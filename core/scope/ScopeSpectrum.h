@@ -11,6 +11,7 @@ namespace DriveDesk {
 
 struct ScopeRecording;
 struct ScopeSeries;
+struct ScopeSnapshot;
 
 // Which part of a trace a spectrum is made of, and how many peaks to name.
 struct ScopeSpectrumOptions
@@ -61,10 +62,16 @@ struct ScopeSpectrum
 //  3. The mean is removed, a Hann window applied, the real FFT taken (FFTW), and each bin's
 //     magnitude scaled so that a sine of amplitude A at a bin's frequency reads A.
 //
-// Pure: no QObject, nothing shared but FFTW's planner, which is guarded; runs in any thread.
+// Pure: no QObject, nothing shared but FFTW's planner and the last few sizes' plans, kept
+// (planning a million points costs more than the transform), both guarded; runs in any
+// thread.
 // Nothing and *error ("too few samples ...", "the samples span no time") where no spectrum
 // can be made.
 std::optional<ScopeSpectrum> computeScopeSpectrum(const ScopeSeries &series,
+                                                  const ScopeSpectrumOptions &options = {},
+                                                  QString *error = nullptr);
+// A channel of a snapshot of a recording, read in place: in any thread.
+std::optional<ScopeSpectrum> computeScopeSpectrum(const ScopeSnapshot &snapshot, int channel,
                                                   const ScopeSpectrumOptions &options = {},
                                                   QString *error = nullptr);
 // A channel of a recording, its window read in place (display values). The recording is

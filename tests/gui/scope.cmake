@@ -16,3 +16,10 @@ drivedesk_add_test(NAME tst_scopeanalysis LABELS gui
 drivedesk_add_test(NAME tst_scopepresets LABELS gui
     SOURCES gui/tst_scopepresets.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui
     drivedesk_translations)
+# A math trace drawn from its min/max levels: the points a scan of its values gives.
+drivedesk_add_test(NAME tst_scopemathtraces LABELS gui
+    SOURCES gui/tst_scopemathtraces.cpp LIBS drivedesk_ui)
+# The spectrum window beside a chart: a recording of a known sine; its peak over the view,
+# between the cursors, and of a math channel; too few samples.
+drivedesk_add_test(NAME tst_scopespectrumview LABELS gui
+    SOURCES gui/tst_scopespectrumview.cpp LIBS drivedesk_ui)

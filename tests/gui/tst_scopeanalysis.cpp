@@ -1,6 +1,6 @@
 // Reading a recording in the scope dock, offscreen with no drive: the measurements between the
 // cursors beside the chart and in the CSV export, each checked against what the test works
-// out from the signal it recorded.
+// out from the signal it recorded; the spectrum window opened from the dock.
 #include "tst_mainwindow_support.h"
 
 #include "scope/QCustomPlotInclude.h"
@@ -14,6 +14,7 @@
 #include "scope/ScopeMathTraces.h"
 #include "scope/ScopeMeasurementTable.h"
 #include "scope/ScopeRecording.h"
+#include "scope/ScopeSpectrumView.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -230,6 +231,36 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(computed.count() > 0 && !dock->mathChannels()->isComputing(),
                                  kWaitMs);
         QCOMPARE(dock->mathChannels()->series().size(), 1);
+    }
+
+    // Recording > Spectrum... (Ctrl+Shift+F) opens the spectrum window beside the dock, once:
+    // the trapezoid's spectrum over the whole recording (1001 samples), no peak at 0 Hz.
+    void theSpectrumWindowOpensFromTheDock()
+    {
+        m_settings.clear();
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("trapezoid.ddscope"));
+        QVERIFY(writeRecording(path, trapezoid()));
+        MainWindow window;
+        window.show();
+        auto *dock = window.findChild<ScopeDock *>();
+        QString error;
+        QVERIFY2(dock->openRecording(path, &error), qPrintable(error));
+        auto *action = dock->findChild<QAction *>(QStringLiteral("scopeSpectrumAction"));
+        QVERIFY(action);
+        QCOMPARE(action->shortcut(), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
+        action->trigger();
+        ScopeSpectrumView *view = nullptr;
+        QTRY_VERIFY_WITH_TIMEOUT((view = dock->findChild<ScopeSpectrumView *>()) != nullptr
+                                     && view->isVisible() && view->spectrum(),
+                                 kWaitMs);
+        QTRY_VERIFY_WITH_TIMEOUT(!view->isComputing(), kWaitMs);
+        QCOMPARE(view->spectrum()->samples, qsizetype(1001));
+        QCOMPARE(view->spectrum()->title, QStringLiteral("ru.03 Actual frequency"));
+        QVERIFY(!view->spectrum()->peaks.isEmpty());
+        QVERIFY(view->spectrum()->peaks.first().frequencyHz > 0);
+        action->trigger();
+        QCOMPARE(dock->findChildren<ScopeSpectrumView *>().size(), 1);
     }
 };
 

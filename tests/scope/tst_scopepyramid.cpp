@@ -1,4 +1,6 @@
 #include "scope/ScopeBuffer.h"
+#include "scope/ScopeSeries.h"
+#include "scope/ScopeSeriesLevels.h"
 
 #include <QRandomGenerator>
 #include <QTest>
@@ -209,6 +211,45 @@ private slots:
         const double perSample = double(buffer.bytesUsed()) / buffer.count();
         qInfo("samples and levels: %.2f bytes a sample", perSample);
         QVERIFY(perSample <= 24.0);
+    }
+
+    // A math channel's levels (doubles of a ScopeSeries): every range of a few blocks, and
+    // long ranges of a long trace at random, as a scan of the values finds them.
+    void seriesLevelsMatchBruteForce()
+    {
+        QRandomGenerator random(23);
+        for (const qsizetype count : { qsizetype(0), qsizetype(1), qsizetype(31), qsizetype(32),
+                                       qsizetype(33), 5 * ScopeSeriesLevels::kBaseSize + 3,
+                                       qsizetype(100000) }) {
+            ScopeSeries series;
+            for (qsizetype i = 0; i < count; ++i) {
+                series.timeMs.push_back(double(i));
+                series.values.push_back(random.generateDouble() * 2e6 - 1e6);
+            }
+            const ScopeSeriesLevels levels(series);
+            QCOMPARE(levels.count(), count);
+            const auto check = [&](qsizetype begin, qsizetype end) {
+                const ScopeSeriesLevels::MinMax got = levels.minMax(series.values, begin, end);
+                const auto [low, high] = std::minmax_element(series.values.begin() + begin,
+                                                             series.values.begin() + end);
+                return got.min == *low && got.max == *high;
+            };
+            if (count <= 5 * ScopeSeriesLevels::kBaseSize + 3) {
+                for (qsizetype begin = 0; begin < count; ++begin) {
+                    for (qsizetype end = begin + 1; end <= count; ++end)
+                        QVERIFY2(check(begin, end), qPrintable(QStringLiteral("%1..%2 of %3")
+                                                                   .arg(begin).arg(end).arg(count)));
+                }
+                continue;
+            }
+            QVERIFY(check(0, count));
+            for (int round = 0; round < 2000; ++round) {
+                const qsizetype begin = random.bounded(count);
+                const qsizetype end = begin + 1 + random.bounded(count - begin);
+                QVERIFY2(check(begin, end),
+                         qPrintable(QStringLiteral("%1..%2 of %3").arg(begin).arg(end).arg(count)));
+            }
+        }
     }
 };
 

@@ -1,8 +1,10 @@
 // The spectrum: a known sine's frequency within a bin and its amplitude within a few percent,
 // on even and uneven timestamps and with several samples a ms; two sines' two peaks; the
-// window, the units, and a spectrum that cannot be made.
+// window, the units, and a spectrum that cannot be made; the plans kept by size, in one thread
+// and in several.
 #include "ScopeTestRecording.h"
 #include "scope/ScopeSeries.h"
+#include "scope/ScopeSnapshot.h"
 #include "scope/ScopeSpectrum.h"
 
 #include <QTest>
@@ -219,6 +221,59 @@ private slots:
         const std::optional<ScopeSpectrum> series
             = computeScopeSpectrum(scopeSeries(recording, 2), second);
         QCOMPARE(series->amplitude, spectrum->amplitude);
+        // And from a snapshot, as the window's worker reads it.
+        const std::optional<ScopeSpectrum> snapshot
+            = computeScopeSpectrum(scopeSnapshot(recording, recording.buffer.count()), 2, second);
+        QVERIFY(snapshot);
+        QCOMPARE(snapshot->title, spectrum->title);
+        QCOMPARE(snapshot->amplitude, spectrum->amplitude);
+    }
+
+    // The plans are kept by size (the last few): sizes in turn, more of them than are kept and
+    // back to the first, each give the spectrum of its own size, with its sine where it is.
+    void plansKeptBySizeFitTheirSize()
+    {
+        const QList<int> counts = { 1000, 2000, 1000, 1200, 1500, 1600, 1800, 2000, 1000 };
+        for (const int count : counts) {
+            const double hz = 20 + count / 100.0;
+            const std::optional<ScopeSpectrum> spectrum
+                = computeScopeSpectrum(signal(evenTimes(count, 1), { { hz, 2 } }));
+            QVERIFY(spectrum);
+            QCOMPARE(spectrum->points, qsizetype(count));
+            QCOMPARE(spectrum->amplitude.size(), std::size_t(count / 2 + 1));
+            verifyPeak(*spectrum, 0, { hz, 2 }, 0.005);
+        }
+    }
+
+    // Threads that each run through several sizes at once, so that one puts a plan out of the
+    // cache while another may still be transforming with it: each result as one thread alone.
+    void plansOfSeveralSizesInSeveralThreads()
+    {
+        const QList<int> counts = { 3000, 3200, 3500, 3600, 4000, 4200 };
+        std::vector<ScopeSeries> inputs;
+        std::vector<ScopeSpectrum> alone;
+        for (const int count : counts) {
+            inputs.push_back(signal(evenTimes(count, 1), { { 33, 1 }, { 90, 0.5 } }));
+            alone.push_back(*computeScopeSpectrum(inputs.back()));
+        }
+        std::vector<int> wrong(4, 0);
+        std::vector<std::thread> threads;
+        for (std::size_t t = 0; t < wrong.size(); ++t) {
+            threads.emplace_back([&, t] {
+                for (int round = 0; round < 10; ++round) {
+                    for (std::size_t i = 0; i < inputs.size(); ++i) {
+                        const std::size_t which = (i + t) % inputs.size();
+                        const std::optional<ScopeSpectrum> result
+                            = computeScopeSpectrum(inputs[which]);
+                        if (!result || result->amplitude != alone[which].amplitude)
+                            ++wrong[t];
+                    }
+                }
+            });
+        }
+        for (std::thread &thread : threads)
+            thread.join();
+        QCOMPARE(wrong, std::vector<int>(4, 0));
     }
 
     // 1009 samples (a prime): the 1008 = 2^4 3^2 7 first are transformed.

@@ -93,9 +93,10 @@ ScopeChart::ScopeChart(QWidget *parent)
 
 ScopeChart::~ScopeChart() = default;
 
-void ScopeChart::setMathSeries(const QList<std::shared_ptr<const ScopeSeries>> &series)
+void ScopeChart::setMathSeries(const QList<std::shared_ptr<const ScopeSeries>> &series,
+                               const QList<std::shared_ptr<const ScopeSeriesLevels>> &levels)
 {
-    m_math->setSeries(series);
+    m_math->setSeries(series, levels);
     showCursorTable();
     m_dataStale = true;
     replotSoon();

@@ -24,6 +24,7 @@ class ScopeCursorTable;
 class ScopeCursors;
 class ScopeMathTraces;
 struct ScopeSeries;
+class ScopeSeriesLevels;
 class ScopeTraces;
 
 // A span of recording time in ms, both ends included.
@@ -117,8 +118,10 @@ public:
     bool hasChannelOwnAxis(int channel) const;
 
     // The math channels' traces (computed elsewhere from the recording), each drawn on a value
-    // axis of its own; none: no math channels.
-    void setMathSeries(const QList<std::shared_ptr<const ScopeSeries>> &series);
+    // axis of its own; none: no math channels. With their min/max levels a redraw reads
+    // O(columns) of each, not every value in view.
+    void setMathSeries(const QList<std::shared_ptr<const ScopeSeries>> &series,
+                       const QList<std::shared_ptr<const ScopeSeriesLevels>> &levels = {});
     QList<std::shared_ptr<const ScopeSeries>> mathSeries() const;
     ScopeMathTraces *mathTraces() const { return m_math.get(); }
 

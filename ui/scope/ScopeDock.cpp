@@ -201,7 +201,7 @@ void ScopeDock::computeMath()
 
 void ScopeDock::mathComputed()
 {
-    m_chart->setMathSeries(m_math->series());
+    m_chart->setMathSeries(m_math->series(), m_math->levels());
     measureBetweenCursors();
     if (!m_math->errors().isEmpty())
         showStatus(tr("A math channel cannot be computed: %1")

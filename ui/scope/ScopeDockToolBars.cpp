@@ -2,6 +2,7 @@
 #include "ScopeDock.h"
 
 #include "ScopeChart.h"
+#include "ScopeSpectrumView.h"
 
 #include "frame/FrameSupport.h"
 
@@ -96,6 +97,7 @@ void ScopeDock::buildToolBars()
                                              &ScopeDock::removeMathChannels);
     m_removeMathAction->setObjectName(QStringLiteral("scopeRemoveMathAction"));
     m_removeMathAction->setEnabled(false);
+    ScopeSpectrumView::addOpenAction(fileMenu, this);
     fileMenu->addSeparator();
     fileMenu->addAction(tr("Export All as CSV..."), this, [this] { chooseCsv(false); })
         ->setObjectName(QStringLiteral("scopeCsvAllAction"));

@@ -29,6 +29,7 @@ void ScopeMathChannels::compute(const ScopeRecording &recording, qsizetype sampl
         m_waiting.reset();
         const bool had = !m_series.isEmpty() || !m_errors.isEmpty();
         m_series.clear();
+        m_levels.clear();
         m_errors.clear();
         if (had)
             emit seriesChanged();
@@ -51,10 +52,13 @@ void ScopeMathChannels::start(std::shared_ptr<const Request> request)
         Result result;
         for (const ScopeMathDefinition &definition : request->definitions) {
             ScopeMathResult computed = computeScopeMath(definition, request->snapshot);
-            if (computed.ok())
-                result.series << std::make_shared<const ScopeSeries>(std::move(computed.series));
-            else
+            if (computed.ok()) {
+                auto series = std::make_shared<const ScopeSeries>(std::move(computed.series));
+                result.levels << std::make_shared<const ScopeSeriesLevels>(*series);
+                result.series << std::move(series);
+            } else {
                 result.errors << computed.error;
+            }
         }
         return result;
     };
@@ -63,6 +67,7 @@ void ScopeMathChannels::start(std::shared_ptr<const Request> request)
         m_running = false;
         if (generation == m_generation) {
             m_series = result.series;
+            m_levels = result.levels;
             m_errors = result.errors;
         }
         if (m_waiting) {

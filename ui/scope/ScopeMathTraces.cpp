@@ -18,7 +18,8 @@ QColor ScopeMathTraces::defaultColor(int index)
     return colors[index % 3];
 }
 
-void ScopeMathTraces::setSeries(const QList<std::shared_ptr<const ScopeSeries>> &series)
+void ScopeMathTraces::setSeries(const QList<std::shared_ptr<const ScopeSeries>> &series,
+                                const QList<std::shared_ptr<const ScopeSeriesLevels>> &levels)
 {
     // The graphs are kept where the traces only got new values (a growing recording).
     while (m_traces.size() > series.size()) {
@@ -41,6 +42,7 @@ void ScopeMathTraces::setSeries(const QList<std::shared_ptr<const ScopeSeries>> 
         m_traces.append(trace);
     }
     m_series = series;
+    m_levels = levels;
     for (qsizetype i = 0; i < m_traces.size(); ++i) {
         const QString label = m_series.at(i)->label();
         m_traces[i].graph->setName(label);
@@ -71,30 +73,42 @@ void ScopeMathTraces::fill(const ScopeTraceWindow &window)
         const qsizetype end = series.upperBound(double(window.toMs));
         if (begin > 0)
             add(series.timeMs[std::size_t(begin - 1)], series.values[std::size_t(begin - 1)], false);
+        // Each column's end found by binary search, its min and max read from the levels
+        // where they were built: O(columns * log n) a fill, not O(samples in view).
+        const ScopeSeriesLevels *levels = i < m_levels.size() ? m_levels.at(i).get() : nullptr;
+        if (levels && levels->count() != series.count())
+            levels = nullptr;
+        const auto timeAt = [&](qsizetype k) { return series.timeMs[std::size_t(k)]; };
+        const auto valueAt = [&](qsizetype k) { return series.values[std::size_t(k)]; };
         qsizetype at = begin;
         while (at < end) {
-            const qint64 column = qint64((series.timeMs[std::size_t(at)] - from) / width);
+            const qint64 column = qint64((timeAt(at) - from) / width);
             const double columnEnd = from + double(column + 1) * width;
-            qsizetype last = at;
-            double low = series.values[std::size_t(at)];
-            double high = low;
-            while (last + 1 < end && series.timeMs[std::size_t(last + 1)] < columnEnd) {
-                ++last;
-                low = std::min(low, series.values[std::size_t(last)]);
-                high = std::max(high, series.values[std::size_t(last)]);
-            }
+            const qsizetype next = qsizetype(
+                std::lower_bound(series.timeMs.begin() + at + 1, series.timeMs.begin() + end,
+                                 columnEnd)
+                - series.timeMs.begin());
+            const qsizetype last = next - 1;
             if (last - at < 2) {
                 for (qsizetype k = at; k <= last; ++k)
-                    add(series.timeMs[std::size_t(k)], series.values[std::size_t(k)], true);
+                    add(timeAt(k), valueAt(k), true);
             } else {
-                const double time = (series.timeMs[std::size_t(at)]
-                                     + series.timeMs[std::size_t(last)]) / 2;
+                ScopeSeriesLevels::MinMax extremes;
+                if (levels) {
+                    extremes = levels->minMax(series.values, at, next);
+                } else {
+                    const auto [low, high] = std::minmax_element(
+                        series.values.begin() + at, series.values.begin() + next);
+                    extremes = { *low, *high };
+                }
+                const double time = (timeAt(at) + timeAt(last)) / 2;
                 const bool fromHigh = !points.isEmpty()
-                    && std::abs(points.last().value - high) < std::abs(points.last().value - low);
-                add(time, fromHigh ? high : low, true);
-                add(time, fromHigh ? low : high, true);
+                    && std::abs(points.last().value - extremes.max)
+                        < std::abs(points.last().value - extremes.min);
+                add(time, fromHigh ? extremes.max : extremes.min, true);
+                add(time, fromHigh ? extremes.min : extremes.max, true);
             }
-            at = last + 1;
+            at = next;
         }
         if (end < series.count())
             add(series.timeMs[std::size_t(end)], series.values[std::size_t(end)], false);

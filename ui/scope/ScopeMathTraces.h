@@ -3,6 +3,7 @@
 #include "ScopeTraces.h"
 
 #include "scope/ScopeSeries.h"
+#include "scope/ScopeSeriesLevels.h"
 
 #include <QCoreApplication>
 #include <QList>
@@ -29,15 +30,19 @@ public:
     // Orange, sky blue, black, then again: the Okabe-Ito colours the channels leave.
     static QColor defaultColor(int index);
 
-    // The traces to draw, replacing those before (a graph and an axis each).
-    void setSeries(const QList<std::shared_ptr<const ScopeSeries>> &series);
+    // The traces to draw, replacing those before (a graph and an axis each), with their min/max
+    // levels (ScopeMathChannels builds them in the thread pool). A trace without levels is
+    // scanned value by value.
+    void setSeries(const QList<std::shared_ptr<const ScopeSeries>> &series,
+                   const QList<std::shared_ptr<const ScopeSeriesLevels>> &levels = {});
     const QList<std::shared_ptr<const ScopeSeries>> &series() const { return m_series; }
     int count() const { return int(m_traces.size()); }
     QCPGraph *graph(int index) const { return m_traces.at(index).graph; }
     QCPAxis *valueAxis(int index) const { return m_traces.at(index).axis; }
 
-    // Decimates each trace over the window's time in its columns. A trace's values are
-    // scanned once a fill between the window's ends: O(its samples in view).
+    // Decimates each trace over the window's time in its columns: a binary search a column
+    // and its min and max from the levels, O(columns * log n); without levels O(its samples in
+    // view).
     void fill(const ScopeTraceWindow &window);
     void clear();
     // Fits each trace's axis to what the last fill drew.
@@ -53,6 +58,7 @@ private:
 
     QCustomPlot *m_plot = nullptr;
     QList<std::shared_ptr<const ScopeSeries>> m_series;
+    QList<std::shared_ptr<const ScopeSeriesLevels>> m_levels; // as m_series, or none
     QList<Trace> m_traces;
 };
 

@@ -1,6 +1,7 @@
 # The scope: the chart (QCustomPlot fed the recording's decimated min/max points on a redraw
 # timer, the channels' traces and value axes, two cursors and their read-out), the channels'
-# panel, and the dock and feature that record from the drive (docs/scope.md).
+# panel, the spectrum window, and the dock and feature that record from the drive
+# (docs/scope.md).
 target_sources(drivedesk_ui PRIVATE
     scope/ScopeChart.cpp scope/ScopeChartExport.cpp scope/ScopeChartInput.cpp
     scope/ScopeChartView.cpp scope/ScopeChart.h
@@ -11,6 +12,8 @@ target_sources(drivedesk_ui PRIVATE
     scope/ScopeMathChannels.cpp scope/ScopeMathChannels.h
     scope/ScopeMathDialog.cpp scope/ScopeMathDialog.h
     scope/ScopeMathTraces.cpp scope/ScopeMathTraces.h
+    scope/ScopeSpectrumPlot.cpp scope/ScopeSpectrumPlot.h
+    scope/ScopeSpectrumView.cpp scope/ScopeSpectrumView.h
     scope/ScopeTraces.cpp scope/ScopeTraces.h
     scope/QCustomPlotInclude.h
     scope/ScopeChannelPanel.cpp scope/ScopeChannelPanel.h
