@@ -25,3 +25,7 @@ drivedesk_add_test(NAME tst_scopemath LABELS unit
 drivedesk_add_test(NAME tst_scopespectrum LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopespectrum.cpp
             ${CMAKE_CURRENT_LIST_DIR}/ScopeTestRecording.h LIBS drivedesk_scope)
+# A second recording overlaid: read from its file, aligned at the trigger or the start.
+drivedesk_add_test(NAME tst_scopeoverlay LABELS unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopeoverlay.cpp
+            ${CMAKE_CURRENT_LIST_DIR}/ScopeTestRecording.h LIBS drivedesk_scope)
