@@ -11,3 +11,8 @@ drivedesk_add_test(NAME tst_scopedock LABELS gui
 drivedesk_add_test(NAME tst_scopeanalysis LABELS gui
     SOURCES gui/tst_scopeanalysis.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui
     drivedesk_translations)
+# A second recording overlaid in the dock (no drive): aligned at the trigger or the start,
+# named in the legend, read by the cursors, kept when the recording shown is replaced.
+drivedesk_add_test(NAME tst_scopeoverlayview LABELS gui
+    SOURCES gui/tst_scopeoverlayview.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui
+    drivedesk_translations)

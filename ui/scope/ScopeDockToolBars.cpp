@@ -97,6 +97,8 @@ void ScopeDock::buildToolBars()
     m_removeMathAction->setObjectName(QStringLiteral("scopeRemoveMathAction"));
     m_removeMathAction->setEnabled(false);
     fileMenu->addSeparator();
+    buildOverlayMenu(fileMenu);
+    fileMenu->addSeparator();
     fileMenu->addAction(tr("Export All as CSV..."), this, [this] { chooseCsv(false); })
         ->setObjectName(QStringLiteral("scopeCsvAllAction"));
     fileMenu->addAction(tr("Export Visible Range as CSV..."), this, [this] { chooseCsv(true); })
