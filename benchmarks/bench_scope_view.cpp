@@ -2,18 +2,23 @@
 // 4 x 3,600,000 samples; the same million fed to QCustomPlot point by point, for comparison;
 // and the roll mode's redraw tick while 4 kHz samples come in, synchronously and on the event
 // loop with a direct or a queued replot; the full view and the roll tick again with a math
-// channel (a derivative, on an axis of its own). Prints figures; asserts nothing.
+// channel (a derivative, on an axis of its own); and both once more with an overlay of another
+// 4 x 1,000,000 samples read from a recording file, with and without the math channel. Prints
+// figures; asserts nothing.
 // Goals: the full view <= 8 ms (and no slower for 3.6 million), a roll tick <= 2 ms.
 #include "scope/QCustomPlotInclude.h"
 #include "scope/ScopeChart.h"
 #include "scope/ScopeColumnGrid.h"
+#include "scope/ScopeFileWriter.h"
 #include "scope/ScopeMath.h"
 #include "scope/ScopeSeriesLevels.h"
+#include "scope/ScopeOverlay.h"
 #include "scope/ScopeTraces.h"
 
 #include <QAbstractEventDispatcher>
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QTemporaryDir>
 #include <QTimer>
 
 #include <algorithm>
@@ -145,13 +150,41 @@ void addMath(ScopeChart &chart, const ScopeRecording &recording)
     chart.setMathSeries({ series }, { levels });
 }
 
+// A second recording of 4 x 1,000,000 samples at 1 kHz (another run: the source starts
+// elsewhere), its trigger at 400 s, written to a file and read back as the window reads an
+// overlay.
+std::shared_ptr<const ScopeOverlay> makeOverlay()
+{
+    SignalSource source;
+    ScopeRecording recording;
+    describe(recording);
+    for (qsizetype i = 0; i < 1'000'000; ++i)
+        recording.buffer.append(source.sample(i + 12345, i));
+    recording.triggerMs = 400'000;
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("earlier.ddscope"));
+    ScopeFileWriter writer;
+    const SampleStore &samples = recording.buffer.samples();
+    if (!writer.open(path, ScopeFileHeader::of(recording))
+        || !writer.append(samples, 0, samples.count()) || !writer.close())
+        qFatal("cannot write the overlay's file");
+    auto overlay = std::make_shared<const ScopeOverlay>(ScopeOverlay::load(path));
+    if (!overlay->isLoaded())
+        qFatal("%s", qPrintable(overlay->error()));
+    return overlay;
+}
+
 // (a) The whole recording, decimated anew each time (as after new samples).
-void fullView(qsizetype count, bool withMath = false)
+void fullView(qsizetype count, bool withMath = false,
+              std::shared_ptr<const ScopeOverlay> overlay = nullptr)
 {
     SignalSource source;
     ScopeRecording recording;
     describe(recording);
     fill(recording, count, 1000, source);
+    // A shot's trigger, on which an overlay is aligned: 100 s after the overlay's.
+    if (overlay)
+        recording.triggerMs = 500'000;
     ScopeChart chart;
     chart.resize(kSize);
     chart.show();
@@ -159,6 +192,8 @@ void fullView(qsizetype count, bool withMath = false)
     chart.showAll();
     if (withMath)
         addMath(chart, recording);
+    if (overlay)
+        chart.setOverlay(overlay);
     QCustomPlot *plot = chart.plot();
     plot->replot(QCustomPlot::rpImmediateRefresh);
 
@@ -173,10 +208,11 @@ void fullView(qsizetype count, bool withMath = false)
     int points = 0;
     for (int channel = 0; channel < ScopeChart::kChannels; ++channel)
         points += chart.graph(channel)->data()->size();
-    std::printf("full view, 4 x %lld samples%s: %.2f ms median, %.2f ms max (goal <= 8 ms)\n"
+    std::printf("full view, 4 x %lld samples%s%s: %.2f ms median, %.2f ms max (goal <= 8 ms)\n"
                 "  decimation %.2f ms (decimateTime per channel: %.2f ms), replot without new "
                 "data %.2f ms, %d points for %d columns\n",
-                qlonglong(count), withMath ? " and a math channel" : "", full.median, full.max,
+                qlonglong(count), withMath ? " and a math channel" : "",
+                overlay ? ", an overlay of 4 x 1,000,000" : "", full.median, full.max,
                 parts.grid.median, parts.decimateTime.median, drawOnly.median, points, columns);
 }
 
@@ -220,7 +256,7 @@ void everyPoint(bool adaptiveSampling, int rounds)
 }
 
 // (c) Roll mode, 10 s, 1,000,000 samples there already: a tick's samples, then its redraw.
-void rollTicks(bool withMath = false)
+void rollTicks(bool withMath = false, std::shared_ptr<const ScopeOverlay> overlay = nullptr)
 {
     SignalSource source;
     ScopeRecording recording;
@@ -234,6 +270,9 @@ void rollTicks(bool withMath = false)
     // Computed once here; the window computes it again in the thread pool as samples come.
     if (withMath)
         addMath(chart, recording);
+    // A recording that runs has no trigger yet: the overlay is drawn from its start.
+    if (overlay)
+        chart.setOverlay(overlay);
     chart.plot()->replot(QCustomPlot::rpImmediateRefresh);
 
     std::vector<double> ms;
@@ -252,11 +291,12 @@ void rollTicks(bool withMath = false)
         = timeRounds(kRounds, [&] { chart.plot()->replot(QCustomPlot::rpImmediateRefresh); });
     const Decimation parts
         = decimation(recording, chart.visibleTimeRange(), chart.plot()->axisRect()->width());
-    std::printf("roll tick, 10 s of 4 kHz after 1,000,000 samples%s, %d ticks of %d samples: "
+    std::printf("roll tick, 10 s of 4 kHz after 1,000,000 samples%s%s, %d ticks of %d samples: "
                 "%.2f ms median, %.2f ms max (goal <= 2 ms)\n"
                 "  decimation %.2f ms (decimateTime per channel: %.2f ms), replot without new "
                 "data %.2f ms\n",
-                withMath ? " and a math channel" : "", kTicks, kSamplesPerSecond / kTickHz,
+                withMath ? " and a math channel" : "",
+                overlay ? ", an overlay of 4 x 1,000,000" : "", kTicks, kSamplesPerSecond / kTickHz,
                 tick.median, tick.max, parts.grid.median,
                 parts.decimateTime.median, drawOnly.median);
 }
@@ -324,7 +364,7 @@ int main(int argc, char *argv[])
         qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
 
-    // Parts by name (full, every, roll, loop, math); all without one.
+    // Parts by name (full, every, roll, loop, math, overlay); all without one.
     const QStringList parts = app.arguments().mid(1);
     const auto wanted
         = [&](const char *part) { return parts.isEmpty() || parts.contains(QLatin1String(part)); };
@@ -341,6 +381,14 @@ int main(int argc, char *argv[])
     if (wanted("math")) {
         fullView(1'000'000, true);
         rollTicks(true);
+    }
+    if (wanted("overlay")) {
+        const std::shared_ptr<const ScopeOverlay> overlay = makeOverlay();
+        fullView(1'000'000, true, overlay);
+        rollTicks(true, overlay);
+        // The overlay's own part, without the math channel.
+        fullView(1'000'000, false, overlay);
+        rollTicks(false, overlay);
     }
     if (wanted("loop")) {
         rollOnEventLoop(app, false);

@@ -8,6 +8,8 @@
 #include <QJsonObject>
 #include <QtEndian>
 
+#include <limits>
+
 namespace DriveDesk {
 
 namespace {
@@ -64,7 +66,8 @@ ScopeChannel readChannel(JsonObjectReader &reader)
 
 ScopeFileHeader ScopeFileHeader::of(const ScopeRecording &recording)
 {
-    return { recording.started, recording.source, recording.channels, recording.math };
+    return { recording.started, recording.source, recording.channels, recording.math,
+             recording.triggerMs };
 }
 
 QByteArray ScopeFileFormat::start(const ScopeFileHeader &header)
@@ -89,6 +92,8 @@ QByteArray ScopeFileFormat::start(const ScopeFileHeader &header)
             math.append(definition.toJson());
         object.insert(QStringLiteral("math"), math);
     }
+    if (header.triggerMs)
+        object.insert(QStringLiteral("trigger"), QJsonValue(*header.triggerMs));
     const QByteArray json = QJsonDocument(object).toJson(QJsonDocument::Compact);
 
     QByteArray bytes = kMagic + QByteArray::number(kVersion) + '\n';
@@ -151,6 +156,10 @@ bool ScopeFileFormat::parseHeader(const QByteArray &json, ScopeFileHeader &heade
                 reader.fail(place, wrong);
         }
     }
+    const QString triggerKey = QStringLiteral("trigger");
+    if (reader.ok() && reader.has(triggerKey))
+        header.triggerMs = reader.integer(triggerKey, std::numeric_limits<qint64>::min() / 2,
+                                          std::numeric_limits<qint64>::max() / 2);
     reader.finish();
     if (!fault.isEmpty() && error)
         *error = fault.text();

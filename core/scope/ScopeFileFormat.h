@@ -9,6 +9,8 @@
 #include <QDateTime>
 #include <QString>
 
+#include <optional>
+
 namespace DriveDesk {
 
 struct ScopeRecording;
@@ -20,6 +22,7 @@ struct ScopeFileHeader
     QString source;
     ScopeChannels channels = ScopeChannels(ScopeSample::kChannelCount);
     QList<ScopeMathDefinition> math; // "math" in the file; absent where there are none
+    std::optional<qint64> triggerMs; // "trigger" in the file; absent for a recording no shot
 
     static ScopeFileHeader of(const ScopeRecording &recording);
 };

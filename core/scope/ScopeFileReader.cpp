@@ -148,6 +148,7 @@ bool readScopeFile(const QString &path, ScopeRecording &out, QString *error, QSt
     loaded.source = header.source;
     loaded.channels = header.channels;
     loaded.math = header.math;
+    loaded.triggerMs = header.triggerMs;
     qsizetype incomplete = 0;
     if (!readSamples(file, loaded, incomplete, error))
         return false;

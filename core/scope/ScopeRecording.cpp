@@ -23,6 +23,8 @@ std::unique_ptr<ScopeRecording> ScopeRecording::excerpt(qint64 fromMs, qint64 to
     part->channels = channels;
     part->source = source;
     part->math = math;
+    if (triggerMs && *triggerMs >= fromMs && *triggerMs <= toMs)
+        part->triggerMs = triggerMs;
     const SampleStore &samples = buffer.samples();
     const SampleStore::IndexRange range = samples.indexRange(fromMs, toMs);
     for (qsizetype index = range.begin; index < range.end; ++index)

@@ -8,6 +8,7 @@
 #include <QString>
 
 #include <memory>
+#include <optional>
 
 namespace DriveDesk {
 
@@ -25,6 +26,9 @@ struct ScopeRecording
     // The math channels the user added: definitions only, their values follow from the samples
     // (computeScopeMath()). Kept with the recording in its file; never sent to a drive.
     QList<ScopeMathDefinition> math;
+    // Where a single shot fired, in the recording's ms; none for a recording that is no shot.
+    // Kept in its file: an overlay is aligned at it (ScopeOverlay).
+    std::optional<qint64> triggerMs;
 
     // The samples' first and last time in ms; 0 and 0 when there are none.
     qint64 firstTime() const;
@@ -34,7 +38,8 @@ struct ScopeRecording
     QList<int> recordedChannels() const;
     // The samples from fromMs to toMs, both included, as a recording of their own: the same
     // channels and source, `started` moved on by the time left out before them. A single shot
-    // keeps its window of the wait for the trigger this way.
+    // keeps its window of the wait for the trigger this way; the trigger stays where it is
+    // inside the part.
     std::unique_ptr<ScopeRecording> excerpt(qint64 fromMs, qint64 toMs) const;
     // The display number of sample `index` on `channel`.
     double displayValue(qsizetype index, int channel) const

@@ -23,3 +23,8 @@ drivedesk_add_test(NAME tst_scopemathtraces LABELS gui
 # between the cursors, and of a math channel; too few samples.
 drivedesk_add_test(NAME tst_scopespectrumview LABELS gui
     SOURCES gui/tst_scopespectrumview.cpp LIBS drivedesk_ui)
+# A second recording overlaid in the dock (no drive): aligned at the trigger or the start,
+# named in the legend, read by the cursors, kept when the recording shown is replaced.
+drivedesk_add_test(NAME tst_scopeoverlayview LABELS gui
+    SOURCES gui/tst_scopeoverlayview.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui
+    drivedesk_translations)

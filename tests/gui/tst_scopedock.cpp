@@ -538,6 +538,11 @@ private slots:
         ScopeRecording reread;
         QVERIFY2(readScopeFile(saved, reread, &error), qPrintable(error));
         QCOMPARE(reread.buffer.count(), shot.buffer.count());
+        // where it fired goes with it (an overlay is aligned at it), and is marked again
+        QCOMPARE(shot.triggerMs, trigger);
+        QCOMPARE(reread.triggerMs, trigger);
+        QVERIFY2(dock->openRecording(saved, &error), qPrintable(error));
+        QCOMPARE(chart->triggerTime(), trigger);
     }
 
     void theSourcesAndLooksAreRemembered()

@@ -28,3 +28,7 @@ drivedesk_add_test(NAME tst_scopespectrum LABELS unit
 # Scope presets: a set-up saved and loaded again, bad files refused, where they are listed.
 drivedesk_add_test(NAME tst_scopepreset LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopepreset.cpp LIBS drivedesk_scope)
+# A second recording overlaid: read from its file, aligned at the trigger or the start.
+drivedesk_add_test(NAME tst_scopeoverlay LABELS unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopeoverlay.cpp
+            ${CMAKE_CURRENT_LIST_DIR}/ScopeTestRecording.h LIBS drivedesk_scope)

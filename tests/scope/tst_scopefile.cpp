@@ -177,6 +177,38 @@ private slots:
         QCOMPARE(loaded.math, QList<ScopeMathDefinition>());
     }
 
+    // A single shot's trigger goes with it, kept where it fired; a recording that is no shot
+    // has no "trigger" field, as every file before it.
+    void triggerIsKeptWithTheShot()
+    {
+        ScopeRecording recorded;
+        recorded.channels = header().channels;
+        for (qsizetype i = 0; i < 10; ++i)
+            QVERIFY(recorded.buffer.append(sampleAt(i)));
+        recorded.triggerMs = recorded.buffer.samples().time(4);
+        // a part around it keeps it; a part without it has none
+        QCOMPARE(recorded.excerpt(sampleAt(2).time, sampleAt(8).time)->triggerMs,
+                 recorded.triggerMs);
+        QVERIFY(!recorded.excerpt(sampleAt(6).time, sampleAt(8).time)->triggerMs);
+
+        ScopeFileWriter writer;
+        QString error;
+        QVERIFY2(writer.open(m_path, ScopeFileHeader::of(recorded), &error), qPrintable(error));
+        QVERIFY(writer.append(recorded.buffer.samples(), 0, 10, &error));
+        QVERIFY(writer.close(&error));
+        QVERIFY(FileParts::of(readAll(m_path)).json.contains("\"trigger\":5008"));
+        ScopeRecording loaded;
+        QVERIFY2(readScopeFile(m_path, loaded, &error), qPrintable(error));
+        QCOMPARE(loaded.triggerMs, std::optional<qint64>(5008));
+
+        recorded.triggerMs.reset();
+        QVERIFY(writer.open(m_path, ScopeFileHeader::of(recorded), &error));
+        QVERIFY(writer.close(&error));
+        QVERIFY(!FileParts::of(readAll(m_path)).json.contains("trigger"));
+        QVERIFY2(readScopeFile(m_path, loaded, &error), qPrintable(error));
+        QVERIFY(!loaded.triggerMs);
+    }
+
     void layoutIsAsDocumented()
     {
         ScopeFileHeader start;
@@ -328,6 +360,10 @@ private slots:
         QTest::newRow("math not a list")
             << withJson("\"source\":\"HSP5", "\"math\":7,\"source\":\"HSP5")
             << QStringLiteral("'%1' has a damaged header: math: expected an array");
+
+        QTest::newRow("trigger")
+            << withJson("\"source\":\"HSP5", "\"trigger\":\"soon\",\"source\":\"HSP5")
+            << QStringLiteral("'%1' has a damaged header: trigger: expected an integer");
 
         FileParts backwards = good;
         backwards.records += record(sampleAt(0));

@@ -6,6 +6,7 @@
 #include "ScopeCursorTable.h"
 #include "ScopeCursors.h"
 #include "ScopeMathTraces.h"
+#include "ScopeOverlayTraces.h"
 #include "ScopeTraces.h"
 
 #include "QCustomPlotInclude.h"
@@ -50,6 +51,7 @@ ScopeChart::ScopeChart(QWidget *parent)
 
     m_traces = std::make_unique<ScopeTraces>(m_plot);
     m_math = std::make_unique<ScopeMathTraces>(m_plot);
+    m_overlay = std::make_unique<ScopeOverlayTraces>(m_plot);
     m_cursors = new ScopeCursors(m_plot);
     m_triggerLine = new QCPItemStraightLine(m_plot);
     m_triggerLine->setPen(QPen(Qt::darkRed, 1, Qt::DashLine));
@@ -110,7 +112,7 @@ QList<std::shared_ptr<const ScopeSeries>> ScopeChart::mathSeries() const
 void ScopeChart::setRecording(const ScopeRecording *recording)
 {
     m_recording = recording;
-    m_triggerMs.reset();
+    m_triggerMs = recording ? recording->triggerMs : std::nullopt;
     if (m_frozenCount)
         m_frozenCount = recording ? recording->buffer.count() : 0;
     reread(true);
@@ -294,11 +296,13 @@ void ScopeChart::refreshData()
     if (!m_recording) {
         m_traces->clear();
         m_math->clear();
+        m_overlay->clear();
         m_dataStale = false;
         return;
     }
     followOrigin();
     applyView();
+    m_overlay->follow(*m_recording, *m_traces);
     // About one column a pixel; the layout of the last replot tells the axis rect's width.
     const int columns = std::max(1, m_plot->axisRect()->width());
     if (!m_dataStale && columns == m_filledColumns)
@@ -312,6 +316,7 @@ void ScopeChart::refreshData()
     window.sampleCount = shownSampleCount();
     m_traces->fill(*m_recording, window);
     m_math->fill(window);
+    m_overlay->fill(*m_recording, window);
     m_dataStale = false;
     m_filledColumns = columns;
     m_filledCount = m_recording->buffer.count();
@@ -368,7 +373,7 @@ void ScopeChart::updateReadout()
         readout = readScopeCursors(*m_recording, m_cursors->times(), m_traces->drawnChannels(),
                                    shownSampleCount());
     }
-    if (readout == m_readout)
+    if (!readOverlay() && readout == m_readout)
         return;
     m_readout = readout;
     showCursorTable();
@@ -379,7 +384,9 @@ void ScopeChart::showCursorTable()
 {
     m_cursorTable->showReadout(m_readout,
                                m_recording ? m_recording->channels : ScopeChannels(kChannels),
-                               m_math->series());
+                               m_math->series(), m_overlayReadout,
+                               m_overlay->overlay() ? m_overlay->overlay()->recording().channels
+                                                    : ScopeChannels());
 }
 
 qsizetype ScopeChart::shownSampleCount() const

@@ -2,6 +2,8 @@
 
 #include "ScopeCursorReadout.h"
 
+#include "scope/ScopeOverlay.h"
+
 #include <QColor>
 #include <QTimer>
 #include <QWidget>
@@ -23,6 +25,7 @@ namespace DriveDesk {
 class ScopeCursorTable;
 class ScopeCursors;
 class ScopeMathTraces;
+class ScopeOverlayTraces;
 struct ScopeSeries;
 class ScopeSeriesLevels;
 class ScopeTraces;
@@ -125,6 +128,18 @@ public:
     QList<std::shared_ptr<const ScopeSeries>> mathSeries() const;
     ScopeMathTraces *mathTraces() const { return m_math.get(); }
 
+    // A second recording drawn over this one to compare them (ScopeOverlayTraces), on the
+    // time axis as `alignment` puts it, at the triggers by default; nullptr removes it. It
+    // stays when the recording shown is replaced.
+    void setOverlay(std::shared_ptr<const ScopeOverlay> overlay);
+    std::shared_ptr<const ScopeOverlay> overlay() const;
+    void setOverlayAlignment(ScopeOverlayAlignment alignment);
+    // Where the overlay lies on the recording shown now; none without an overlay.
+    std::optional<ScopeOverlayShift> overlayShift() const;
+    ScopeOverlayTraces *overlayTraces() const { return m_overlay.get(); }
+    // What the cursors read of the overlay (its drawn channels); empty without one.
+    ScopeCursorReadout overlayReadout() const { return m_overlayReadout; }
+
     // Cursor 0 or 1 at a recording time (nullopt removes it). Named so as not to hide
     // QWidget::setCursor().
     void setCursorTime(int which, std::optional<double> timeMs);
@@ -183,6 +198,8 @@ private:
     void replotSoon(); // with the next pass of the event loop
     void fitValueAxes();
     void updateReadout();
+    // What updateReadout() needs of the overlay; true if it changed.
+    bool readOverlay();
     void showCursorTable();
     void placeTriggerMark();
     void fitLegend();
@@ -192,6 +209,7 @@ private:
     QCustomPlot *m_plot = nullptr;
     std::unique_ptr<ScopeTraces> m_traces;
     std::unique_ptr<ScopeMathTraces> m_math;
+    std::unique_ptr<ScopeOverlayTraces> m_overlay;
     ScopeCursors *m_cursors = nullptr;
     ScopeCursorTable *m_cursorTable = nullptr;
     QCPItemStraightLine *m_triggerLine = nullptr;
@@ -212,6 +230,7 @@ private:
     // zoom or pan.
     int m_settingRanges = 0;
     ScopeCursorReadout m_readout;
+    ScopeCursorReadout m_overlayReadout;
 };
 
 } // namespace DriveDesk

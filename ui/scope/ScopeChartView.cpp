@@ -3,6 +3,7 @@
 #include "ScopeChart.h"
 
 #include "ScopeMathTraces.h"
+#include "ScopeOverlayTraces.h"
 #include "ScopeTraces.h"
 
 #include "QCustomPlotInclude.h"
@@ -170,6 +171,11 @@ void ScopeChart::fitValueAxes()
             span = span ? ScopeValueSpan { std::min(span->low, extent->low),
                                            std::max(span->high, extent->high) }
                         : *extent;
+        }
+        if (const std::optional<ScopeValueSpan> overlay = m_overlay->extentOn(axis)) {
+            span = span ? ScopeValueSpan { std::min(span->low, overlay->low),
+                                           std::max(span->high, overlay->high) }
+                        : *overlay;
         }
         if (!span)
             continue;

@@ -40,12 +40,14 @@ ScopeCursorTable::ScopeCursorTable(QWidget *parent)
 }
 
 void ScopeCursorTable::showReadout(const ScopeCursorReadout &readout, const ScopeChannels &channels,
-                                   const QList<std::shared_ptr<const ScopeSeries>> &math)
+                                   const QList<std::shared_ptr<const ScopeSeries>> &math,
+                                   const ScopeCursorReadout &overlay,
+                                   const ScopeChannels &overlayChannels)
 {
     setVisible(readout.hasCursor());
     if (!readout.hasCursor())
         return;
-    const int rows = 1 + int(readout.channels.size() + math.size());
+    const int rows = 1 + int(readout.channels.size() + math.size() + overlay.channels.size());
     if (rowCount() != rows) {
         setRowCount(rows);
         fitHeight();
@@ -55,19 +57,7 @@ void ScopeCursorTable::showReadout(const ScopeCursorReadout &readout, const Scop
     setCell(0, SecondColumn, number(readout.seconds(1), 3));
     const std::optional<double> delta = readout.deltaMs();
     setCell(0, DifferenceColumn, number(delta ? std::optional(*delta / 1000.0) : std::nullopt, 3));
-    for (int i = 0; i < readout.channels.size(); ++i) {
-        const ScopeCursorReadout::Channel &row = readout.channels.at(i);
-        const DisplayScaling &scaling = channels.at(row.channel).scaling;
-        setCell(i + 1, NameColumn,
-                row.unit.isEmpty()
-                    ? row.title
-                    : tr("%1 [%2]", "channel title and unit").arg(row.title, row.unit));
-        for (int cursor = 0; cursor < ScopeCursorReadout::kCursors; ++cursor) {
-            setCell(i + 1, FirstColumn + cursor,
-                    row.raw[cursor] ? scaling.format(*row.raw[cursor], false) : QString());
-        }
-        setCell(i + 1, DifferenceColumn, number(row.difference(), scaling.decimals()));
-    }
+    showChannels(1, readout, channels);
     for (qsizetype m = 0; m < math.size(); ++m) {
         const ScopeSeries &series = *math.at(m);
         const int row = int(1 + readout.channels.size() + m);
@@ -85,6 +75,25 @@ void ScopeCursorTable::showReadout(const ScopeCursorReadout &readout, const Scop
         setCell(row, DifferenceColumn,
                 significant(values[0] && values[1] ? std::optional(*values[1] - *values[0])
                                                    : std::nullopt));
+    }
+    showChannels(int(1 + readout.channels.size() + math.size()), overlay, overlayChannels);
+}
+
+void ScopeCursorTable::showChannels(int firstRow, const ScopeCursorReadout &readout,
+                                    const ScopeChannels &channels)
+{
+    for (int i = 0; i < readout.channels.size(); ++i) {
+        const ScopeCursorReadout::Channel &row = readout.channels.at(i);
+        const DisplayScaling &scaling = channels.at(row.channel).scaling;
+        setCell(firstRow + i, NameColumn,
+                row.unit.isEmpty()
+                    ? row.title
+                    : tr("%1 [%2]", "channel title and unit").arg(row.title, row.unit));
+        for (int cursor = 0; cursor < ScopeCursorReadout::kCursors; ++cursor) {
+            setCell(firstRow + i, FirstColumn + cursor,
+                    row.raw[cursor] ? scaling.format(*row.raw[cursor], false) : QString());
+        }
+        setCell(firstRow + i, DifferenceColumn, number(row.difference(), scaling.decimals()));
     }
 }
 

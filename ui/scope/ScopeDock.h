@@ -31,6 +31,7 @@ class ScopeMeasurementTable;
 class WindowFrame;
 struct ScopeChannelsOutcome;
 struct ScopeOfflineRecords;
+class ScopeOverlay;
 struct ScopeRecording;
 
 // The scope in the main window: the chart of a recording, the channels' sources and looks,
@@ -59,6 +60,9 @@ public:
 
     // Opens a recording file to view it (the same view, no drive); false with the reason.
     bool openRecording(const QString &path, QString *error = nullptr);
+    // Reads a recording file in the thread pool and draws it over the one shown (the chart's
+    // overlay), replacing an overlay before; a file that cannot be read is named in the status.
+    void openOverlay(const QString &path);
     // Where the next recordings also go as they are recorded (.ddscope); empty: memory only.
     void setRecordFile(const QString &path);
     QString recordFile() const { return m_recordFile; }
@@ -127,7 +131,16 @@ private:
     void offlineRecordsRead(const ScopeOfflineRecords &records, const ScopeChannels &channels);
     void replaceRecording(std::unique_ptr<ScopeRecording> recording);
 
+    // ScopeDockOverlay.cpp
+    void buildOverlayMenu(QMenu *menu);
+    void chooseOverlay();
+    void overlayLoaded(const ScopeOverlay &overlay);
+    void alignOverlay();
+    void removeOverlay();
+    void showOverlayStatus(const QStringList &warnings = {});
+
     // ScopeDockFiles.cpp
+    static QString recordingFilter();
     void chooseRecordingToOpen();
     void chooseRecordingFile(bool on);
     void chooseRecordingToSave();
@@ -167,6 +180,10 @@ private:
     ScopeMathChannels *m_math = nullptr;
     QAction *m_removeMathAction = nullptr;
     QMenu *m_presetMenu = nullptr;
+    QAction *m_overlayTriggerAction = nullptr;
+    QAction *m_overlayStartAction = nullptr;
+    QAction *m_removeOverlayAction = nullptr;
+    quint64 m_overlayRequest = 0; // the newest file asked for; an older one read later is dropped
     QLabel *m_status = nullptr;
     QProgressBar *m_progress = nullptr;
     QAction *m_recordAction = nullptr;

@@ -20,11 +20,6 @@ namespace DriveDesk {
 
 namespace {
 
-QString recordingFilter()
-{
-    return ScopeDock::tr("DriveDesk scope recordings (*.%1)").arg(QLatin1String(ScopeFileFormat::kSuffix));
-}
-
 QString stampedName(const QString &suffix)
 {
     return QStringLiteral("scope-%1.%2")
@@ -32,6 +27,11 @@ QString stampedName(const QString &suffix)
 }
 
 } // namespace
+
+QString ScopeDock::recordingFilter()
+{
+    return tr("DriveDesk scope recordings (*.%1)").arg(QLatin1String(ScopeFileFormat::kSuffix));
+}
 
 void ScopeDock::chooseRecordingToOpen()
 {

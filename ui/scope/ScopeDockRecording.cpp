@@ -204,6 +204,8 @@ void ScopeDock::keepShot()
     const qint64 triggerMs = m_trigger.triggerTime();
     const qint64 preMs = m_trigger.settings().preTriggerMs();
     const qint64 postMs = m_trigger.settings().postTriggerMs();
+    // The shot keeps where it fired, in its file too: an overlay is aligned at it.
+    m_recording->triggerMs = triggerMs;
     replaceRecording(m_recording->excerpt(m_trigger.shotStart(), m_trigger.shotEnd()));
     m_trigger.disarm();
     m_chart->setTriggerTime(triggerMs);

@@ -99,6 +99,8 @@ void ScopeDock::buildToolBars()
     m_removeMathAction->setEnabled(false);
     ScopeSpectrumView::addOpenAction(fileMenu, this);
     fileMenu->addSeparator();
+    buildOverlayMenu(fileMenu);
+    fileMenu->addSeparator();
     fileMenu->addAction(tr("Export All as CSV..."), this, [this] { chooseCsv(false); })
         ->setObjectName(QStringLiteral("scopeCsvAllAction"));
     fileMenu->addAction(tr("Export Visible Range as CSV..."), this, [this] { chooseCsv(true); })

@@ -174,6 +174,29 @@ QList<int> ScopeTraces::drawnChannels() const
     return channels;
 }
 
+std::optional<ScopeValueSpan> fillScopeGraph(QCPGraph *graph, const ScopeRecording &recording,
+                                             int channel, const ScopeColumnGrid &grid,
+                                             qsizetype count, qint64 originMs)
+{
+    if (grid.first() >= grid.end()) {
+        graph->data()->clear();
+        return std::nullopt;
+    }
+    TraceBuilder builder(recording, channel, originMs);
+    builder.reserve(2 * qsizetype(grid.count()) + 2);
+    if (grid.first() > 0)
+        builder.addSample(grid.first() - 1, false);
+    for (int column = 0; column < grid.count(); ++column) {
+        if (!grid.isEmpty(column))
+            builder.addColumn(grid.column(recording.buffer.pyramid(), channel, column));
+    }
+    if (grid.end() < count)
+        builder.addSample(grid.end(), false);
+    // The container takes the vector as it is (implicitly shared, no copy, no sort).
+    graph->data()->set(builder.takePoints(), true);
+    return builder.extent();
+}
+
 void ScopeTraces::fill(const ScopeRecording &recording, const ScopeTraceWindow &window)
 {
     const SampleStore &samples = recording.buffer.samples();
@@ -182,23 +205,12 @@ void ScopeTraces::fill(const ScopeRecording &recording, const ScopeTraceWindow &
     for (int channel = 0; channel < kChannels; ++channel) {
         Trace &trace = m_traces[channel];
         trace.extent.reset();
-        if (!isDrawn(channel) || grid.first() >= grid.end()) {
+        if (!isDrawn(channel)) {
             trace.graph->data()->clear();
             continue;
         }
-        TraceBuilder builder(recording, channel, window.originMs);
-        builder.reserve(2 * qsizetype(grid.count()) + 2);
-        if (grid.first() > 0)
-            builder.addSample(grid.first() - 1, false);
-        for (int column = 0; column < grid.count(); ++column) {
-            if (!grid.isEmpty(column))
-                builder.addColumn(grid.column(recording.buffer.pyramid(), channel, column));
-        }
-        if (grid.end() < count)
-            builder.addSample(grid.end(), false);
-        trace.extent = builder.extent();
-        // The container takes the vector as it is (implicitly shared, no copy, no sort).
-        trace.graph->data()->set(builder.takePoints(), true);
+        trace.extent
+            = fillScopeGraph(trace.graph, recording, channel, grid, count, window.originMs);
     }
 }
 

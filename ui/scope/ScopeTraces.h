@@ -34,6 +34,18 @@ struct ScopeTraceWindow
     qint64 originMs = 0; // the recording's first sample: key 0 s
 };
 
+class ScopeColumnGrid;
+
+// Feeds `graph` a channel's decimated points over the grid's columns (of the samples
+// [0, count)): two a column (min and max, in the order that keeps the line short), the samples
+// themselves in a column of one or two, and the samples just outside, so that the line reaches
+// the edges. Keys in seconds from originMs. Returns the span of the values in view; none where
+// the grid holds no sample. What ScopeTraces::fill() does for each channel, and an overlay for
+// its own.
+std::optional<ScopeValueSpan> fillScopeGraph(QCPGraph *graph, const ScopeRecording &recording,
+                                             int channel, const ScopeColumnGrid &grid,
+                                             qsizetype count, qint64 originMs);
+
 // The four channels as QCustomPlot graphs: their colours, visibility, and the value axis each
 // is drawn against (the shared one on the left or its own on the right), named after the
 // recording's channels ("ru.03 Actual frequency [Hz]"). fill() feeds each drawn graph the
