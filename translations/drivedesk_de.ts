@@ -988,10 +988,6 @@
         <translation>die Datensätze konnten nicht alle gelesen werden: %1</translation>
     </message>
     <message>
-        <source>&apos;%1&apos;: the set after @ is 0..7, e.g. op.11@2</source>
-        <translation>„%1“: der Satz nach @ ist 0..7, z. B. op.11@2</translation>
-    </message>
-    <message>
         <source>found the drive at %1 Bd</source>
         <translation>Umrichter bei %1 Bd gefunden</translation>
     </message>
@@ -3779,6 +3775,38 @@
         <source>%1 and %2 side by side in the compare window.</source>
         <translation>%1 und %2 nebeneinander im Vergleichsfenster.</translation>
     </message>
+    <message>
+        <source>Commit to History</source>
+        <translation>In Historie übernehmen</translation>
+    </message>
+    <message>
+        <source>Make each Back Up All a revision of the backup folder&apos;s git repository, with what changed since the last one</source>
+        <translation>Jedes „Alle sichern“ als Revision im Git-Repository des Sicherungsordners ablegen, mit dem, was sich seit der letzten geändert hat</translation>
+    </message>
+    <message>
+        <source>%1 Stopped: nothing committed.</source>
+        <translation>%1 Angehalten: nichts übernommen.</translation>
+    </message>
+    <message>
+        <source>%1 Committing to the history...</source>
+        <translation>%1 Wird in die Historie übernommen …</translation>
+    </message>
+    <message>
+        <source>%1 Not committed: %2</source>
+        <translation>%1 Nicht übernommen: %2</translation>
+    </message>
+    <message>
+        <source>%1 No drive saved: nothing committed.</source>
+        <translation>%1 Kein Umrichter gesichert: nichts übernommen.</translation>
+    </message>
+    <message>
+        <source>%1 No setting changed since the last revision: nothing committed.</source>
+        <translation>%1 Seit der letzten Revision hat sich keine Einstellung geändert: nichts übernommen.</translation>
+    </message>
+    <message>
+        <source>%1 Committed %2: %3</source>
+        <translation>%1 Übernommen als %2: %3</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::PlantFeature</name>
@@ -4897,6 +4925,112 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
         <source>Remove Math Channels</source>
         <translation>Mathe-Kanäle entfernen</translation>
     </message>
+    <message>
+        <source>Overlay Recording...</source>
+        <translation>Aufzeichnung überlagern …</translation>
+    </message>
+    <message>
+        <source>Align Overlay at Trigger</source>
+        <translation>Überlagerung am Trigger ausrichten</translation>
+    </message>
+    <message>
+        <source>Align Overlay at Start</source>
+        <translation>Überlagerung am Anfang ausrichten</translation>
+    </message>
+    <message>
+        <source>Remove Overlay</source>
+        <translation>Überlagerung entfernen</translation>
+    </message>
+    <message>
+        <source>Overlay Scope Recording</source>
+        <translation>Scope-Aufzeichnung überlagern</translation>
+    </message>
+    <message>
+        <source>Reading %1 to draw it over the recording...</source>
+        <translation>%1 wird gelesen, um es über die Aufzeichnung zu legen …</translation>
+    </message>
+    <message>
+        <source>The overlay is removed.</source>
+        <translation>Die Überlagerung ist entfernt.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 (%Ln sample(s)) drawn over the recording, aligned at its trigger.</source>
+        <translation>
+            <numerusform>%1 (%Ln Abtastwert) über die Aufzeichnung gelegt, am Trigger ausgerichtet.</numerusform>
+            <numerusform>%1 (%Ln Abtastwerte) über die Aufzeichnung gelegt, am Trigger ausgerichtet.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 (%Ln sample(s)) drawn over the recording, aligned at its start.</source>
+        <translation>
+            <numerusform>%1 (%Ln Abtastwert) über die Aufzeichnung gelegt, am Anfang ausgerichtet.</numerusform>
+            <numerusform>%1 (%Ln Abtastwerte) über die Aufzeichnung gelegt, am Anfang ausgerichtet.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 Not at the trigger: %2.</source>
+        <translation>%1 Nicht am Trigger: %2.</translation>
+    </message>
+    <message>
+        <source>Presets</source>
+        <translation>Vorlagen</translation>
+    </message>
+    <message>
+        <source>Save the channels, trigger, roll and rate limit under a name, or load a set-up saved for this kind of drive</source>
+        <translation>Kanäle, Trigger, Rollen und Ratengrenze unter einem Namen speichern oder eine für diese Art Umrichter gespeicherte Einstellung laden</translation>
+    </message>
+    <message>
+        <source>Save Preset As...</source>
+        <translation>Vorlage speichern unter …</translation>
+    </message>
+    <message>
+        <source>Connect to a drive to load its presets</source>
+        <translation>Mit einem Umrichter verbinden, um seine Vorlagen zu laden</translation>
+    </message>
+    <message>
+        <source>%1 (plant)</source>
+        <translation>%1 (Anlage)</translation>
+    </message>
+    <message>
+        <source>No presets for this kind of drive</source>
+        <translation>Keine Vorlagen für diese Art Umrichter</translation>
+    </message>
+    <message>
+        <source>Some presets cannot be read: %1</source>
+        <translation>Einige Vorlagen sind nicht lesbar: %1</translation>
+    </message>
+    <message>
+        <source>Save Preset</source>
+        <translation>Vorlage speichern</translation>
+    </message>
+    <message>
+        <source>Name of the preset for this kind of drive:</source>
+        <translation>Name der Vorlage für diese Art Umrichter:</translation>
+    </message>
+    <message>
+        <source>Name of the preset, kept beside the plant %1:</source>
+        <translation>Name der Vorlage, abgelegt neben der Anlage %1:</translation>
+    </message>
+    <message>
+        <source>Preset &apos;%1&apos; saved in %2.</source>
+        <translation>Vorlage „%1“ gespeichert in %2.</translation>
+    </message>
+    <message>
+        <source>A preset needs a name.</source>
+        <translation>Eine Vorlage braucht einen Namen.</translation>
+    </message>
+    <message>
+        <source>Preset &apos;%1&apos; loaded.</source>
+        <translation>Vorlage „%1“ geladen.</translation>
+    </message>
+    <message>
+        <source>Preset &apos;%1&apos; loaded, but: %2</source>
+        <translation>Vorlage „%1“ geladen, aber: %2</translation>
+    </message>
+    <message>
+        <source>Channel %1 (%2): %3</source>
+        <translation>Kanal %1 (%2): %3</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ScopeFeature</name>
@@ -5026,6 +5160,64 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
     <message>
         <source>Record %1: %2</source>
         <translation>Datensatz %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ScopeSpectrumView</name>
+    <message>
+        <source>Spectrum</source>
+        <translation>Spektrum</translation>
+    </message>
+    <message>
+        <source>&amp;Channel</source>
+        <translation>&amp;Kanal</translation>
+    </message>
+    <message>
+        <source>&amp;Range</source>
+        <translation>&amp;Bereich</translation>
+    </message>
+    <message>
+        <source>the view</source>
+        <translation>die Ansicht</translation>
+    </message>
+    <message>
+        <source>between the cursors</source>
+        <translation>zwischen den Cursorn</translation>
+    </message>
+    <message>
+        <source>&amp;Logarithmic amplitude</source>
+        <translation>&amp;Logarithmische Amplitude</translation>
+    </message>
+    <message>
+        <source>Spectrum...</source>
+        <translation>Spektrum …</translation>
+    </message>
+    <message>
+        <source>The amplitude spectrum of a channel over the view or between the cursors (Ctrl+Shift+F)</source>
+        <translation>Das Amplitudenspektrum eines Kanals über die Ansicht oder zwischen den Cursorn (Strg+Umschalt+F)</translation>
+    </message>
+    <message>
+        <source>No samples: record or open a recording.</source>
+        <translation>Keine Abtastwerte: aufzeichnen oder eine Aufzeichnung öffnen.</translation>
+    </message>
+    <message>
+        <source>Place both cursors on the chart for the range between them.</source>
+        <translation>Beide Cursor ins Diagramm setzen, um den Bereich zwischen ihnen zu nehmen.</translation>
+    </message>
+    <message>
+        <source>No spectrum: %1</source>
+        <translation>Kein Spektrum: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %Ln sample(s) from %2 s to %3 s, %4 points at %5 Hz, bins of %6 Hz</source>
+        <translation>
+            <numerusform>%1: %Ln Abtastwert von %2 s bis %3 s, %4 Punkte bei %5 Hz, Stützstellen im Abstand von %6 Hz</numerusform>
+            <numerusform>%1: %Ln Abtastwerte von %2 s bis %3 s, %4 Punkte bei %5 Hz, Stützstellen im Abstand von %6 Hz</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source> (resampled to even spacing: the samples came unevenly)</source>
+        <translation> (auf gleiche Abstände umgerechnet: die Abtastwerte kamen ungleichmäßig)</translation>
     </message>
 </context>
 <context>
@@ -7006,6 +7198,30 @@ Verbindungsdialog.
     </message>
 </context>
 <context>
+    <name>ScopeOverlay</name>
+    <message>
+        <source>%1 (overlay: %2)</source>
+        <comment>a channel&apos;s title, the overlay&apos;s file</comment>
+        <translation>%1 (Überlagerung: %2)</translation>
+    </message>
+    <message>
+        <source>the overlay %1 has no trigger (it is no single shot)</source>
+        <translation>die Überlagerung %1 hat keinen Trigger (sie ist kein Einzelschuss)</translation>
+    </message>
+    <message>
+        <source>the recording shown has no trigger (it is no single shot)</source>
+        <translation>die gezeigte Aufzeichnung hat keinen Trigger (sie ist kein Einzelschuss)</translation>
+    </message>
+</context>
+<context>
+    <name>ScopeOverlayTraces</name>
+    <message>
+        <source>%1 [%2]</source>
+        <comment>channel title and unit</comment>
+        <translation>%1 [%2]</translation>
+    </message>
+</context>
+<context>
     <name>ScopePollJob</name>
     <message>
         <source>This connection cannot carry scope data (service 18).</source>
@@ -7014,6 +7230,92 @@ Verbindungsdialog.
     <message>
         <source>The drive stopped answering: %1</source>
         <translation>Der Umrichter antwortet nicht mehr: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ScopePresetFile</name>
+    <message>
+        <source>expected a number</source>
+        <translation>Zahl erwartet</translation>
+    </message>
+    <message>
+        <source>%1 is outside %2..%3</source>
+        <translation>%1 liegt außerhalb von %2..%3</translation>
+    </message>
+    <message>
+        <source>%1, expected &apos;%2&apos;: not a DriveDesk scope preset</source>
+        <translation>%1, erwartet „%2“: keine DriveDesk-Scope-Vorlage</translation>
+    </message>
+    <message>
+        <source>not a string</source>
+        <translation>keine Zeichenkette</translation>
+    </message>
+    <message>
+        <source>%1 is a newer format than this DriveDesk reads (version %2); a newer DriveDesk reads it</source>
+        <translation>%1 ist ein neueres Format, als dieses DriveDesk liest (Version %2); ein neueres DriveDesk liest es</translation>
+    </message>
+    <message>
+        <source>expected a parameter id, &quot;off&quot; or null</source>
+        <translation>Parameter-ID, „off“ oder null erwartet</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a colour: write it as #rrggbb</source>
+        <translation>„%1“ ist keine Farbe: als #rrggbb schreiben</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: expected rising or falling</source>
+        <translation>„%1“: rising oder falling erwartet</translation>
+    </message>
+    <message>
+        <source>channel %1</source>
+        <translation>Kanal %1</translation>
+    </message>
+    <message>
+        <source>channel %1&apos;s %2</source>
+        <translation>Kanal %1, %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a parameter id: write it as group.number (ru.03), a hexadecimal address (0203h), with @set where it is read from another set (op.11@2), or off</source>
+        <translation>„%1“ ist keine Parameter-ID: als Gruppe.Nummer (ru.03) oder hexadezimale Adresse (0203h) schreiben, mit @Satz, wo aus einem anderen Satz gelesen wird (op.11@2), oder off</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: the set after @ is 0..%2, e.g. op.11@2</source>
+        <translation>„%1“: der Satz nach @ ist 0..%2, z. B. op.11@2</translation>
+    </message>
+    <message>
+        <source>%1 (line %2, column %3)</source>
+        <translation>%1 (Zeile %2, Spalte %3)</translation>
+    </message>
+    <message>
+        <source>not JSON: %1</source>
+        <translation>kein JSON: %1</translation>
+    </message>
+    <message>
+        <source>not a DriveDesk scope preset: the document is not a JSON object</source>
+        <translation>keine DriveDesk-Scope-Vorlage: das Dokument ist kein JSON-Objekt</translation>
+    </message>
+    <message>
+        <source>%1: appears twice in one object</source>
+        <translation>%1: kommt in einem Objekt zweimal vor</translation>
+    </message>
+    <message>
+        <source>give the preset a name of 1 to %1 characters</source>
+        <translation>der Vorlage einen Namen mit 1 bis %1 Zeichen geben</translation>
+    </message>
+    <message>
+        <source>expected %1 channels, found %2</source>
+        <translation>%1 Kanäle erwartet, %2 gefunden</translation>
+    </message>
+    <message>
+        <source>preset file &apos;%1&apos;: %2</source>
+        <translation>Vorlagendatei „%1“: %2</translation>
+    </message>
+</context>
+<context>
+    <name>ScopePresetLibrary</name>
+    <message>
+        <source>cannot make the folder &apos;%1&apos; for the presets</source>
+        <translation>der Ordner „%1“ für die Vorlagen lässt sich nicht anlegen</translation>
     </message>
 </context>
 <context>
@@ -7029,6 +7331,38 @@ Verbindungsdialog.
     <message>
         <source>not enough memory for a spectrum</source>
         <translation>nicht genug Speicher für ein Spektrum</translation>
+    </message>
+</context>
+<context>
+    <name>ScopeSpectrumPlot</name>
+    <message>
+        <source>%1 %2</source>
+        <comment>number and unit</comment>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>Frequency [Hz]</source>
+        <translation>Frequenz [Hz]</translation>
+    </message>
+    <message>
+        <source>Amplitude</source>
+        <translation>Amplitude</translation>
+    </message>
+    <message>
+        <source>Frequency</source>
+        <translation>Frequenz</translation>
+    </message>
+    <message>
+        <source>The highest peaks, the highest first</source>
+        <translation>Die höchsten Spitzen, die höchste zuerst</translation>
+    </message>
+    <message>
+        <source>Amplitude [%1]</source>
+        <translation>Amplitude [%1]</translation>
+    </message>
+    <message>
+        <source>Hz</source>
+        <translation>Hz</translation>
     </message>
 </context>
 <context>

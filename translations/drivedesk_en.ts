@@ -988,10 +988,6 @@
         <translation>the records could not all be read: %1</translation>
     </message>
     <message>
-        <source>&apos;%1&apos;: the set after @ is 0..7, e.g. op.11@2</source>
-        <translation>&apos;%1&apos;: the set after @ is 0..7, e.g. op.11@2</translation>
-    </message>
-    <message>
         <source>found the drive at %1 Bd</source>
         <translation>found the drive at %1 Bd</translation>
     </message>
@@ -3779,6 +3775,38 @@
         <source>%1 and %2 side by side in the compare window.</source>
         <translation>%1 and %2 side by side in the compare window.</translation>
     </message>
+    <message>
+        <source>Commit to History</source>
+        <translation>Commit to History</translation>
+    </message>
+    <message>
+        <source>Make each Back Up All a revision of the backup folder&apos;s git repository, with what changed since the last one</source>
+        <translation>Make each Back Up All a revision of the backup folder&apos;s git repository, with what changed since the last one</translation>
+    </message>
+    <message>
+        <source>%1 Stopped: nothing committed.</source>
+        <translation>%1 Stopped: nothing committed.</translation>
+    </message>
+    <message>
+        <source>%1 Committing to the history...</source>
+        <translation>%1 Committing to the history...</translation>
+    </message>
+    <message>
+        <source>%1 Not committed: %2</source>
+        <translation>%1 Not committed: %2</translation>
+    </message>
+    <message>
+        <source>%1 No drive saved: nothing committed.</source>
+        <translation>%1 No drive saved: nothing committed.</translation>
+    </message>
+    <message>
+        <source>%1 No setting changed since the last revision: nothing committed.</source>
+        <translation>%1 No setting changed since the last revision: nothing committed.</translation>
+    </message>
+    <message>
+        <source>%1 Committed %2: %3</source>
+        <translation>%1 Committed %2: %3</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::PlantFeature</name>
@@ -4897,6 +4925,112 @@ Home: the whole recording; End: follow the newest samples; A: fit the values; Sp
         <source>Remove Math Channels</source>
         <translation>Remove Math Channels</translation>
     </message>
+    <message>
+        <source>Overlay Recording...</source>
+        <translation>Overlay Recording...</translation>
+    </message>
+    <message>
+        <source>Align Overlay at Trigger</source>
+        <translation>Align Overlay at Trigger</translation>
+    </message>
+    <message>
+        <source>Align Overlay at Start</source>
+        <translation>Align Overlay at Start</translation>
+    </message>
+    <message>
+        <source>Remove Overlay</source>
+        <translation>Remove Overlay</translation>
+    </message>
+    <message>
+        <source>Overlay Scope Recording</source>
+        <translation>Overlay Scope Recording</translation>
+    </message>
+    <message>
+        <source>Reading %1 to draw it over the recording...</source>
+        <translation>Reading %1 to draw it over the recording...</translation>
+    </message>
+    <message>
+        <source>The overlay is removed.</source>
+        <translation>The overlay is removed.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 (%Ln sample(s)) drawn over the recording, aligned at its trigger.</source>
+        <translation>
+            <numerusform>%1 (%Ln sample(s)) drawn over the recording, aligned at its trigger.</numerusform>
+            <numerusform>%1 (%Ln sample(s)) drawn over the recording, aligned at its trigger.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 (%Ln sample(s)) drawn over the recording, aligned at its start.</source>
+        <translation>
+            <numerusform>%1 (%Ln sample(s)) drawn over the recording, aligned at its start.</numerusform>
+            <numerusform>%1 (%Ln sample(s)) drawn over the recording, aligned at its start.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 Not at the trigger: %2.</source>
+        <translation>%1 Not at the trigger: %2.</translation>
+    </message>
+    <message>
+        <source>Presets</source>
+        <translation>Presets</translation>
+    </message>
+    <message>
+        <source>Save the channels, trigger, roll and rate limit under a name, or load a set-up saved for this kind of drive</source>
+        <translation>Save the channels, trigger, roll and rate limit under a name, or load a set-up saved for this kind of drive</translation>
+    </message>
+    <message>
+        <source>Save Preset As...</source>
+        <translation>Save Preset As...</translation>
+    </message>
+    <message>
+        <source>Connect to a drive to load its presets</source>
+        <translation>Connect to a drive to load its presets</translation>
+    </message>
+    <message>
+        <source>%1 (plant)</source>
+        <translation>%1 (plant)</translation>
+    </message>
+    <message>
+        <source>No presets for this kind of drive</source>
+        <translation>No presets for this kind of drive</translation>
+    </message>
+    <message>
+        <source>Some presets cannot be read: %1</source>
+        <translation>Some presets cannot be read: %1</translation>
+    </message>
+    <message>
+        <source>Save Preset</source>
+        <translation>Save Preset</translation>
+    </message>
+    <message>
+        <source>Name of the preset for this kind of drive:</source>
+        <translation>Name of the preset for this kind of drive:</translation>
+    </message>
+    <message>
+        <source>Name of the preset, kept beside the plant %1:</source>
+        <translation>Name of the preset, kept beside the plant %1:</translation>
+    </message>
+    <message>
+        <source>Preset &apos;%1&apos; saved in %2.</source>
+        <translation>Preset &apos;%1&apos; saved in %2.</translation>
+    </message>
+    <message>
+        <source>A preset needs a name.</source>
+        <translation>A preset needs a name.</translation>
+    </message>
+    <message>
+        <source>Preset &apos;%1&apos; loaded.</source>
+        <translation>Preset &apos;%1&apos; loaded.</translation>
+    </message>
+    <message>
+        <source>Preset &apos;%1&apos; loaded, but: %2</source>
+        <translation>Preset &apos;%1&apos; loaded, but: %2</translation>
+    </message>
+    <message>
+        <source>Channel %1 (%2): %3</source>
+        <translation>Channel %1 (%2): %3</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ScopeFeature</name>
@@ -5026,6 +5160,64 @@ Home: the whole recording; End: follow the newest samples; A: fit the values; Sp
     <message>
         <source>Record %1: %2</source>
         <translation>Record %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>DriveDesk::ScopeSpectrumView</name>
+    <message>
+        <source>Spectrum</source>
+        <translation>Spectrum</translation>
+    </message>
+    <message>
+        <source>&amp;Channel</source>
+        <translation>&amp;Channel</translation>
+    </message>
+    <message>
+        <source>&amp;Range</source>
+        <translation>&amp;Range</translation>
+    </message>
+    <message>
+        <source>the view</source>
+        <translation>the view</translation>
+    </message>
+    <message>
+        <source>between the cursors</source>
+        <translation>between the cursors</translation>
+    </message>
+    <message>
+        <source>&amp;Logarithmic amplitude</source>
+        <translation>&amp;Logarithmic amplitude</translation>
+    </message>
+    <message>
+        <source>Spectrum...</source>
+        <translation>Spectrum...</translation>
+    </message>
+    <message>
+        <source>The amplitude spectrum of a channel over the view or between the cursors (Ctrl+Shift+F)</source>
+        <translation>The amplitude spectrum of a channel over the view or between the cursors (Ctrl+Shift+F)</translation>
+    </message>
+    <message>
+        <source>No samples: record or open a recording.</source>
+        <translation>No samples: record or open a recording.</translation>
+    </message>
+    <message>
+        <source>Place both cursors on the chart for the range between them.</source>
+        <translation>Place both cursors on the chart for the range between them.</translation>
+    </message>
+    <message>
+        <source>No spectrum: %1</source>
+        <translation>No spectrum: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %Ln sample(s) from %2 s to %3 s, %4 points at %5 Hz, bins of %6 Hz</source>
+        <translation>
+            <numerusform>%1: %Ln sample(s) from %2 s to %3 s, %4 points at %5 Hz, bins of %6 Hz</numerusform>
+            <numerusform>%1: %Ln sample(s) from %2 s to %3 s, %4 points at %5 Hz, bins of %6 Hz</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source> (resampled to even spacing: the samples came unevenly)</source>
+        <translation> (resampled to even spacing: the samples came unevenly)</translation>
     </message>
 </context>
 <context>
@@ -7006,6 +7198,30 @@ dialog.
     </message>
 </context>
 <context>
+    <name>ScopeOverlay</name>
+    <message>
+        <source>%1 (overlay: %2)</source>
+        <comment>a channel&apos;s title, the overlay&apos;s file</comment>
+        <translation>%1 (overlay: %2)</translation>
+    </message>
+    <message>
+        <source>the overlay %1 has no trigger (it is no single shot)</source>
+        <translation>the overlay %1 has no trigger (it is no single shot)</translation>
+    </message>
+    <message>
+        <source>the recording shown has no trigger (it is no single shot)</source>
+        <translation>the recording shown has no trigger (it is no single shot)</translation>
+    </message>
+</context>
+<context>
+    <name>ScopeOverlayTraces</name>
+    <message>
+        <source>%1 [%2]</source>
+        <comment>channel title and unit</comment>
+        <translation>%1 [%2]</translation>
+    </message>
+</context>
+<context>
     <name>ScopePollJob</name>
     <message>
         <source>This connection cannot carry scope data (service 18).</source>
@@ -7014,6 +7230,92 @@ dialog.
     <message>
         <source>The drive stopped answering: %1</source>
         <translation>The drive stopped answering: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ScopePresetFile</name>
+    <message>
+        <source>expected a number</source>
+        <translation>expected a number</translation>
+    </message>
+    <message>
+        <source>%1 is outside %2..%3</source>
+        <translation>%1 is outside %2..%3</translation>
+    </message>
+    <message>
+        <source>%1, expected &apos;%2&apos;: not a DriveDesk scope preset</source>
+        <translation>%1, expected &apos;%2&apos;: not a DriveDesk scope preset</translation>
+    </message>
+    <message>
+        <source>not a string</source>
+        <translation>not a string</translation>
+    </message>
+    <message>
+        <source>%1 is a newer format than this DriveDesk reads (version %2); a newer DriveDesk reads it</source>
+        <translation>%1 is a newer format than this DriveDesk reads (version %2); a newer DriveDesk reads it</translation>
+    </message>
+    <message>
+        <source>expected a parameter id, &quot;off&quot; or null</source>
+        <translation>expected a parameter id, &quot;off&quot; or null</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a colour: write it as #rrggbb</source>
+        <translation>&apos;%1&apos; is not a colour: write it as #rrggbb</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: expected rising or falling</source>
+        <translation>&apos;%1&apos;: expected rising or falling</translation>
+    </message>
+    <message>
+        <source>channel %1</source>
+        <translation>channel %1</translation>
+    </message>
+    <message>
+        <source>channel %1&apos;s %2</source>
+        <translation>channel %1&apos;s %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a parameter id: write it as group.number (ru.03), a hexadecimal address (0203h), with @set where it is read from another set (op.11@2), or off</source>
+        <translation>&apos;%1&apos; is not a parameter id: write it as group.number (ru.03), a hexadecimal address (0203h), with @set where it is read from another set (op.11@2), or off</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: the set after @ is 0..%2, e.g. op.11@2</source>
+        <translation>&apos;%1&apos;: the set after @ is 0..%2, e.g. op.11@2</translation>
+    </message>
+    <message>
+        <source>%1 (line %2, column %3)</source>
+        <translation>%1 (line %2, column %3)</translation>
+    </message>
+    <message>
+        <source>not JSON: %1</source>
+        <translation>not JSON: %1</translation>
+    </message>
+    <message>
+        <source>not a DriveDesk scope preset: the document is not a JSON object</source>
+        <translation>not a DriveDesk scope preset: the document is not a JSON object</translation>
+    </message>
+    <message>
+        <source>%1: appears twice in one object</source>
+        <translation>%1: appears twice in one object</translation>
+    </message>
+    <message>
+        <source>give the preset a name of 1 to %1 characters</source>
+        <translation>give the preset a name of 1 to %1 characters</translation>
+    </message>
+    <message>
+        <source>expected %1 channels, found %2</source>
+        <translation>expected %1 channels, found %2</translation>
+    </message>
+    <message>
+        <source>preset file &apos;%1&apos;: %2</source>
+        <translation>preset file &apos;%1&apos;: %2</translation>
+    </message>
+</context>
+<context>
+    <name>ScopePresetLibrary</name>
+    <message>
+        <source>cannot make the folder &apos;%1&apos; for the presets</source>
+        <translation>cannot make the folder &apos;%1&apos; for the presets</translation>
     </message>
 </context>
 <context>
@@ -7029,6 +7331,38 @@ dialog.
     <message>
         <source>not enough memory for a spectrum</source>
         <translation>not enough memory for a spectrum</translation>
+    </message>
+</context>
+<context>
+    <name>ScopeSpectrumPlot</name>
+    <message>
+        <source>%1 %2</source>
+        <comment>number and unit</comment>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>Frequency [Hz]</source>
+        <translation>Frequency [Hz]</translation>
+    </message>
+    <message>
+        <source>Amplitude</source>
+        <translation>Amplitude</translation>
+    </message>
+    <message>
+        <source>Frequency</source>
+        <translation>Frequency</translation>
+    </message>
+    <message>
+        <source>The highest peaks, the highest first</source>
+        <translation>The highest peaks, the highest first</translation>
+    </message>
+    <message>
+        <source>Amplitude [%1]</source>
+        <translation>Amplitude [%1]</translation>
+    </message>
+    <message>
+        <source>Hz</source>
+        <translation>Hz</translation>
     </message>
 </context>
 <context>
