@@ -33,7 +33,9 @@ void ScopeMathTraces::setSeries(const QList<std::shared_ptr<const ScopeSeries>> 
         trace.graph = m_plot->addGraph(m_plot->xAxis, trace.axis);
         trace.graph->setAdaptiveSampling(false);
         const QColor color = defaultColor(int(m_traces.size()));
-        trace.graph->setPen(QPen(color, 1.0, Qt::DashLine));
+        // Solid: its colour, its own axis and its legend entry tell it from the channels, and
+        // a dashed pen of thousands of segments took longer to draw than the four channels.
+        trace.graph->setPen(QPen(color, 1.0));
         trace.axis->setBasePen(QPen(color));
         trace.axis->setTickPen(QPen(color));
         trace.axis->setSubTickPen(QPen(color));
