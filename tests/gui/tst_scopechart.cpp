@@ -402,6 +402,25 @@ private slots:
         QCOMPARE(chart->plot()->legend->itemCount(), 3);
     }
 
+    // A drive whose channels are all off: no legend entry, and the time axis still spans the
+    // chart (an empty legend once capped it to a strip a few pixels wide).
+    void withEveryChannelOffTheAxesSpanTheChart()
+    {
+        ScopeRecording recording;
+        fill(recording, 5'000);
+        for (ScopeChannel &channel : recording.channels)
+            channel.enabled = false;
+        const auto chart = shownChart(recording);
+        QVERIFY(chart);
+        chart->recordingChanged();
+        chart->redrawNow();
+        QCOMPARE(chart->plot()->legend->itemCount(), 0);
+        const int plotWidth = chart->plot()->width();
+        const int axisWidth = chart->plot()->axisRect()->width();
+        QVERIFY2(axisWidth > plotWidth / 2,
+                 qPrintable(QStringLiteral("%1 of %2 px").arg(axisWidth).arg(plotWidth)));
+    }
+
     void aFrozenViewKeepsItsSamples()
     {
         ScopeRecording recording;

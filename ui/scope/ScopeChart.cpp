@@ -34,16 +34,7 @@ ScopeChart::ScopeChart(QWidget *parent)
     m_plot->xAxis->setLabel(tr("Time [s]"));
     m_plot->xAxis->setRange(0, m_rollSeconds);
     m_plot->yAxis->setRange(0, 1);
-    // The legend names the channels in a row of its own above the traces, never over them.
-    m_plot->legend->setVisible(true);
-    m_plot->axisRect()->insetLayout()->take(m_plot->legend);
-    m_plot->axisRect()->insetLayout()->simplify();
-    m_plot->plotLayout()->insertRow(0);
-    m_plot->plotLayout()->addElement(0, 0, m_plot->legend);
-    m_plot->plotLayout()->setRowStretchFactor(0, 0.001);
-    m_plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
-    m_plot->legend->setBorderPen(Qt::NoPen);
-    m_plot->legend->setMargins(QMargins(4, 2, 4, 0));
+    placeLegend();
     m_plot->setMouseTracking(true);
     m_plot->setFocusPolicy(Qt::StrongFocus);
     m_plot->setToolTip(helpText());

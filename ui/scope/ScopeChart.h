@@ -179,6 +179,9 @@ protected:
 private:
     enum class View { Roll, All, Fixed };
 
+    // ScopeChartView.cpp: the legend in a row of its own above the traces.
+    void placeLegend();
+
     // What recordingChanged() does; a new recording also leaves a fixed view.
     void reread(bool newRecording);
     void setView(View view);

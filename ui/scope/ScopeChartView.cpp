@@ -187,4 +187,22 @@ void ScopeChart::fitValueAxes()
     m_math->fitAxes(kFitMargin);
 }
 
+void ScopeChart::placeLegend()
+{
+    // The legend names the channels in a row of its own above the traces, never over them.
+    m_plot->legend->setVisible(true);
+    m_plot->axisRect()->insetLayout()->take(m_plot->legend);
+    m_plot->axisRect()->insetLayout()->simplify();
+    m_plot->plotLayout()->insertRow(0);
+    m_plot->plotLayout()->addElement(0, 0, m_plot->legend);
+    m_plot->plotLayout()->setRowStretchFactor(0, 0.001);
+    m_plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    m_plot->legend->setBorderPen(Qt::NoPen);
+    m_plot->legend->setMargins(QMargins(4, 2, 4, 0));
+    // An empty legend (no channel drawn: a drive whose channels are off) is as wide as its
+    // margins at most, and the column it shares with the traces would be capped to that. A
+    // width set below QWIDGETSIZE_MAX (margins included) is taken as it is, whatever the items.
+    m_plot->legend->setMaximumSize(QWIDGETSIZE_MAX / 2, QWIDGETSIZE_MAX);
+}
+
 } // namespace DriveDesk
