@@ -172,6 +172,9 @@ private slots:
         QCOMPARE(offeredPresets(*dock), QStringList{QStringLiteral("Speed step")});
         QVERIFY(loadPreset(*dock, QStringLiteral("Speed step")));
         QCOMPARE(status(*dock), QStringLiteral("Preset 'Speed step' loaded."));
+        // What the window does next (the connection's news) leaves the outcome said.
+        dock->updateActions();
+        QCOMPARE(status(*dock), QStringLiteral("Preset 'Speed step' loaded."));
         QCOMPARE(panel->choices()[0],
                  std::optional<ChannelAssignment>(ChannelAssignment{kDcLinkVoltage, 0x01}));
         QCOMPARE(panel->choices()[1],

@@ -228,15 +228,17 @@ void ScopeDock::updateActions()
     m_triggerAction->setEnabled(connected && m_hasDrive && !m_readingOffline);
     m_toFileAction->setEnabled(!busy);
     m_panel->setSourcesEditable(!busy);
-    if (!busy && m_recording->buffer.count() == 0) {
+    if (!busy && m_recording->buffer.count() == 0 && (m_hintShown || m_status->text().isEmpty())) {
         showStatus(connected && m_hasDrive
                        ? tr("Choose the sources and press Record (F9), or open a recording.")
                        : tr("Connect to a drive to record, or open a recording."));
+        m_hintShown = true;
     }
 }
 
 void ScopeDock::showStatus(const QString &text, bool problem)
 {
+    m_hintShown = false;
     m_status->setText(text);
     m_status->setStyleSheet(problem ? QStringLiteral("color: #b00020;") : QString());
 }

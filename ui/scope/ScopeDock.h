@@ -170,6 +170,9 @@ private:
     bool m_assigning = false;
     bool m_readingOffline = false;
     bool m_unsaved = false; // the recording shown is in memory only
+    // The status line shows the hint of an empty dock, not the outcome of something the user
+    // did (a preset loaded, a file refused): only a hint is replaced by the next hint.
+    bool m_hintShown = false;
     QString m_recordFile; // where the next recording also goes; empty: memory only
     QString m_plantFile; // the plant open in the window; empty: none
     QString m_presetName; // the preset saved or loaded last, offered as the next name
