@@ -4956,15 +4956,15 @@ Home: the whole recording; End: follow the newest samples; A: fit the values; Sp
     <message numerus="yes">
         <source>%1 (%Ln sample(s)) drawn over the recording, aligned at its trigger.</source>
         <translation>
-            <numerusform>%1 (%Ln sample(s)) drawn over the recording, aligned at its trigger.</numerusform>
-            <numerusform>%1 (%Ln sample(s)) drawn over the recording, aligned at its trigger.</numerusform>
+            <numerusform>%1 (%Ln sample) drawn over the recording, aligned at its trigger.</numerusform>
+            <numerusform>%1 (%Ln samples) drawn over the recording, aligned at its trigger.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <source>%1 (%Ln sample(s)) drawn over the recording, aligned at its start.</source>
         <translation>
-            <numerusform>%1 (%Ln sample(s)) drawn over the recording, aligned at its start.</numerusform>
-            <numerusform>%1 (%Ln sample(s)) drawn over the recording, aligned at its start.</numerusform>
+            <numerusform>%1 (%Ln sample) drawn over the recording, aligned at its start.</numerusform>
+            <numerusform>%1 (%Ln samples) drawn over the recording, aligned at its start.</numerusform>
         </translation>
     </message>
     <message>
@@ -5211,8 +5211,8 @@ Home: the whole recording; End: follow the newest samples; A: fit the values; Sp
     <message numerus="yes">
         <source>%1: %Ln sample(s) from %2 s to %3 s, %4 points at %5 Hz, bins of %6 Hz</source>
         <translation>
-            <numerusform>%1: %Ln sample(s) from %2 s to %3 s, %4 points at %5 Hz, bins of %6 Hz</numerusform>
-            <numerusform>%1: %Ln sample(s) from %2 s to %3 s, %4 points at %5 Hz, bins of %6 Hz</numerusform>
+            <numerusform>%1: %Ln sample from %2 s to %3 s, %4 points at %5 Hz, bins of %6 Hz</numerusform>
+            <numerusform>%1: %Ln samples from %2 s to %3 s, %4 points at %5 Hz, bins of %6 Hz</numerusform>
         </translation>
     </message>
     <message>

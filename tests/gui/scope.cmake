@@ -22,7 +22,7 @@ drivedesk_add_test(NAME tst_scopemathtraces LABELS gui
 # The spectrum window beside a chart: a recording of a known sine; its peak over the view,
 # between the cursors, and of a math channel; too few samples.
 drivedesk_add_test(NAME tst_scopespectrumview LABELS gui
-    SOURCES gui/tst_scopespectrumview.cpp LIBS drivedesk_ui)
+    SOURCES gui/tst_scopespectrumview.cpp LIBS drivedesk_ui drivedesk_translations)
 # A second recording overlaid in the dock (no drive): aligned at the trigger or the start,
 # named in the legend, read by the cursors, kept when the recording shown is replaced.
 drivedesk_add_test(NAME tst_scopeoverlayview LABELS gui

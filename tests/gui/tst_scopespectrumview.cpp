@@ -8,6 +8,8 @@
 #include "scope/ScopeRecording.h"
 #include "scope/ScopeSpectrumView.h"
 
+#include "Translations.h"
+
 #include <QComboBox>
 #include <QLocale>
 #include <QSignalSpy>
@@ -90,6 +92,9 @@ class TestScopeSpectrumView : public QObject
 {
     Q_OBJECT
 private slots:
+    // The English catalogue holds the plural forms ("2,000 samples") the window shows.
+    void initTestCase() { QVERIFY(installTranslations(QStringLiteral("en"))); }
+
     void theHighestPeakOverTheViewAndBetweenTheCursors()
     {
         ScopeRecording recording = sineRecording();
@@ -121,6 +126,13 @@ private slots:
         QVERIFY(peaks->item(0, 1)->text().endsWith(QStringLiteral(" Hz")));
         QVERIFY(view->message().contains(locale.toString(kSamples)));
         QVERIFY(!view->plot()->graph(0)->data()->isEmpty());
+        // docs/scope-spectrum.png
+        const QString screenshot = qEnvironmentVariable("DRIVEDESK_SPECTRUM_SCREENSHOT");
+        if (!screenshot.isEmpty()) {
+            view->resize(820, 420);
+            QTest::qWait(300);
+            QVERIFY(view->grab().save(screenshot));
+        }
 
         // Between the cursors, placed in either order: 512 samples, their spectrum.
         chart->setCursorTime(0, double(kStartMs + 711));
