@@ -230,9 +230,15 @@ double hannResponse(double offset)
 QList<ScopeSpectrumPeak> scopeSpectrumPeaks(const std::vector<double> &amplitude, double binHz,
                                             int count)
 {
+    // Below this share of the highest amplitude a maximum is the transform's rounding (about
+    // 1e-15 of it), not the signal: a 32-bit channel's smallest step is 2e-10 of its range.
+    constexpr double kRounding = 1e-12;
+    const double highest
+        = amplitude.empty() ? 0.0 : *std::max_element(amplitude.begin(), amplitude.end());
     std::vector<std::size_t> maxima;
     for (std::size_t k = 1; k + 1 < amplitude.size(); ++k) {
-        if (amplitude[k] > amplitude[k - 1] && amplitude[k] >= amplitude[k + 1])
+        if (amplitude[k] > amplitude[k - 1] && amplitude[k] >= amplitude[k + 1]
+            && amplitude[k] > kRounding * highest)
             maxima.push_back(k);
     }
     const auto higher = [&](std::size_t a, std::size_t b) { return amplitude[a] > amplitude[b]; };

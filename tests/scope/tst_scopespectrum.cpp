@@ -152,6 +152,20 @@ private slots:
         verifyPeak(*spectrum, 0, sine, 0.02);
     }
 
+    // A sine on a bin of its own, nothing else: one peak. The bins beside it hold the
+    // transform's rounding (1e-15 of it), which is no peak of the signal.
+    void aPureSineHasOnePeak()
+    {
+        const Sine pure { 50.0, 10.0 };
+        const std::optional<ScopeSpectrum> spectrum
+            = computeScopeSpectrum(signal(evenTimes(2000, 1), { pure }));
+        QVERIFY(spectrum);
+        verifyPeak(*spectrum, 0, pure, 0.005);
+        QVERIFY2(spectrum->peaks.size() <= 4, qPrintable(describe(*spectrum)));
+        for (const ScopeSpectrumPeak &peak : spectrum->peaks)
+            QVERIFY2(peak.amplitude > 1e-6, qPrintable(describe(*spectrum)));
+    }
+
     void twoSines()
     {
         const Sine strong { 30.0, 2.0 };
