@@ -1,19 +1,27 @@
 #include "BusClock.h"
 
 #include "SimulatedBus.h"
-
-#include <limits>
+#include "link/PreciseAlarm.h"
 
 namespace DriveDesk {
+
+namespace {
+
+// A thread woken by a timer runs some tens of microseconds after the time it asked for, more
+// on a busy machine. The alarm is set this much early and the rest is waited in passes of the
+// event loop, so that a transmission is handed out when its last byte would have arrived, as a
+// wire hands it, and never before.
+constexpr qint64 kWakeEarlyNs = 150'000;
+
+} // namespace
 
 BusClock::BusClock(SimulatedBus *bus, QObject *parent)
     : QObject(parent)
     , m_bus(bus)
+    , m_alarm(new PreciseAlarm(this))
 {
     m_clock.start();
-    m_timer.setSingleShot(true);
-    m_timer.setTimerType(Qt::PreciseTimer);
-    connect(&m_timer, &QTimer::timeout, this, &BusClock::deliver);
+    connect(m_alarm, &PreciseAlarm::timeout, this, &BusClock::deliver);
 }
 
 void BusClock::receive(const QByteArray &bytes)
@@ -24,7 +32,7 @@ void BusClock::receive(const QByteArray &bytes)
 
 void BusClock::resetLine()
 {
-    m_timer.stop();
+    m_alarm->stop();
     m_bus->resetLine();
 }
 
@@ -32,15 +40,11 @@ void BusClock::arm()
 {
     const std::optional<qint64> due = m_bus->nextDueNs();
     if (!due) {
-        m_timer.stop();
+        m_alarm->stop();
         return;
     }
     const qint64 waitNs = *due - nowNs();
-    // QTimer counts whole milliseconds. Rounding up would hand every reply out up to a
-    // millisecond late, a turnaround no drive has; so the whole milliseconds are waited and the
-    // rest in zero-time steps. A transmission is still never handed out before its last byte.
-    const qint64 waitMs = waitNs <= 0 ? 0 : waitNs / 1'000'000;
-    m_timer.start(int(std::min<qint64>(waitMs, std::numeric_limits<int>::max())));
+    m_alarm->start(waitNs > kWakeEarlyNs ? waitNs - kWakeEarlyNs : 0);
 }
 
 void BusClock::deliver()

@@ -2,15 +2,15 @@
 
 #include <QElapsedTimer>
 #include <QObject>
-#include <QTimer>
 
 namespace DriveDesk {
 
+class PreciseAlarm;
 class SimulatedBus;
 
 // Runs a SimulatedBus in real time: stamps the operator's bytes with the time on its clock and
-// hands each transmission out once its last byte would have arrived. One coarse timer is armed
-// for the earliest due time; the bus keeps the exact schedule in ns, so no rounding adds up.
+// hands each transmission out once its last byte would have arrived. One alarm is armed for the
+// earliest due time; the bus keeps the exact schedule in ns, so no rounding adds up.
 // Thread: lives in the thread of its owner; the bus is not shared with other threads.
 class BusClock : public QObject
 {
@@ -33,7 +33,7 @@ private:
 
     SimulatedBus *m_bus = nullptr;
     QElapsedTimer m_clock;
-    QTimer m_timer;
+    PreciseAlarm *m_alarm = nullptr; // a child
 };
 
 } // namespace DriveDesk

@@ -13,3 +13,6 @@ drivedesk_add_test(NAME tst_linktosimulator LABELS unit integration
 # Unix signals into the event loop, as the command-line programs take Ctrl+C.
 drivedesk_add_test(NAME tst_signalnotifier LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_signalnotifier.cpp LIBS drivedesk_link)
+# The alarm finer than a millisecond that paces the scope's polls and the simulated wire.
+drivedesk_add_test(NAME tst_precisealarm LABELS unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_precisealarm.cpp LIBS drivedesk_link)
