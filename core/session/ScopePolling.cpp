@@ -1,13 +1,27 @@
 #include "ScopePolling.h"
 
+#include "link/PreciseAlarm.h"
+
 #include <QCoreApplication>
 #include <QMutexLocker>
-#include <QTimer>
 
 #include <algorithm>
 #include <cmath>
 
 namespace DriveDesk {
+
+namespace {
+
+// How the polls' grid follows the drive (ScopePollJob::learnSpacing()).
+constexpr int kShiftDivisor = 8;  // a repeated sample moves the grid an eighth of a tick earlier
+constexpr int kRepeatsClose = 32; // a repeat within this many polls of the last one...
+constexpr int kWidenDivisor = 8;  // ...widens the grid by an eighth of a tick,
+constexpr qint64 kMostTicks = 2;  // up to two ticks;
+constexpr int kDistinctBeforeNarrowing = 128; // a run of new samples narrows it again,
+constexpr int kNarrowDivisor = 32;            // by a thirty-second, down to one tick
+constexpr int kNearSlotDivisor = 4; // a grid instant nearer than a quarter step is skipped
+
+} // namespace
 
 void ScopeInbox::put(const ScopePoll &poll)
 {
@@ -39,6 +53,11 @@ ScopePollJob::ScopePollJob(std::shared_ptr<ScopeInbox> inbox, ScopePollOptions o
 
 ScopePollJob::~ScopePollJob() = default;
 
+void ScopePollJob::DeleteLater::operator()(PreciseAlarm *alarm) const
+{
+    alarm->deleteLater();
+}
+
 void ScopePollJob::start()
 {
     if (!sink().supports(Service::Scope, Access::Read)) {
@@ -47,10 +66,9 @@ void ScopePollJob::start()
         return finish();
     }
     m_clock.start();
-    m_pace = std::make_unique<QTimer>();
-    m_pace->setSingleShot(true);
-    m_pace->setTimerType(Qt::PreciseTimer);
-    QObject::connect(m_pace.get(), &QTimer::timeout, [this] { sendMore(); });
+    m_spacingNs = std::max<qint64>(m_options.tickNs, 0);
+    m_pace.reset(new PreciseAlarm);
+    QObject::connect(m_pace.get(), &PreciseAlarm::timeout, [this] { sendMore(); });
     sendMore();
 }
 
@@ -71,19 +89,19 @@ void ScopePollJob::sendMore()
     m_stopping = m_stopping || isCancelled() || isStopRequested();
     const int inFlight = std::max(1, m_options.inFlight);
     while (!m_stopping && m_onTheWay < inFlight) {
+        const qint64 nowNs = m_clock.nsecsElapsed();
+        if (const qint64 waitNs = waitBeforeNextNs(nowNs); waitNs > 0) {
+            if (!m_pace->isActive())
+                m_pace->start(waitNs);
+            break;
+        }
         if (m_options.maxRateHz > 0) {
-            const auto periodNs = qint64(1e9 / m_options.maxRateHz);
-            const qint64 nowNs = m_clock.nsecsElapsed();
-            const qint64 waitNs = m_nextDueNs - nowNs;
-            if (waitNs > 0) {
-                if (!m_pace->isActive())
-                    m_pace->start(int(std::ceil(double(waitNs) / 1e6)));
-                break;
-            }
             // A late timer may make up one period, no more: after a stall the polls go on at
             // the rate, not in a burst that would exceed it.
+            const auto periodNs = qint64(1e9 / m_options.maxRateHz);
             m_nextDueNs = std::max(m_nextDueNs, nowNs - periodNs) + periodNs;
         }
+        takeSlot(nowNs);
         const qint64 sequence = m_sent++;
         ++m_onTheWay;
         sink().submit(Telegram::request(Service::Scope, Access::Read, ScopeData{}),
@@ -94,6 +112,33 @@ void ScopePollJob::sendMore()
     // one of them is always pending while the job runs.
     if (m_stopping && m_onTheWay == 0)
         finish();
+}
+
+qint64 ScopePollJob::waitBeforeNextNs(qint64 nowNs) const
+{
+    qint64 waitNs = 0;
+    if (m_options.maxRateHz > 0)
+        waitNs = m_nextDueNs - nowNs;
+    if (m_sent > 0 && m_spacingNs > 0)
+        waitNs = std::max(waitNs, m_slotNs - nowNs);
+    return waitNs;
+}
+
+// The polls go on a grid of one tick (or more, learnSpacing()): a poll sent now takes the slot
+// it falls in, and the next may go at the grid's next instant. A grid keeps its place against
+// the drive's clock, where spacing each poll from the one before would add every late wake-up
+// to the step. A poll sent between two instants (when an answer freed its place) makes the
+// next instant wait a step when it is too near to be sure of a tick of its own.
+void ScopePollJob::takeSlot(qint64 nowNs)
+{
+    if (m_spacingNs <= 0)
+        return;
+    if (m_sent == 0)
+        m_slotNs = nowNs;
+    if (nowNs >= m_slotNs)
+        m_slotNs += ((nowNs - m_slotNs) / m_spacingNs + 1) * m_spacingNs;
+    if (m_slotNs - nowNs < m_spacingNs / kNearSlotDivisor)
+        m_slotNs += m_spacingNs;
 }
 
 void ScopePollJob::handle(qint64 sequence, const Reply &reply)
@@ -135,12 +180,41 @@ void ScopePollJob::release()
     for (auto it = m_waiting.begin(); it != m_waiting.end() && it->first == m_nextRelease;
          it = m_waiting.erase(it)) {
         ++m_nextRelease;
-        if (it->second)
+        if (it->second) {
+            learnSpacing(*it->second);
             m_inbox->put(*it->second);
+        } else {
+            m_lastTimestamp.reset();
+        }
         any = true;
     }
     if (any)
         m_inbox->count(m_end.counts);
+}
+
+// Two polls in a row that found the same tick of the drive's clock: the first reached the drive
+// late in its tick, and a late wake-up pushed it into the next one's. The grid moves earlier in
+// the tick. Repeats that keep coming say the polls reach the drive less evenly than they leave
+// (a line or an adapter that bunches them): the grid's step widens, and narrows again after a
+// long run without.
+void ScopePollJob::learnSpacing(const ScopePoll &poll)
+{
+    const bool repeated = m_lastTimestamp == poll.timestamp;
+    m_lastTimestamp = poll.timestamp;
+    const qint64 tickNs = m_options.tickNs;
+    if (tickNs <= 0)
+        return;
+    m_sinceRepeat = std::min(m_sinceRepeat + 1, kRepeatsClose + 1);
+    if (repeated) {
+        m_slotNs -= tickNs / kShiftDivisor;
+        if (m_sinceRepeat <= kRepeatsClose)
+            m_spacingNs = std::min(m_spacingNs + tickNs / kWidenDivisor, kMostTicks * tickNs);
+        m_sinceRepeat = 0;
+        m_distinctInARow = 0;
+    } else if (++m_distinctInARow >= kDistinctBeforeNarrowing) {
+        m_spacingNs = std::max(m_spacingNs - tickNs / kNarrowDivisor, tickNs);
+        m_distinctInARow = 0;
+    }
 }
 
 void ScopePollJob::finish()

@@ -13,9 +13,10 @@
 #include <memory>
 #include <optional>
 
-class QTimer;
 
 namespace DriveDesk {
+
+class PreciseAlarm;
 
 // One service-18 answer as it came: the drive's 16-bit timestamp, the four raw channels, and
 // the host's clock when it arrived (for unwrapping across long gaps, ScopeClock).
@@ -59,6 +60,10 @@ struct ScopePollOptions
     // duplex; DIN66019II carries one at a time whatever this says.
     int inFlight = 4;
     double maxRateHz = 0; // 0: as fast as the link allows
+    // The drive's clock tick. Two polls that reach the drive within one tick may find the same
+    // sample, and the second one's line time brings nothing: polls go one to a tick (further
+    // apart while answers repeat samples all the same). 0: as the answers come.
+    qint64 tickNs = 1'000'000;
     // Polls given up one after the other before the recording counts the drive as gone.
     int lostInARowLimit = 3;
 };
@@ -87,14 +92,29 @@ private:
     void sendMore();
     void handle(qint64 sequence, const Reply &reply);
     void release();
+    void learnSpacing(const ScopePoll &poll);
+    void takeSlot(qint64 nowNs);
+    qint64 waitBeforeNextNs(qint64 nowNs) const;
     void finish();
 
     const std::shared_ptr<ScopeInbox> m_inbox;
     const ScopePollOptions m_options;
     QElapsedTimer m_clock;
-    std::unique_ptr<QTimer> m_pace; // made in the client's thread, for the rate limit
+    // Made in the client's thread for the spacing and the rate limit, and given back to it: the
+    // job itself may end in another thread, where the alarm's notifier cannot be taken down.
+    struct DeleteLater
+    {
+        void operator()(PreciseAlarm *alarm) const;
+    };
+    std::unique_ptr<PreciseAlarm, DeleteLater> m_pace;
     qint64 m_sent = 0;
     qint64 m_nextDueNs = 0; // the rate limit's next poll, on m_clock
+    // The polls' grid (ScopePolling.cpp): the next instant a poll may go, and the step.
+    qint64 m_slotNs = 0;
+    qint64 m_spacingNs = 0; // from options.tickNs, wider while samples repeat
+    int m_distinctInARow = 0;
+    int m_sinceRepeat = 1 << 16; // polls since the last repeated sample, counted up to a few
+    std::optional<quint16> m_lastTimestamp; // of the poll released last, if it brought one
     qint64 m_nextRelease = 0;
     // Answers that came before an earlier poll's: held until that one is in.
     std::map<qint64, std::optional<ScopePoll>> m_waiting;

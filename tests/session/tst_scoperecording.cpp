@@ -332,6 +332,35 @@ private slots:
         QVERIFY(recording.buffer.count() >= 10);
     }
 
+    void everyPollFindsATickOfItsOwn_data()
+    {
+        QTest::addColumn<Protocol>("protocol");
+        QTest::newRow("HSP5") << Protocol::Hsp5;
+        QTest::newRow("DIN66019II") << Protocol::Din66019II;
+    }
+
+    void everyPollFindsATickOfItsOwn()
+    {
+        // A drive that answers at once could take many polls in one tick of its clock, each
+        // bringing the same sample. One poll per tick: the recording is the drive's every
+        // millisecond, and the answers that repeat one are the odd late wake-up, not the rule.
+        QFETCH(Protocol, protocol);
+        Session s(simulated(protocol, fast()));
+        QVERIFY(s.connected());
+        ScopeRecording recording;
+        ScopeRecorder recorder(s.client.get());
+        ScopeRecorderOptions options;
+        options.durationMs = 400;
+        const ScopePollEnd end = record(recorder, recording, options, [] { return false; });
+        QVERIFY2(end.reason.isEmpty(), qPrintable(end.reason));
+        const ScopeRecorderStatus status = recorder.status();
+        QVERIFY2(recording.buffer.count() >= 20, qPrintable(QString::number(recording.buffer.count())));
+        QVERIFY2(status.repeated * 20 <= end.counts.answered,
+                 qPrintable(QStringLiteral("%1 of %2 answers repeated the sample before")
+                                .arg(status.repeated).arg(end.counts.answered)));
+        QVERIFY(timesAscend(recording));
+    }
+
     void recordsOverASerialPort()
     {
         // A pseudo-terminal through QSerialPort, as a USB adapter would be.
