@@ -75,33 +75,50 @@ void ClientWorker::openLink()
                                   .arg(m_settings.displayName()));
         return;
     }
-    // Queued: a link may report from inside send(), and the worker must not re-enter itself.
     // What a dropped link still had on its way is not this link's business.
     const quint64 generation = ++m_linkGeneration;
     connect(m_link.get(), &Link::opened, this, &ClientWorker::onLinkOpened);
-    connect(
-        m_link.get(), &Link::received, this,
-        [this, generation](const QByteArray &bytes) {
-            if (generation == m_linkGeneration)
-                onReceived(bytes);
-        },
-        Qt::QueuedConnection);
-    connect(
-        m_link.get(), &Link::lineError, this,
-        [this, generation](const QString &reason) {
-            if (generation == m_linkGeneration)
-                onLineError(reason);
-        },
-        Qt::QueuedConnection);
-    connect(
-        m_link.get(), &Link::failed, this,
-        [this, generation](const QString &reason) {
-            if (generation == m_linkGeneration)
-                onLinkFailed(reason);
-        },
-        Qt::QueuedConnection);
+    connect(m_link.get(), &Link::received, this, [this, generation](const QByteArray &bytes) {
+        fromLink(generation, [this, bytes] { onReceived(bytes); });
+    });
+    connect(m_link.get(), &Link::lineError, this, [this, generation](const QString &reason) {
+        fromLink(generation, [this, reason] { onLineError(reason); });
+    });
+    connect(m_link.get(), &Link::failed, this, [this, generation](const QString &reason) {
+        fromLink(generation, [this, reason] { onLinkFailed(reason); });
+    });
     setState(DriveClient::State::Connecting);
     m_link->open();
+}
+
+void ClientWorker::fromLink(quint64 generation, std::function<void()> report)
+{
+    auto checked = [this, generation, report = std::move(report)] {
+        if (generation == m_linkGeneration)
+            report();
+    };
+    if (!m_inSend && m_linkReportsLater.empty())
+        return checked();
+    m_linkReportsLater.push_back(std::move(checked));
+    if (m_linkReportsLater.size() == 1)
+        QMetaObject::invokeMethod(this, &ClientWorker::runLinkReportsLater, Qt::QueuedConnection);
+}
+
+void ClientWorker::runLinkReportsLater()
+{
+    // A report may send, and what the link says then waits behind the ones still here.
+    while (!m_linkReportsLater.empty() && !m_inSend) {
+        const std::function<void()> report = std::move(m_linkReportsLater.front());
+        m_linkReportsLater.erase(m_linkReportsLater.begin());
+        report();
+    }
+}
+
+void ClientWorker::sendToLink(const QByteArray &bytes)
+{
+    m_inSend = true;
+    m_link->send(bytes);
+    m_inSend = false;
 }
 
 void ClientWorker::disconnectFromDrive()

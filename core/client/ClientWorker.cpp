@@ -264,7 +264,7 @@ void ClientWorker::transmit(PendingRequest &request)
     m_sinceLastSend.restart();
     m_busyLineSince.invalidate();
     noteSent(request);
-    m_link->send(bytes);
+    sendToLink(bytes);
     if (tracing()) {
         QString meaning = describe(request.wire);
         if (request.wire.driveAddress >= 0)
@@ -380,7 +380,7 @@ void ClientWorker::answerInverterRequest(const Telegram &request)
         return;
     }
     record(TrafficRecord::Kind::Sent, bytes, describe(answer), &answer, &request);
-    m_link->send(bytes);
+    sendToLink(bytes);
 }
 
 void OwnedSink::submit(const Telegram &request, std::function<void(const Reply &)> done)

@@ -101,6 +101,12 @@ private:
     void onLinkOpened();
     void onLinkFailed(const QString &reason);
     void dropLink();
+    // What the link reports (bytes, a line error, its failure) is handled at once, in the pass
+    // of the event loop that brought it; said from inside send(), it waits until the worker is
+    // out of it, and what follows waits behind it.
+    void fromLink(quint64 generation, std::function<void()> report);
+    void runLinkReportsLater();
+    void sendToLink(const QByteArray &bytes);
     // Opens the link at m_settings' baud rate; connectToDrive() after the rate is known.
     void openLink();
     // The drive answered at `baudRate`: the line's timing follows it.
@@ -230,7 +236,9 @@ private:
     bool m_recovering = false;
     quint8 m_lastInvokeId = 0;
     int m_selectedDrive = -1; // DIN66019(II): the drive the last EOT selected, -1 unknown
-    quint64 m_linkGeneration = 0; // which link's queued reports still count
+    quint64 m_linkGeneration = 0; // which link's reports still count
+    bool m_inSend = false;
+    std::vector<std::function<void()>> m_linkReportsLater;
     quint64 m_nextTicket = 1;
     quint64 m_nextOwner = 1;
     bool m_pumping = false;
