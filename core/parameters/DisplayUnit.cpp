@@ -70,4 +70,9 @@ std::optional<int> displayUnitFromSymbol(const QString &symbol)
     return found;
 }
 
+QString withUnit(const QString &number, const QString &unit)
+{
+    return unit.isEmpty() ? number : number + QLatin1Char(' ') + unit;
+}
+
 } // namespace DriveDesk

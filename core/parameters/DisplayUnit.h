@@ -17,4 +17,7 @@ QString displayUnitSymbol(int code);
 // "degC", "m/s2"), then case-insensitively ("hz"). Nothing for no unit or an unknown one.
 std::optional<int> displayUnitFromSymbol(const QString &symbol);
 
+// A number as shown with its unit ("7.50 s"), or alone when there is none.
+QString withUnit(const QString &number, const QString &unit);
+
 } // namespace DriveDesk

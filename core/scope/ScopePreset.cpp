@@ -69,7 +69,7 @@ bool readHeader(JsonObjectReader &root)
     return root.ok();
 }
 
-ScopePresetChannel readChannel(JsonObjectReader &reader)
+ScopePresetChannel readPresetChannel(JsonObjectReader &reader)
 {
     ScopePresetChannel channel;
     const QString sourceKey = QStringLiteral("source");
@@ -257,7 +257,7 @@ std::optional<ScopePreset> ScopePresetFile::fromJson(const QByteArray &json, QSt
         for (qsizetype i = 0; i < channels.size() && root.ok(); ++i) {
             JsonObjectReader reader = root.element(channelsKey, channels, i);
             if (reader.ok())
-                preset.channels[std::size_t(i)] = readChannel(reader);
+                preset.channels[std::size_t(i)] = readPresetChannel(reader);
         }
         const QString triggerKey = QStringLiteral("trigger");
         const QJsonObject trigger = root.object(triggerKey);

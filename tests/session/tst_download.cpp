@@ -473,7 +473,7 @@ private slots:
         Session session(simulated(Protocol::Hsp5, options));
         QVERIFY(session.connected());
         const auto change = [](quint16 address, qint32 raw, bool perSet = true) {
-            return ValueChange{address, perSet, {WriteStep{0x01, raw, false}}};
+            return ValueChange{address, perSet, {WriteStep{0x01, raw, false}}, {}, true};
         };
         const QList<ValueChange> changes{change(kMaxSpeedForward, 2500), change(kSetPointer, 0, false),
                                          change(kFixedSpeed1, 123), change(kMinSpeedForward, 100),

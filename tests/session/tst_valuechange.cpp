@@ -67,7 +67,7 @@ public:
 
 ValueChange change(quint8 sets, qint32 raw)
 {
-    return ValueChange{kMinSpeedForward, true, {WriteStep{sets, raw, false}}};
+    return ValueChange{kMinSpeedForward, true, {WriteStep{sets, raw, false}}, {}, true};
 }
 
 } // namespace
@@ -289,7 +289,7 @@ private slots:
         ScriptedSink sink;
         std::optional<WriteOutcome> outcome;
         ValueChange twice{kMinSpeedForward, true,
-                          {WriteStep{0x03, 100, false}, WriteStep{0x01, 200, false}}};
+                          {WriteStep{0x03, 100, false}, WriteStep{0x01, 200, false}}, {}, true};
         sendValueChange(sink, Protocol::Hsp5, twice,
                         [&outcome](const WriteOutcome &o) { outcome = o; });
         QCOMPARE(sink.sent.size(), 1); // the first step's sets are written again after it

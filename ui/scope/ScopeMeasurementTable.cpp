@@ -1,6 +1,7 @@
 #include "ScopeMeasurementTable.h"
 
 #include "client/WhenFinished.h"
+#include "parameters/DisplayUnit.h"
 #include "scope/ScopeMathDefinition.h"
 #include "scope/ScopeSnapshot.h"
 
@@ -28,17 +29,12 @@ namespace {
 // Digits enough to tell values apart where no scaling says how many decimals: a math channel's.
 constexpr int kSignificantDigits = 5;
 
-QString number(double value, std::optional<int> decimals)
+// decimals < 0: none said, significant digits instead.
+QString number(double value, int decimals)
 {
-    if (!decimals)
+    if (decimals < 0)
         return QLocale().toString(value, 'g', kSignificantDigits);
-    return QLocale().toString(value, 'f', *decimals);
-}
-
-QString withUnit(const QString &number, const QString &unit)
-{
-    return unit.isEmpty() ? number : ScopeMeasurementTable::tr("%1 %2", "number and unit")
-                                         .arg(number, unit);
+    return QLocale().toString(value, 'f', decimals);
 }
 
 } // namespace
@@ -139,12 +135,12 @@ void ScopeMeasurementTable::showColumns(const QList<Column> &columns)
                                      .arg(column.title, column.unit));
         setHorizontalHeaderItem(c, header);
         const ScopeMeasurements &m = column.values;
-        const std::optional<int> decimals = column.decimals;
+        const int decimals = column.decimals.value_or(-1);
         // A mean or a rate is finer than the steps of the samples it comes from.
-        const std::optional<int> finer = decimals ? std::optional(*decimals + 1) : std::nullopt;
+        const int finer = decimals < 0 ? -1 : decimals + 1;
         const QString rateUnit
             = scopeMathUnit(ScopeMathDefinition::Kind::Derivative, column.unit).symbol;
-        const auto value = [&](double v, std::optional<int> places) {
+        const auto value = [&](double v, int places) {
             return m.samples > 0 ? withUnit(number(v, places), column.unit) : QString();
         };
         const auto time = [](const std::optional<ScopeTransition> &t) {

@@ -1,5 +1,7 @@
 #include "ScopeSpectrumPlot.h"
 
+#include "parameters/DisplayUnit.h"
+
 #include "QCustomPlotInclude.h"
 
 #include <QHeaderView>
@@ -15,12 +17,6 @@ namespace {
 
 // Significant digits of an amplitude: a spectrum's amplitudes have no scaling's decimals.
 constexpr int kAmplitudeDigits = 4;
-
-QString withUnit(const QString &number, const QString &unit)
-{
-    return unit.isEmpty() ? number : ScopeSpectrumPlot::tr("%1 %2", "number and unit")
-                                         .arg(number, unit);
-}
 
 } // namespace
 
