@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, and runs the whole test suite twice: as built in ./build (and
-# checks the Debian package made of it), and under AddressSanitizer and UndefinedBehaviorSanitizer
-# (leaks too) in ./build-sanitize.
+# Installs what is missing, builds, runs the whole test suite as built in ./build, and checks
+# the Debian package made of it.
+#   tools/test.sh --sanitized   the suite under AddressSanitizer and UndefinedBehaviorSanitizer
+#                               (leaks too) in ./build-sanitize instead; CI runs both (.ci/run)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash tools/setup.sh
+sanitized=false
+[ "${1:-}" = "--sanitized" ] && sanitized=true
+if $sanitized; then bash tools/setup.sh --packages; else bash tools/setup.sh; fi
 export QT_QPA_PLATFORM=offscreen
 
 # One build's suite. The tests that wait on a line (build/tests/waiting, tests/CMakeLists.txt)
@@ -23,13 +26,15 @@ suite() {
     return "$status"
 }
 
-suite build
-# The Debian package of that build, checked (tools/package.sh).
-tools/package.sh --check
+if ! $sanitized; then
+    suite build
+    # The Debian package of that build, checked (tools/package.sh).
+    tools/package.sh --check
+    exit 0
+fi
 
 # The sanitizers' options come with the tests (tests/CMakeLists.txt).
 cmake -S . -B build-sanitize $(tools/generator.sh build-sanitize) -DCMAKE_BUILD_TYPE=Debug \
-    -DDRIVEDESK_SANITIZE=ON \
-    -DDRIVEDESK_BUILD_BENCHMARKS=OFF
+    -DDRIVEDESK_SANITIZE=ON -DDRIVEDESK_BUILD_BENCHMARKS=OFF -DDRIVEDESK_UNITY_BUILD=ON
 cmake --build build-sanitize -j"$(nproc)"
 suite build-sanitize
