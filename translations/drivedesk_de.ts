@@ -5093,11 +5093,6 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
 <context>
     <name>DriveDesk::ScopeMeasurementTable</name>
     <message>
-        <source>%1 %2</source>
-        <comment>number and unit</comment>
-        <translation>%1 %2</translation>
-    </message>
-    <message>
         <source>Minimum</source>
         <translation>Minimum</translation>
     </message>
@@ -7335,11 +7330,6 @@ Verbindungsdialog.
 </context>
 <context>
     <name>ScopeSpectrumPlot</name>
-    <message>
-        <source>%1 %2</source>
-        <comment>number and unit</comment>
-        <translation>%1 %2</translation>
-    </message>
     <message>
         <source>Frequency [Hz]</source>
         <translation>Frequenz [Hz]</translation>
