@@ -5031,6 +5031,14 @@ Pos1: die ganze Aufzeichnung; Ende: den neuesten Abtastwerten folgen; A: Werte e
         <source>Channel %1 (%2): %3</source>
         <translation>Kanal %1 (%2): %3</translation>
     </message>
+    <message>
+        <source>A preset named &apos;%1&apos; is already saved in %2. Replace it?</source>
+        <translation>Eine Vorlage „%1“ ist in %2 bereits gespeichert. Ersetzen?</translation>
+    </message>
+    <message>
+        <source>&amp;Replace</source>
+        <translation>&amp;Ersetzen</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ScopeFeature</name>

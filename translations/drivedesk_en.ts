@@ -5031,6 +5031,14 @@ Home: the whole recording; End: follow the newest samples; A: fit the values; Sp
         <source>Channel %1 (%2): %3</source>
         <translation>Channel %1 (%2): %3</translation>
     </message>
+    <message>
+        <source>A preset named &apos;%1&apos; is already saved in %2. Replace it?</source>
+        <translation>A preset named &apos;%1&apos; is already saved in %2. Replace it?</translation>
+    </message>
+    <message>
+        <source>&amp;Replace</source>
+        <translation>&amp;Replace</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::ScopeFeature</name>

@@ -98,6 +98,11 @@ QList<ScopePresetEntry> ScopePresetLibrary::list(const QString &kind, QStringLis
     return entries;
 }
 
+QString ScopePresetLibrary::savePath(const QString &presetName) const
+{
+    return QDir(saveFolder()).filePath(fileName(presetName));
+}
+
 bool ScopePresetLibrary::save(const ScopePreset &preset, QString *path, QString *error) const
 {
     const QString folder = saveFolder();
@@ -106,7 +111,7 @@ bool ScopePresetLibrary::save(const ScopePreset &preset, QString *path, QString 
             *error = tr("cannot make the folder '%1' for the presets").arg(folder);
         return false;
     }
-    const QString file = QDir(folder).filePath(fileName(preset.name));
+    const QString file = savePath(preset.name);
     if (path)
         *path = file;
     return ScopePresetFile::save(file, preset, error);

@@ -48,6 +48,8 @@ public:
     // The presets for `kind` and those for any drive, beside the plant first, each folder's
     // by name. A file that cannot be read is left out and named in `problems`.
     QList<ScopePresetEntry> list(const QString &kind, QStringList *problems = nullptr) const;
+    // Where save() puts a preset of this name; a file there is a preset it would replace.
+    QString savePath(const QString &presetName) const;
     // Saves into saveFolder() (made where missing), replacing a preset of the same name there;
     // the file's path in `path`.
     bool save(const ScopePreset &preset, QString *path, QString *error = nullptr) const;

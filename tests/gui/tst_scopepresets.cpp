@@ -13,6 +13,7 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QInputDialog>
+#include <QMessageBox>
 #include <QLabel>
 #include <QMenu>
 #include <QSpinBox>
@@ -222,6 +223,60 @@ private slots:
         QCOMPARE(child<QSpinBox>(*dock, "scopeRateLimit")->value(), 125);
         // Nothing went to the drive: the assignment is written at Record.
         QVERIFY(!dock->isRecording());
+    }
+
+    void aPresetOfTheSameNameIsReplacedOnlyWhenTheUserSaysSo()
+    {
+        MainWindow window;
+        window.show();
+        QVERIFY(connectAndRead(window, simulated()));
+        auto *dock = window.findChild<ScopeDock *>();
+        chooseSource(*dock, 0, kDcLinkVoltage);
+        QVERIFY(savePresetAs(*dock, QStringLiteral("Speed step")));
+        const QString file = ScopePresetLibrary::userFolder() + QStringLiteral("/Speed step.json");
+        QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(file), kWaitMs);
+        const auto firstSource = [&file] {
+            const std::optional<ScopePreset> preset = ScopePresetFile::load(file);
+            return preset && preset->channels[0].source ? preset->channels[0].source->text()
+                                                        : QString();
+        };
+        QCOMPARE(firstSource(), QStringLiteral("ru.18"));
+
+        const auto question = [dock] {
+            QMessageBox *box = nullptr;
+            const bool shown = QTest::qWaitFor([&] {
+                box = dock->findChild<QMessageBox *>(QStringLiteral("scopePresetReplaceQuestion"));
+                return box && box->isVisible();
+            }, kWaitMs);
+            return shown ? box : nullptr;
+        };
+        // Asked, and cancelled: the preset on file stays as it was.
+        chooseSource(*dock, 0, kOutputVoltage);
+        QVERIFY(savePresetAs(*dock, QStringLiteral("Speed step ")));
+        QMessageBox *asked = question();
+        QVERIFY(asked);
+        QVERIFY2(asked->text().contains(QStringLiteral("'Speed step' is already saved")),
+                 qPrintable(asked->text()));
+        asked->button(QMessageBox::Cancel)->click();
+        QTRY_VERIFY_WITH_TIMEOUT(!dock->findChild<QMessageBox *>(
+                                     QStringLiteral("scopePresetReplaceQuestion")),
+                                 kWaitMs);
+        QCOMPARE(firstSource(), QStringLiteral("ru.18"));
+
+        // Asked again, and replaced.
+        QVERIFY(savePresetAs(*dock, QStringLiteral("Speed step")));
+        asked = question();
+        QVERIFY(asked);
+        QAbstractButton *replace = nullptr;
+        for (QAbstractButton *button : asked->buttons()) {
+            if (asked->buttonRole(button) == QMessageBox::AcceptRole)
+                replace = button;
+        }
+        QVERIFY(replace);
+        replace->click();
+        QTRY_COMPARE_WITH_TIMEOUT(firstSource(), QStringLiteral("ru.09"), kWaitMs);
+        QVERIFY2(status(*dock).contains(QStringLiteral("Preset 'Speed step' saved")),
+                 qPrintable(status(*dock)));
     }
 
     void withAPlantOpenThePresetIsKeptBesideIt()

@@ -158,6 +158,9 @@ private:
     void buildPresetButton(QToolBar *bar);
     void fillPresetMenu();
     void choosePresetName();
+    // A preset of that name is saved there already: replaced only when the user says so.
+    void askToReplacePreset(const QString &name, const QString &path);
+    void saveAndSayPreset(const QString &name);
     void loadPreset(const QString &path);
 
     WindowFrame &m_frame;

@@ -12,8 +12,11 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
+#include <QFileInfo>
 #include <QInputDialog>
 #include <QMenu>
+#include <QMessageBox>
+#include <QPushButton>
 #include <QSpinBox>
 #include <QToolBar>
 #include <QToolButton>
@@ -92,14 +95,37 @@ void ScopeDock::choosePresetName()
                                    .arg(QDir::toNativeSeparators(m_plantFile)));
     dialog->setTextValue(m_presetName);
     connect(dialog, &QInputDialog::textValueSelected, this, [this](const QString &name) {
-        QString path;
-        QString error;
-        if (savePreset(name, &path, &error))
-            showStatus(tr("Preset '%1' saved in %2.").arg(name.trimmed(), QDir::toNativeSeparators(path)));
-        else
-            showStatus(error, true);
+        const QString existing = ScopePresetLibrary(m_plantFile).savePath(name);
+        if (!name.trimmed().isEmpty() && QFileInfo::exists(existing))
+            return askToReplacePreset(name, existing);
+        saveAndSayPreset(name);
     });
     dialog->open();
+}
+
+void ScopeDock::askToReplacePreset(const QString &name, const QString &path)
+{
+    auto *question = new QMessageBox(
+        QMessageBox::Question, tr("Save Preset"),
+        tr("A preset named '%1' is already saved in %2. Replace it?")
+            .arg(name.trimmed(), QDir::toNativeSeparators(QFileInfo(path).absolutePath())),
+        QMessageBox::Cancel, this);
+    question->setObjectName(QStringLiteral("scopePresetReplaceQuestion"));
+    question->setAttribute(Qt::WA_DeleteOnClose);
+    QPushButton *replace = question->addButton(tr("&Replace"), QMessageBox::AcceptRole);
+    question->setDefaultButton(QMessageBox::Cancel);
+    connect(replace, &QPushButton::clicked, this, [this, name] { saveAndSayPreset(name); });
+    question->open();
+}
+
+void ScopeDock::saveAndSayPreset(const QString &name)
+{
+    QString path;
+    QString error;
+    if (savePreset(name, &path, &error))
+        showStatus(tr("Preset '%1' saved in %2.").arg(name.trimmed(), QDir::toNativeSeparators(path)));
+    else
+        showStatus(error, true);
 }
 
 ScopePreset ScopeDock::currentPreset(const QString &name) const
