@@ -204,16 +204,15 @@ void ScopePollJob::learnSpacing(const ScopePoll &poll)
     const qint64 tickNs = m_options.tickNs;
     if (tickNs <= 0)
         return;
-    m_sinceRepeat = std::min(m_sinceRepeat + 1, kRepeatsClose + 1);
     if (repeated) {
         m_slotNs -= tickNs / kShiftDivisor;
-        if (m_sinceRepeat <= kRepeatsClose)
+        if (m_distinctInARow < kRepeatsClose)
             m_spacingNs = std::min(m_spacingNs + tickNs / kWidenDivisor, kMostTicks * tickNs);
-        m_sinceRepeat = 0;
         m_distinctInARow = 0;
     } else if (++m_distinctInARow >= kDistinctBeforeNarrowing) {
         m_spacingNs = std::max(m_spacingNs - tickNs / kNarrowDivisor, tickNs);
-        m_distinctInARow = 0;
+        // Counted on from past "close": a repeat after a narrowing is not a close one.
+        m_distinctInARow = kRepeatsClose;
     }
 }
 

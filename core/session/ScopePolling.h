@@ -112,8 +112,7 @@ private:
     // The polls' grid (ScopePolling.cpp): the next instant a poll may go, and the step.
     qint64 m_slotNs = 0;
     qint64 m_spacingNs = 0; // from options.tickNs, wider while samples repeat
-    int m_distinctInARow = 0;
-    int m_sinceRepeat = 1 << 16; // polls since the last repeated sample, counted up to a few
+    int m_distinctInARow = 1 << 16; // new samples since the last repeat, or the last narrowing
     std::optional<quint16> m_lastTimestamp; // of the poll released last, if it brought one
     qint64 m_nextRelease = 0;
     // Answers that came before an earlier poll's: held until that one is in.
