@@ -364,7 +364,8 @@ int main(int argc, char *argv[])
         qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);
 
-    // Parts by name (full, every, roll, loop, math, overlay); all without one.
+    // Parts by name (full, every, roll, loop, math, overlay, and the roll ticks alone:
+    // mathroll, overlayroll); all without one.
     const QStringList parts = app.arguments().mid(1);
     const auto wanted
         = [&](const char *part) { return parts.isEmpty() || parts.contains(QLatin1String(part)); };
@@ -390,6 +391,10 @@ int main(int argc, char *argv[])
         fullView(1'000'000, false, overlay);
         rollTicks(false, overlay);
     }
+    if (parts.contains(QLatin1String("mathroll")))
+        rollTicks(true);
+    if (parts.contains(QLatin1String("overlayroll")))
+        rollTicks(true, makeOverlay());
     if (wanted("loop")) {
         rollOnEventLoop(app, false);
         rollOnEventLoop(app, true);

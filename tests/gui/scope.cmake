@@ -2,6 +2,10 @@
 # (offscreen).
 drivedesk_add_test(NAME tst_scopechart LABELS gui
     SOURCES gui/tst_scopechart.cpp LIBS drivedesk_ui)
+# The chart's graphs drawn their own way on screen, checked against QCustomPlot's drawing of
+# the same points; their legend entries.
+drivedesk_add_test(NAME tst_scopegraph LABELS gui
+    SOURCES gui/tst_scopegraph.cpp LIBS drivedesk_ui)
 # The scope dock in the window: channels chosen in the panel and read back, recording, cursors,
 # CSV of all and of the visible range, a recording file viewed with no drive, remembered settings.
 drivedesk_add_test(NAME tst_scopedock LABELS gui

@@ -1,5 +1,7 @@
 #include "ScopeMathTraces.h"
 
+#include "ScopeGraph.h"
+
 #include "QCustomPlotInclude.h"
 
 #include <algorithm>
@@ -30,8 +32,7 @@ void ScopeMathTraces::setSeries(const QList<std::shared_ptr<const ScopeSeries>> 
     while (m_traces.size() < series.size()) {
         Trace trace;
         trace.axis = m_plot->axisRect()->addAxis(QCPAxis::atRight);
-        trace.graph = m_plot->addGraph(m_plot->xAxis, trace.axis);
-        trace.graph->setAdaptiveSampling(false);
+        trace.graph = ScopeGraph::add(m_plot, m_plot->xAxis, trace.axis);
         const QColor color = defaultColor(int(m_traces.size()));
         // Solid: its colour, its own axis and its legend entry tell it from the channels, and
         // a dashed pen of thousands of segments took longer to draw than the four channels.

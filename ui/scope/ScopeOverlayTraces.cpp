@@ -1,5 +1,8 @@
 #include "ScopeOverlayTraces.h"
 
+#include "ScopeGraph.h"
+#include "ScopeLegendItem.h"
+
 #include "scope/ScopeColumnGrid.h"
 
 #include "QCustomPlotInclude.h"
@@ -44,13 +47,10 @@ ScopeOverlayTraces::ScopeOverlayTraces(QCustomPlot *plot)
     m_layer = m_plot->layer(QStringLiteral("scopeOverlay"));
     m_layer->setMode(QCPLayer::lmLogical);
     for (Trace &trace : m_traces) {
-        trace.graph = m_plot->addGraph(m_plot->xAxis, m_plot->yAxis);
+        trace.graph = ScopeGraph::add(m_plot, m_plot->xAxis, m_plot->yAxis);
         trace.graph->setLayer(m_layer);
-        // Decimated already, as the channels are.
-        trace.graph->setAdaptiveSampling(false);
-        trace.graph->setAntialiased(false);
         trace.graph->setVisible(false);
-        trace.graph->removeFromLegend();
+        showInLegend(trace.graph, false);
     }
 }
 
@@ -81,7 +81,7 @@ void ScopeOverlayTraces::follow(const ScopeRecording &shown, const ScopeTraces &
         trace.graph->setVisible(trace.drawn);
         if (!trace.drawn) {
             if (wasDrawn)
-                trace.graph->removeFromLegend();
+                showInLegend(trace.graph, false);
             continue;
         }
         trace.graph->setValueAxis(trace.match >= 0 ? traces.valueAxis(trace.match)
@@ -95,7 +95,7 @@ void ScopeOverlayTraces::follow(const ScopeRecording &shown, const ScopeTraces &
                                  ? title
                                  : tr("%1 [%2]", "channel title and unit").arg(title, source.unit()));
         if (!wasDrawn)
-            trace.graph->addToLegend();
+            showInLegend(trace.graph, true);
     }
 }
 
@@ -129,7 +129,7 @@ void ScopeOverlayTraces::clear()
         if (!m_overlay && trace.drawn) {
             trace.drawn = false;
             trace.graph->setVisible(false);
-            trace.graph->removeFromLegend();
+            showInLegend(trace.graph, false);
         }
     }
 }

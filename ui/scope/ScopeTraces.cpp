@@ -1,5 +1,8 @@
 #include "ScopeTraces.h"
 
+#include "ScopeGraph.h"
+#include "ScopeLegendItem.h"
+
 #include "scope/ScopeColumnGrid.h"
 
 #include "QCustomPlotInclude.h"
@@ -83,10 +86,7 @@ ScopeTraces::ScopeTraces(QCustomPlot *plot)
 {
     for (int channel = 0; channel < kChannels; ++channel) {
         Trace &trace = m_traces[channel];
-        trace.graph = m_plot->addGraph(m_plot->xAxis, m_plot->yAxis);
-        // The points are decimated already; QCustomPlot's own thinning would only cost time.
-        trace.graph->setAdaptiveSampling(false);
-        trace.graph->setAntialiased(false);
+        trace.graph = ScopeGraph::add(m_plot, m_plot->xAxis, m_plot->yAxis);
         trace.color = defaultColor(channel);
         updateStyle(channel);
     }
@@ -242,9 +242,9 @@ void ScopeTraces::updateStyle(int channel)
     trace.graph->setName(label(channel));
     trace.graph->setVisible(isDrawn(channel));
     if (isDrawn(channel))
-        trace.graph->addToLegend();
+        showInLegend(trace.graph, true);
     else
-        trace.graph->removeFromLegend();
+        showInLegend(trace.graph, false);
     if (trace.ownAxis) {
         const QPen pen(trace.color);
         trace.ownAxis->setBasePen(pen);

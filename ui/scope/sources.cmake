@@ -14,6 +14,7 @@ target_sources(drivedesk_ui PRIVATE
     scope/ScopeMathTraces.cpp scope/ScopeMathTraces.h
     scope/ScopeSpectrumPlot.cpp scope/ScopeSpectrumPlot.h
     scope/ScopeSpectrumView.cpp scope/ScopeSpectrumView.h
+    scope/ScopeGraph.cpp scope/ScopeGraph.h scope/ScopeLegendItem.cpp scope/ScopeLegendItem.h
     scope/ScopeTraces.cpp scope/ScopeTraces.h
     scope/ScopeOverlayTraces.cpp scope/ScopeOverlayTraces.h
     scope/QCustomPlotInclude.h
