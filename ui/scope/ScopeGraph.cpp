@@ -45,14 +45,6 @@ int pixelOf(double coordinate)
     return truncated - (coordinate < double(truncated) ? 1 : 0);
 }
 
-// The same for a point's coordinate. Far-off values, which a zoomed axis gives, stay as they
-// are.
-double toPixel(double coordinate)
-{
-    constexpr double kFar = 1 << 24;
-    return std::abs(coordinate) < kFar ? double(pixelOf(coordinate)) : coordinate;
-}
-
 } // namespace
 
 ScopeGraph::ScopeGraph(QCPAxis *keyAxis, QCPAxis *valueAxis)
@@ -244,28 +236,37 @@ void ScopeGraph::toPixels()
     const double valuePerUnit = value->coordToPixel(1) - valueAt0;
     // Whether a point adds a pixel is judged on the pixels the points fall on; the points
     // drawn keep their own coordinates, so that the lines are those QCustomPlot would draw.
-    QPointF lastPixel(qQNaN(), qQNaN());
+    // A far-off point (a zoomed axis) is always kept.
+    constexpr double kFar = 1 << 24;
+    constexpr int kNone = std::numeric_limits<int>::min();
+    int lastX = kNone;
+    int lastY = kNone;
     bool rowRun = false; // the last two points kept lie on one pixel row
+    m_pixels.reserve(dataCount() + 2);
     for (auto it = begin; it != end; ++it) {
-        const QPointF point(keyAt0 + it->key * keyPerUnit, valueAt0 + it->value * valuePerUnit);
-        if (!std::isfinite(point.x()) || !std::isfinite(point.y())) {
-            // A gap, which QCustomPlot's drawPolyline() leaves open.
-            m_pixels.append(QPointF(point.x(), qQNaN()));
-            lastPixel = QPointF(qQNaN(), qQNaN());
+        const double x = keyAt0 + it->key * keyPerUnit;
+        const double y = valueAt0 + it->value * valuePerUnit;
+        if (!(std::abs(x) < kFar) || !(std::abs(y) < kFar)) {
+            // NaN (a gap, which QCustomPlot's drawPolyline() leaves open) or far off.
+            m_pixels.append(std::isnan(x) || std::isnan(y) ? QPointF(x, qQNaN()) : QPointF(x, y));
+            lastX = kNone;
+            lastY = kNone;
             rowRun = false;
             continue;
         }
-        const QPointF pixel(toPixel(point.x()), toPixel(point.y()));
-        if (pixel == lastPixel)
+        const int pixelX = pixelOf(x);
+        const int pixelY = pixelOf(y);
+        if (pixelY == lastY && pixelX == lastX)
             continue;
-        const bool sameRow = pixel.y() == lastPixel.y();
+        const bool sameRow = pixelY == lastY;
         if (sameRow && rowRun) {
-            m_pixels.last() = point;
+            m_pixels.data()[m_pixels.size() - 1] = QPointF(x, y);
         } else {
-            m_pixels.append(point);
+            m_pixels.append(QPointF(x, y));
             rowRun = sameRow;
         }
-        lastPixel = pixel;
+        lastX = pixelX;
+        lastY = pixelY;
     }
 }
 
