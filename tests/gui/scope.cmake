@@ -32,3 +32,8 @@ drivedesk_add_test(NAME tst_scopespectrumview LABELS gui
 drivedesk_add_test(NAME tst_scopeoverlayview LABELS gui
     SOURCES gui/tst_scopeoverlayview.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui
     drivedesk_translations)
+# A run of the simulated drive read with an earlier run overlaid, a math channel, the cursors
+# and the measurements, all at once; DRIVEDESK_SCOPE_SCREENSHOT=FILE saves docs/scope.png.
+drivedesk_add_test(NAME tst_scopereading LABELS gui
+    SOURCES gui/tst_scopereading.cpp gui/tst_mainwindow_support.h LIBS drivedesk_ui
+    drivedesk_translations)

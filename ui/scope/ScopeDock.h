@@ -66,8 +66,8 @@ public:
     // Where the next recordings also go as they are recorded (.ddscope); empty: memory only.
     void setRecordFile(const QString &path);
     QString recordFile() const { return m_recordFile; }
-    // The recording shown, whole, as a recording file (.ddscope); false with the reason, and
-    // no file at `path`.
+    // The recording shown, whole, as a recording file (.ddscope): saved, a new recording
+    // replaces it without asking. False with the reason, and no file at `path`.
     bool saveRecording(const QString &path, QString *error = nullptr);
     // The recording as CSV: everything, or only the visible time range; with both cursors
     // placed, their measurements after the samples.

@@ -90,7 +90,6 @@ void ScopeDock::saveRecordingThen(const std::function<void()> &saved)
                                       showStatus(error, true);
                                       return false;
                                   }
-                                  m_unsaved = false;
                                   showStatus(tr("Saved to %1.").arg(path));
                                   if (saved)
                                       saved();
@@ -122,6 +121,7 @@ bool ScopeDock::saveRecording(const QString &path, QString *error)
             *error = tr("Cannot save %1: %2").arg(path, QString::fromStdString(failed.message()));
         return false;
     }
+    m_unsaved = false;
     return true;
 }
 

@@ -222,7 +222,6 @@ void ScopeDock::keepShot()
         QString error;
         if (!saveRecording(m_recordFile, &error))
             return showStatus(tr("%1 %2").arg(text, error), true);
-        m_unsaved = false;
         text = tr("%1 Saved to %2.").arg(text, m_recordFile);
     }
     showStatus(text);
