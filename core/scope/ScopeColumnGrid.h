@@ -34,6 +34,11 @@ public:
     qsizetype first() const { return m_bounds.empty() ? 0 : m_bounds.front(); }
     qsizetype end() const { return m_bounds.empty() ? 0 : m_bounds.back(); }
     bool isEmpty(int column) const { return m_bounds[column] >= m_bounds[column + 1]; }
+    // The samples of a column, [columnBegin(), columnEnd()).
+    qsizetype columnBegin(int column) const { return m_bounds[std::size_t(column)]; }
+    qsizetype columnEnd(int column) const { return m_bounds[std::size_t(column) + 1]; }
+    // The time of the sample at `index`, ms.
+    qint64 timeAt(qsizetype index) const { return m_samples.time(index); }
     // A column that is not empty, with its min and max on `channel`.
     MinMaxPyramid::Column column(const MinMaxPyramid &pyramid, int channel, int column) const;
 

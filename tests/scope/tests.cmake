@@ -6,6 +6,9 @@ drivedesk_add_test(NAME tst_scopestore LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopestore.cpp LIBS drivedesk_scope)
 drivedesk_add_test(NAME tst_scopepyramid LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopepyramid.cpp LIBS drivedesk_scope)
+drivedesk_add_test(NAME tst_scopecolumnmemo LABELS unit
+    SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopecolumnmemo.cpp
+            ${CMAKE_CURRENT_LIST_DIR}/ScopeTestRecording.h LIBS drivedesk_scope)
 drivedesk_add_test(NAME tst_scopecsv LABELS unit
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/tst_scopecsv.cpp LIBS drivedesk_scope)
 drivedesk_add_test(NAME tst_scopecsvreader LABELS unit

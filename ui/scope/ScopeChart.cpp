@@ -123,6 +123,8 @@ void ScopeChart::reread(bool newRecording)
         m_frozenCount = std::min(*m_frozenCount, count);
     m_traces->setChannels(m_recording ? m_recording->channels : ScopeChannels(kChannels));
     followOrigin();
+    if (restarted)
+        m_traces->forgetColumns();
     if (restarted && m_view == View::Fixed)
         setView(View::All);
     m_dataStale = true;

@@ -57,6 +57,7 @@ ScopeOverlayTraces::ScopeOverlayTraces(QCustomPlot *plot)
 void ScopeOverlayTraces::setOverlay(std::shared_ptr<const ScopeOverlay> overlay)
 {
     m_overlay = std::move(overlay);
+    m_memo.clear();
     if (!m_overlay)
         clear();
 }
@@ -117,8 +118,9 @@ void ScopeOverlayTraces::fill(const ScopeRecording &shown, const ScopeTraceWindo
             continue;
         }
         trace.extent = fillScopeGraph(trace.graph, overlay, channel, grid, samples.count(),
-                                      window.originMs - shift->shiftMs);
+                                      window.originMs - shift->shiftMs, &m_memo);
     }
+    m_memo.keep(grid);
 }
 
 void ScopeOverlayTraces::clear()

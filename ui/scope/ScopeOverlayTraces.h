@@ -75,6 +75,7 @@ private:
     std::shared_ptr<const ScopeOverlay> m_overlay;
     ScopeOverlayAlignment m_alignment = ScopeOverlayAlignment::Trigger;
     std::array<Trace, kChannels> m_traces;
+    ScopeColumnMemo m_memo; // the last fill's columns of the overlay
 };
 
 } // namespace DriveDesk

@@ -176,7 +176,8 @@ QList<int> ScopeTraces::drawnChannels() const
 
 std::optional<ScopeValueSpan> fillScopeGraph(QCPGraph *graph, const ScopeRecording &recording,
                                              int channel, const ScopeColumnGrid &grid,
-                                             qsizetype count, qint64 originMs)
+                                             qsizetype count, qint64 originMs,
+                                             ScopeColumnMemo *memo)
 {
     if (grid.first() >= grid.end()) {
         graph->data()->clear();
@@ -186,9 +187,12 @@ std::optional<ScopeValueSpan> fillScopeGraph(QCPGraph *graph, const ScopeRecordi
     builder.reserve(2 * qsizetype(grid.count()) + 2);
     if (grid.first() > 0)
         builder.addSample(grid.first() - 1, false);
+    const MinMaxPyramid &pyramid = recording.buffer.pyramid();
     for (int column = 0; column < grid.count(); ++column) {
-        if (!grid.isEmpty(column))
-            builder.addColumn(grid.column(recording.buffer.pyramid(), channel, column));
+        if (grid.isEmpty(column))
+            continue;
+        builder.addColumn(memo ? memo->column(grid, pyramid, channel, column)
+                               : grid.column(pyramid, channel, column));
     }
     if (grid.end() < count)
         builder.addSample(grid.end(), false);
@@ -209,9 +213,10 @@ void ScopeTraces::fill(const ScopeRecording &recording, const ScopeTraceWindow &
             trace.graph->data()->clear();
             continue;
         }
-        trace.extent
-            = fillScopeGraph(trace.graph, recording, channel, grid, count, window.originMs);
+        trace.extent = fillScopeGraph(trace.graph, recording, channel, grid, count,
+                                      window.originMs, &m_memo);
     }
+    m_memo.keep(grid);
 }
 
 void ScopeTraces::clear()

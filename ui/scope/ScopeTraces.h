@@ -1,5 +1,6 @@
 #pragma once
 
+#include "scope/ScopeColumnMemo.h"
 #include "scope/ScopeRecording.h"
 #include "scope/ScopeSample.h"
 
@@ -41,10 +42,12 @@ class ScopeColumnGrid;
 // themselves in a column of one or two, and the samples just outside, so that the line reaches
 // the edges. Keys in seconds from originMs. Returns the span of the values in view; none where
 // the grid holds no sample. What ScopeTraces::fill() does for each channel, and an overlay for
-// its own.
+// its own. With a memo, columns the last fill read are taken from it (the caller keep()s the
+// grid after all channels).
 std::optional<ScopeValueSpan> fillScopeGraph(QCPGraph *graph, const ScopeRecording &recording,
                                              int channel, const ScopeColumnGrid &grid,
-                                             qsizetype count, qint64 originMs);
+                                             qsizetype count, qint64 originMs,
+                                             ScopeColumnMemo *memo = nullptr);
 
 // The four channels as QCustomPlot graphs: their colours, visibility, and the value axis each
 // is drawn against (the shared one on the left or its own on the right), named after the
@@ -90,6 +93,9 @@ public:
     // samples give the samples themselves. Hidden channels get no points.
     void fill(const ScopeRecording &recording, const ScopeTraceWindow &window);
     void clear();
+    // The next fill reads every column afresh: the recording was replaced, or cleared and
+    // begun again.
+    void forgetColumns() { m_memo.clear(); }
     // Display values' min and max of what fill() fed a channel; none if nothing.
     std::optional<ScopeValueSpan> extent(int channel) const;
     // The points fed on the last fill, all channels.
@@ -112,6 +118,7 @@ private:
     QCustomPlot *m_plot = nullptr;
     std::array<Trace, kChannels> m_traces;
     ScopeChannels m_channels;
+    ScopeColumnMemo m_memo; // the last fill's columns
 };
 
 } // namespace DriveDesk
