@@ -1,5 +1,5 @@
 // The scope chart's redraws (offscreen, 1600 x 900): the whole recording of 4 x 1,000,000 and
-// 4 x 3,600,000 samples; the same million fed to QCustomPlot point by point, for comparison;
+// 4 x 3,600,000 samples, shown anew; the same million fed to QCustomPlot point by point, for comparison;
 // and the roll mode's redraw tick while 4 kHz samples come in, synchronously and on the event
 // loop with a direct or a queued replot; the full view and the roll tick again with a math
 // channel (a derivative, on an axis of its own); and both once more with an overlay of another
@@ -198,7 +198,9 @@ void fullView(qsizetype count, bool withMath = false,
     plot->replot(QCustomPlot::rpImmediateRefresh);
 
     const Figures full = timeRounds(kRounds, [&] {
-        chart.samplesAppended(); // stale: decimate again
+        // Shown anew: every column decimated again (a view that only went stale would take
+        // its columns over from the last redraw, ScopeColumnMemo).
+        chart.setRecording(&recording);
         plot->replot(QCustomPlot::rpImmediateRefresh);
     });
     const Figures drawOnly
