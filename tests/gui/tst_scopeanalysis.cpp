@@ -1,7 +1,7 @@
 // Reading a recording in the scope dock, offscreen with no drive: the measurements between the
 // cursors beside the chart and in the CSV export, each checked against what the test works
 // out from the signal it recorded; the spectrum window opened from the dock.
-#include "tst_mainwindow_support.h"
+#include "tst_scopesupport.h"
 
 #include "scope/QCustomPlotInclude.h"
 #include "scope/ScopeChart.h"
@@ -27,6 +27,7 @@
 
 using namespace DriveDesk;
 using namespace DriveDesk::MainWindowTest;
+using namespace DriveDesk::ScopeDockTest;
 
 namespace {
 
@@ -167,15 +168,8 @@ private slots:
         QVERIFY2(dock->openRecording(path, &error), qPrintable(error));
         QVERIFY(dock->mathChannels()->series().isEmpty());
 
-        dock->findChild<QAction *>(QStringLiteral("scopeAddMathAction"))->trigger();
-        ScopeMathDialog *dialog = nullptr;
-        QTRY_VERIFY_WITH_TIMEOUT((dialog = dock->findChild<ScopeMathDialog *>()) != nullptr
-                                     && dialog->isVisible(),
-                                 kWaitMs);
-        auto *kind = dialog->findChild<QComboBox *>(QStringLiteral("scopeMathKind"));
-        kind->setCurrentIndex(kind->findData(int(ScopeMathDefinition::Kind::Derivative)));
-        auto *first = dialog->findChild<QComboBox *>(QStringLiteral("scopeMathFirst"));
-        first->setCurrentIndex(0);
+        ScopeMathDialog *dialog = derivativeOfTheFirstChannel(*dock);
+        QVERIFY(dialog);
         QSignalSpy computed(dock->mathChannels(), &ScopeMathChannels::seriesChanged);
         dialog->accept();
         QTRY_VERIFY_WITH_TIMEOUT(computed.count() > 0 && !dock->mathChannels()->isComputing(),

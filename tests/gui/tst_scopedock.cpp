@@ -1,4 +1,4 @@
-#include "tst_mainwindow_support.h"
+#include "tst_scopesupport.h"
 
 #include "client/DriveClient.h"
 #include "model/ParameterModel.h"
@@ -28,30 +28,13 @@
 
 using namespace DriveDesk;
 using namespace DriveDesk::MainWindowTest;
+using namespace DriveDesk::ScopeDockTest;
 
 namespace {
 
-constexpr quint16 kActualFrequency = 0x0203; // ru.03, 0.01 Hz
-constexpr quint16 kDcLinkVoltage = 0x0212;   // ru.18, V
-constexpr quint16 kOutputVoltage = 0x0209;   // ru.09, V
-constexpr quint16 kMaxSpeedForward = 0x030B; // op.11, 8 sets
 constexpr quint16 kChannel1Source = 0x0010;  // Sy.16
 constexpr quint16 kChannel3Source = 0x0014;  // Sy.20
 constexpr quint16 kChannel4Source = 0x0016;  // Sy.22
-
-void chooseSource(ScopeDock &dock, int channel, int address)
-{
-    auto *box = dock.findChild<QComboBox *>(QStringLiteral("scopeSource%1").arg(channel + 1));
-    QVERIFY(box);
-    const int index = box->findData(address);
-    QVERIFY2(index >= 0, qPrintable(QStringLiteral("no source %1").arg(address)));
-    box->setCurrentIndex(index);
-}
-
-QAction *action(ScopeDock &dock, const char *name)
-{
-    return dock.findChild<QAction *>(QLatin1String(name));
-}
 
 QString status(ScopeDock &dock)
 {

@@ -102,6 +102,56 @@ void columns(int count, double spread, double offset, QVector<double> &keys,
     }
 }
 
+// As columns(), each column reaching from below the middle to above it, as a derivative's
+// noise does.
+void throughTheMiddle(QVector<double> &keys, QVector<double> &values, QRandomGenerator &random)
+{
+    columns(kSize.width(), 0.4, 0, keys, values, random);
+    for (qsizetype i = 0; i < values.size(); i += 2) {
+        values[i] -= 0.6;
+        values[i + 1] += 0.6;
+    }
+}
+
+enum class Trace { Noise, Wider, ThroughTheMiddle, QuietColumns, Small, GapAndFarOff };
+
+// The points of `trace`, and the value axis's range to draw them in.
+QCPRange make(Trace trace, QVector<double> &keys, QVector<double> &values)
+{
+    QRandomGenerator random(quint32(trace) + 7);
+    switch (trace) {
+    case Trace::Noise:
+        columns(kSize.width(), 1.0, 0, keys, values, random);
+        break;
+    case Trace::Wider:
+        columns(kSize.width() * 3 / 2, 1.0, 0, keys, values, random);
+        break;
+    case Trace::ThroughTheMiddle:
+        throughTheMiddle(keys, values, random);
+        break;
+    case Trace::QuietColumns:
+        throughTheMiddle(keys, values, random);
+        for (const qsizetype column : { 100, 101, 102, 300, 301 }) {
+            values[2 * column] = 0.5;
+            values[2 * column + 1] = 0.51;
+        }
+        values[2 * 400] = -0.01;
+        values[2 * 400 + 1] = 0.01;
+        break;
+    case Trace::Small:
+        columns(kSize.width(), 0.002, 0.3, keys, values, random);
+        return QCPRange(-1, 1);
+    case Trace::GapAndFarOff:
+        columns(kSize.width(), 1.0, 0, keys, values, random);
+        for (int i = 100; i < 140; ++i)
+            values[i] = std::numeric_limits<double>::quiet_NaN();
+        values[300] = 1e12;
+        values[301] = -1e12;
+        break;
+    }
+    return QCPRange(-1.1, 1.1);
+}
+
 } // namespace
 
 // ScopeGraph draws decimated traces its own way on screen (docs/scope.md, bench_scope_view):
@@ -151,85 +201,33 @@ private:
     }
 
 private slots:
-    void aNoisyTraceFillingThePlotIsDrawnAsQCustomPlotDrawsIt()
+    void drawsWhatQCustomPlotDraws_data()
     {
-        // A derivative's noise: every column spans most of the plot (the image and the block).
-        QRandomGenerator random(7);
-        QVector<double> keys;
-        QVector<double> values;
-        columns(kSize.width(), 1.0, 0, keys, values, random);
-        checkSameDrawing(keys, values, QCPRange(-1.1, 1.1));
-    }
-
-    void moreColumnsThanPixelsAreDrawnAsQCustomPlotDrawsThem()
-    {
+        QTest::addColumn<int>("trace");
+        // A derivative's noise: every column spans much of the plot (the image).
+        QTest::newRow("noise filling the plot") << int(Trace::Noise);
         // A view decimated for a wider chart than it is drawn on (the chart resized).
-        QRandomGenerator random(13);
-        QVector<double> keys;
-        QVector<double> values;
-        columns(kSize.width() * 3 / 2, 1.0, 0, keys, values, random);
-        checkSameDrawing(keys, values, QCPRange(-1.1, 1.1));
-    }
-
-    void everyColumnThroughTheMiddleIsDrawnAsQCustomPlotDrawsIt()
-    {
-        // A derivative's noise: every column reaches from below the middle to above it (the
-        // block filled as a rectangle, the rest through the image).
-        QRandomGenerator random(17);
-        QVector<double> keys;
-        QVector<double> values;
-        columns(kSize.width(), 0.4, 0, keys, values, random);
-        for (qsizetype i = 0; i < values.size(); i += 2) {
-            values[i] -= 0.6;
-            values[i + 1] += 0.6;
-        }
-        checkSameDrawing(keys, values, QCPRange(-1.1, 1.1));
-    }
-
-    void aFewQuietColumnsKeepTheirOwnShapeInTheMiddle()
-    {
-        // As above, but five columns nearly flat above the middle and one through it only
-        // just: they stay out of the rectangle.
-        QRandomGenerator random(11);
-        QVector<double> keys;
-        QVector<double> values;
-        columns(kSize.width(), 0.4, 0, keys, values, random);
-        for (qsizetype i = 0; i < values.size(); i += 2) {
-            values[i] -= 0.6;
-            values[i + 1] += 0.6;
-        }
-        for (const qsizetype column : { 100, 101, 102, 300, 301 }) {
-            values[2 * column] = 0.5;
-            values[2 * column + 1] = 0.51;
-        }
-        values[2 * 400] = -0.01;
-        values[2 * 400 + 1] = 0.01;
-        checkSameDrawing(keys, values, QCPRange(-1.1, 1.1));
-    }
-
-    void aSmallTraceOnASharedAxisIsDrawnAsQCustomPlotDrawsIt()
-    {
+        QTest::newRow("more columns than pixels") << int(Trace::Wider);
+        // Every column reaching from below the middle to above it (the block filled as a
+        // rectangle, the rest through the image).
+        QTest::newRow("every column through the middle") << int(Trace::ThroughTheMiddle);
+        // As that, but five columns nearly flat above the middle and one through it only just:
+        // they stay out of the rectangle.
+        QTest::newRow("a few quiet columns") << int(Trace::QuietColumns);
         // A few rows high over every column: most points add no pixel and are left out.
-        QRandomGenerator random(3);
-        QVector<double> keys;
-        QVector<double> values;
-        columns(kSize.width(), 0.002, 0.3, keys, values, random);
-        checkSameDrawing(keys, values, QCPRange(-1, 1));
-    }
-
-    void aGapAndFarOffValuesAreDrawnAsQCustomPlotDrawsThem()
-    {
+        QTest::newRow("small, on a shared axis") << int(Trace::Small);
         // A NaN leaves a gap; values far beyond a zoomed value axis still give the right slope
         // where their lines cross the plot.
-        QRandomGenerator random(5);
+        QTest::newRow("a gap and far-off values") << int(Trace::GapAndFarOff);
+    }
+
+    void drawsWhatQCustomPlotDraws()
+    {
+        QFETCH(int, trace);
         QVector<double> keys;
         QVector<double> values;
-        columns(kSize.width(), 1.0, 0, keys, values, random);
-        for (int i = 100; i < 140; ++i)
-            values[i] = std::numeric_limits<double>::quiet_NaN();
-        values[300] = 1e12;
-        values[301] = -1e12;
-        checkSameDrawing(keys, values, QCPRange(-1.1, 1.1));
+        const QCPRange range = make(Trace(trace), keys, values);
+        checkSameDrawing(keys, values, range);
     }
 
     void aVectorExportDrawsAsQCustomPlotDoes()

@@ -1,7 +1,7 @@
 // A second recording overlaid in the scope dock, offscreen with no drive: drawn over the one
 // shown at its trigger (or its start), named in the legend, read by the cursors, kept when
 // the recording shown is replaced, and removed.
-#include "tst_mainwindow_support.h"
+#include "tst_scopesupport.h"
 
 #include "scope/QCustomPlotInclude.h"
 #include "scope/ScopeChart.h"
@@ -18,6 +18,7 @@
 
 using namespace DriveDesk;
 using namespace DriveDesk::MainWindowTest;
+using namespace DriveDesk::ScopeDockTest;
 
 namespace {
 
@@ -68,16 +69,6 @@ double firstKeyAtOrAbove(const QCPGraph *graph, double value)
             return point->key;
     }
     return -1;
-}
-
-QStringList legendNames(const QCustomPlot *plot)
-{
-    QStringList names;
-    for (int i = 0; i < plot->legend->itemCount(); ++i) {
-        if (auto *item = qobject_cast<QCPPlottableLegendItem *>(plot->legend->item(i)))
-            names << item->plottable()->name();
-    }
-    return names;
 }
 
 // The read-out's row named `name`; -1 if none.

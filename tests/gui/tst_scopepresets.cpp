@@ -1,4 +1,4 @@
-#include "tst_mainwindow_support.h"
+#include "tst_scopesupport.h"
 
 #include "plant/PlantDock.h"
 #include "plant/PlantFeature.h"
@@ -22,21 +22,10 @@
 
 using namespace DriveDesk;
 using namespace DriveDesk::MainWindowTest;
+using namespace DriveDesk::ScopeDockTest;
 
 namespace {
 
-constexpr quint16 kDcLinkVoltage = 0x0212;   // ru.18, V
-constexpr quint16 kOutputVoltage = 0x0209;   // ru.09, V
-constexpr quint16 kMaxSpeedForward = 0x030B; // op.11, 8 sets
-
-void chooseSource(ScopeDock &dock, int channel, int address)
-{
-    auto *box = dock.findChild<QComboBox *>(QStringLiteral("scopeSource%1").arg(channel + 1));
-    QVERIFY(box);
-    const int index = box->findData(address);
-    QVERIFY2(index >= 0, qPrintable(QStringLiteral("no source %1").arg(address)));
-    box->setCurrentIndex(index);
-}
 
 template<typename Widget>
 Widget *child(ScopeDock &dock, const char *name)

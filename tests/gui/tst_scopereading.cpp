@@ -3,7 +3,7 @@
 // once (each part alone: tst_scopeoverlayview, tst_scopeanalysis). With
 // DRIVEDESK_SCOPE_SCREENSHOT=FILE it records longer and saves the dock as docs/scope.png shows
 // it.
-#include "tst_mainwindow_support.h"
+#include "tst_scopesupport.h"
 
 #include "scope/QCustomPlotInclude.h"
 #include "scope/ScopeChart.h"
@@ -25,27 +25,10 @@
 
 using namespace DriveDesk;
 using namespace DriveDesk::MainWindowTest;
+using namespace DriveDesk::ScopeDockTest;
 
 namespace {
 
-constexpr quint16 kActualFrequency = 0x0203; // ru.03, 0.01 Hz
-constexpr quint16 kActualSpeed = 0x0207;     // ru.07, 1/min
-constexpr quint16 kOutputVoltage = 0x0209;   // ru.09, V
-constexpr quint16 kDcLinkVoltage = 0x0212;   // ru.18, V
-
-void chooseSource(ScopeDock &dock, int channel, int address)
-{
-    auto *box = dock.findChild<QComboBox *>(QStringLiteral("scopeSource%1").arg(channel + 1));
-    QVERIFY(box);
-    const int index = box->findData(address);
-    QVERIFY2(index >= 0, qPrintable(QStringLiteral("no source %1").arg(address)));
-    box->setCurrentIndex(index);
-}
-
-QAction *action(ScopeDock &dock, const char *name)
-{
-    return dock.findChild<QAction *>(QLatin1String(name));
-}
 
 // Records until the recording spans `ms`, then stops.
 bool record(ScopeDock &dock, qint64 ms)
@@ -69,16 +52,6 @@ bool record(ScopeDock &dock, qint64 ms)
                  int(dock.isRecording()), qlonglong(dock.recording()->buffer.count()),
                  qlonglong(dock.recording()->lastTime() - dock.recording()->firstTime()));
     return spans && stopped;
-}
-
-QStringList legendNames(const QCustomPlot *plot)
-{
-    QStringList names;
-    for (int i = 0; i < plot->legend->itemCount(); ++i) {
-        if (auto *item = qobject_cast<QCPPlottableLegendItem *>(plot->legend->item(i)))
-            names << item->plottable()->name();
-    }
-    return names;
 }
 
 } // namespace
@@ -127,14 +100,8 @@ private slots:
         QCOMPARE(chart->overlay()->recording().buffer.count(), earlierCount);
 
         // d/dt ru.03, from the dock's menu.
-        action(*dock, "scopeAddMathAction")->trigger();
-        ScopeMathDialog *dialog = nullptr;
-        QTRY_VERIFY_WITH_TIMEOUT((dialog = dock->findChild<ScopeMathDialog *>()) != nullptr
-                                     && dialog->isVisible(),
-                                 kWaitMs);
-        auto *kind = dialog->findChild<QComboBox *>(QStringLiteral("scopeMathKind"));
-        kind->setCurrentIndex(kind->findData(int(ScopeMathDefinition::Kind::Derivative)));
-        dialog->findChild<QComboBox *>(QStringLiteral("scopeMathFirst"))->setCurrentIndex(0);
+        ScopeMathDialog *dialog = derivativeOfTheFirstChannel(*dock);
+        QVERIFY(dialog);
         dialog->accept();
         QTRY_VERIFY_WITH_TIMEOUT(dock->mathChannels()->series().size() == 1
                                      && !dock->mathChannels()->isComputing(),
