@@ -166,7 +166,11 @@ private:
     {
         Plot own(true, keys, values, range);
         Plot reference(false, keys, values, range);
+        // The quick way on screen, in the plot's own buffer and in an image of it.
+        own.plot.replot(QCustomPlot::rpImmediateRefresh);
+        QVERIFY(qobject_cast<ScopeGraph *>(own.graph)->drewItself());
         const QImage ownImage = own.image();
+        QVERIFY(qobject_cast<ScopeGraph *>(own.graph)->drewItself());
         const QImage referenceImage = reference.image();
         const Painted drawn(ownImage);
         const Painted expected(referenceImage);
@@ -240,6 +244,7 @@ private slots:
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("chart.pdf"));
         QVERIFY(own.plot.savePdf(path));
+        QVERIFY(!qobject_cast<ScopeGraph *>(own.graph)->drewItself());
         QVERIFY(QFileInfo(path).size() > 1000);
     }
 

@@ -212,9 +212,13 @@ bool ScopeGraph::drawsItself(const QCPPainter *painter) const
 {
     const QCPAxis *key = mKeyAxis.data();
     const QCPAxis *value = mValueAxis.data();
+    // Pixels of the device, one to one: not a high-density screen's buffer or a scaled export,
+    // where a pixel of the plot is several of the device's.
     return key && value && painter->paintEngine()
         && painter->paintEngine()->type() == QPaintEngine::Raster
         && !painter->modes().testFlag(QCPPainter::pmVectorized) && !painter->antialiasing()
+        && painter->device() && painter->device()->devicePixelRatioF() == 1.0
+        && painter->transform().isIdentity()
         && mLineStyle == lsLine && mScatterStyle.isNone() && mBrush.style() == Qt::NoBrush
         && mSelection.isEmpty() && mPen.style() == Qt::SolidLine && mPen.widthF() <= 1.0
         && mPen.color().alpha() == 255 && key->orientation() == Qt::Horizontal
@@ -272,7 +276,8 @@ void ScopeGraph::toPixels()
 
 void ScopeGraph::draw(QCPPainter *painter)
 {
-    if (!drawsItself(painter)) {
+    m_drewItself = drawsItself(painter);
+    if (!m_drewItself) {
         QCPGraph::draw(painter);
         return;
     }

@@ -22,8 +22,9 @@ namespace DriveDesk {
 // row at a time and draws the image: the same pixels (to a pixel's rounding) in about half
 // the time.
 //
-// Anything else (a vector export, a fill, scatter points, a selection, a log axis, a pen but a
-// thin solid opaque one) is drawn as QCustomPlot draws it.
+// Anything else (a vector export, a high-density screen or a scaled export, a fill, scatter
+// points, a selection, a log axis, a pen but a thin solid opaque one) is drawn as QCustomPlot
+// draws it.
 class ScopeGraph : public QCPGraph
 {
     Q_OBJECT
@@ -33,6 +34,9 @@ public:
     // A new graph of `plot` (which owns it) against the two axes, with a ScopeLegendItem if
     // the plot adds its plottables to the legend.
     static ScopeGraph *add(QCustomPlot *plot, QCPAxis *keyAxis, QCPAxis *valueAxis);
+
+    // Whether the last draw() drew the line itself (tests: the quick way is taken on screen).
+    bool drewItself() const { return m_drewItself; }
 
     // The graph's legend icon (ScopeLegendItem).
     void drawIcon(QCPPainter *painter, const QRectF &rect) const { drawLegendIcon(painter, rect); }
@@ -58,6 +62,7 @@ private:
     std::vector<qint32> m_bottoms;
     std::vector<quint32> m_counts;
     QImage m_columns;
+    bool m_drewItself = false;
 };
 
 } // namespace DriveDesk
