@@ -68,10 +68,13 @@ ScopeGraph *ScopeGraph::add(QCustomPlot *plot, QCPAxis *keyAxis, QCPAxis *valueA
 bool ScopeGraph::coverColumns(const QRect &clip)
 {
     const QVector<QPointF> &lines = m_pixels;
-    // The strokes' heights first, which is all a light trace costs here.
+    // The strokes' heights first, which is all a light trace costs here (a gap adds none).
     double strokes = 0;
-    for (qsizetype i = 1; i < lines.size(); ++i)
-        strokes += std::abs(lines.at(i).y() - lines.at(i - 1).y());
+    for (qsizetype i = 1; i < lines.size(); ++i) {
+        const double height = std::abs(lines.at(i).y() - lines.at(i - 1).y());
+        if (std::isfinite(height))
+            strokes += height;
+    }
     const qint64 area = qint64(clip.width()) * clip.height();
     if (!(strokes * kStrokeCost >= double(area)))
         return false;
