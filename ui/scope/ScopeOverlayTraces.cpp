@@ -118,7 +118,7 @@ void ScopeOverlayTraces::fill(const ScopeRecording &shown, const ScopeTraceWindo
             continue;
         }
         trace.extent = fillScopeGraph(trace.graph, overlay, channel, grid, samples.count(),
-                                      window.originMs - shift->shiftMs, &m_memo);
+                                      window.originMs - shift->shiftMs, m_memo);
     }
     m_memo.keep(grid);
 }

@@ -177,7 +177,7 @@ QList<int> ScopeTraces::drawnChannels() const
 std::optional<ScopeValueSpan> fillScopeGraph(QCPGraph *graph, const ScopeRecording &recording,
                                              int channel, const ScopeColumnGrid &grid,
                                              qsizetype count, qint64 originMs,
-                                             ScopeColumnMemo *memo)
+                                             ScopeColumnMemo &memo)
 {
     if (grid.first() >= grid.end()) {
         graph->data()->clear();
@@ -191,8 +191,7 @@ std::optional<ScopeValueSpan> fillScopeGraph(QCPGraph *graph, const ScopeRecordi
     for (int column = 0; column < grid.count(); ++column) {
         if (grid.isEmpty(column))
             continue;
-        builder.addColumn(memo ? memo->column(grid, pyramid, channel, column)
-                               : grid.column(pyramid, channel, column));
+        builder.addColumn(memo.column(grid, pyramid, channel, column));
     }
     if (grid.end() < count)
         builder.addSample(grid.end(), false);
@@ -214,7 +213,7 @@ void ScopeTraces::fill(const ScopeRecording &recording, const ScopeTraceWindow &
             continue;
         }
         trace.extent = fillScopeGraph(trace.graph, recording, channel, grid, count,
-                                      window.originMs, &m_memo);
+                                      window.originMs, m_memo);
     }
     m_memo.keep(grid);
 }

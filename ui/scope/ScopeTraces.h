@@ -42,12 +42,12 @@ class ScopeColumnGrid;
 // themselves in a column of one or two, and the samples just outside, so that the line reaches
 // the edges. Keys in seconds from originMs. Returns the span of the values in view; none where
 // the grid holds no sample. What ScopeTraces::fill() does for each channel, and an overlay for
-// its own. With a memo, columns the last fill read are taken from it (the caller keep()s the
-// grid after all channels).
+// its own. Columns the last fill read are taken from `memo` (the caller keep()s the grid after
+// all channels).
 std::optional<ScopeValueSpan> fillScopeGraph(QCPGraph *graph, const ScopeRecording &recording,
                                              int channel, const ScopeColumnGrid &grid,
                                              qsizetype count, qint64 originMs,
-                                             ScopeColumnMemo *memo = nullptr);
+                                             ScopeColumnMemo &memo);
 
 // The four channels as QCustomPlot graphs: their colours, visibility, and the value axis each
 // is drawn against (the shared one on the left or its own on the right), named after the
