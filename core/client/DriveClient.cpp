@@ -159,6 +159,17 @@ void DriveClient::start(std::shared_ptr<RequestJobBase> job, int driveAddress)
         Qt::QueuedConnection);
 }
 
+void DriveClient::resume(const std::weak_ptr<RequestJobBase> &job)
+{
+    QMetaObject::invokeMethod(
+        m_worker,
+        [job] {
+            if (const auto running = job.lock())
+                running->resumed();
+        },
+        Qt::QueuedConnection);
+}
+
 void DriveClient::stopScan()
 {
     ClientWorker *worker = m_worker;

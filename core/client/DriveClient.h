@@ -132,6 +132,10 @@ public:
         return future;
     }
 
+    // Lets a running job look again at what it waits for (RequestJobBase::resumed()); nothing
+    // when it has ended.
+    void resume(const std::weak_ptr<RequestJobBase> &job);
+
     // Drops every queued and in-flight request (they finish as Cancelled).
     void cancelAll();
 

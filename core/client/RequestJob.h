@@ -36,6 +36,10 @@ public:
     // Ends the job now with what it has, for a job whose partial result is worth having (a scan:
     // what it read, incompleteReason "cancelled"); others go on. Thread: the client's.
     virtual void finishEarly() {}
+    // Something the job waits for outside the client changed (DriveClient::resume()): a job
+    // that holds requests back until another thread lets them go looks again. Thread: the
+    // client's.
+    virtual void resumed() {}
 
 protected:
     virtual void start() = 0;

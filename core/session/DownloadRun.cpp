@@ -84,7 +84,12 @@ void DownloadRun::write()
         m_stage = Stage::Done;
         return emit failed(tr("the drive is no longer connected; nothing was written"));
     }
-    if (QString error; m_journal && !beginJournal(&error)) {
+    // The first item's entries are stored before anything is sent, the others' while it is
+    // written: the job holds each item back until its entries are stored, and the first
+    // telegram does not wait for the journal to take them all.
+    const auto items = int(m_plan.items.size());
+    const int first = m_journal ? std::min(1, items) : items;
+    if (QString error; m_journal && !beginJournal(0, first, &error)) {
         m_stage = Stage::Done;
         return emit failed(
             tr("the journal cannot record the download: %1; nothing was written").arg(error));
@@ -97,7 +102,19 @@ void DownloadRun::write()
         order << item.order;
     }
     m_job = std::make_shared<WriteChangesJob>(m_protocol, changes, order);
+    m_job->release(first);
     m_writing.setFuture(m_client->run(m_job, m_driveAddress));
+    if (first == items)
+        return;
+    if (QString error; beginJournal(first, items, &error)) {
+        m_job->release(items);
+    } else {
+        // What was sent is journaled; nothing more goes out.
+        m_journalError = tr("the journal cannot record the download: %1").arg(error);
+        m_journaled.resize(items);
+        m_job->requestStop();
+    }
+    m_client->resume(m_job);
 }
 
 const ParameterDescription *DownloadRun::parameterOf(const DownloadItem &item) const
@@ -108,12 +125,13 @@ const ParameterDescription *DownloadRun::parameterOf(const DownloadItem &item) c
     return parameter ? parameter : m_file.find(item.change.address);
 }
 
-bool DownloadRun::beginJournal(QString *error)
+bool DownloadRun::beginJournal(int begin, int end, QString *error)
 {
-    if (m_plan.items.isEmpty())
+    if (begin == end)
         return true; // nothing written, no job in the journal
     QList<EditJournal::Write> writes;
-    for (const DownloadItem &item : std::as_const(m_plan.items)) {
+    for (int index = begin; index < end; ++index) {
+        const DownloadItem &item = m_plan.items.at(index);
         const ParameterDescription *parameter = parameterOf(item);
         if (!parameter) {
             *error = tr("%1 is not described").arg(item.id);
@@ -132,7 +150,7 @@ bool DownloadRun::beginJournal(QString *error)
         = m_journal->begin(EditJournal::driveOf(settings, m_drive), writes, error);
     if (!begun)
         return false;
-    m_journaled = *begun;
+    m_journaled << *begun;
     return true;
 }
 
@@ -179,6 +197,8 @@ void DownloadRun::onWritten()
     }
     if (m_stopped)
         stopReason = tr("stopped by the user");
+    else if (!m_journalError.isEmpty())
+        stopReason = m_journalError;
     if (m_journal && !m_journaled.isEmpty()) {
         // An item without an outcome was never sent: the drive holds what it held.
         m_journal->completeTogether([&] {

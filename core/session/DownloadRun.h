@@ -62,8 +62,9 @@ signals:
 private:
     void onRead();
     void onWritten();
-    // Begins the entries of every item of the plan; false and why when the journal cannot.
-    bool beginJournal(QString *error);
+    // Begins the entries of the plan's items [begin, end), after those begun before; false and
+    // why when the journal cannot.
+    bool beginJournal(int begin, int end, QString *error);
     const ParameterDescription *parameterOf(const DownloadItem &item) const;
     void completeJournal(int begin, int end);
 
@@ -75,6 +76,7 @@ private:
     DownloadPlan m_plan;
     Stage m_stage = Stage::Idle;
     bool m_stopped = false;
+    QString m_journalError; // the journal stopped the download after its first items
     QFutureWatcher<DriveDescription> m_reading;
     QFutureWatcher<WriteOutcome> m_writing;
     std::shared_ptr<WriteChangesJob> m_job;

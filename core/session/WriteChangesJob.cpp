@@ -91,6 +91,7 @@ WriteChangesJob::WriteChangesJob(Protocol protocol, QList<ValueChange> changes,
     : m_protocol(protocol)
     , m_changes(std::move(changes))
     , m_order(std::move(order))
+    , m_released(m_changes.size())
 {
     promise().setProgressRange(0, total());
 }
@@ -103,8 +104,16 @@ void WriteChangesJob::start()
     sendMore();
 }
 
+void WriteChangesJob::resumed()
+{
+    if (!hasEnded())
+        sendMore();
+}
+
 bool WriteChangesJob::mayStart(qsizetype index) const
 {
+    if (index >= m_released.load(std::memory_order_acquire))
+        return false;
     if (m_onTheWay.isEmpty())
         return true;
     // Half duplex: one request at a time on the line anyway, and one change after the other

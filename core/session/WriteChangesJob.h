@@ -5,6 +5,7 @@
 
 #include <QList>
 
+#include <atomic>
 #include <memory>
 
 namespace DriveDesk {
@@ -35,10 +36,16 @@ public:
 
     int total() const { return int(m_changes.size()); }
 
+    // Only the changes before `count` may be sent (all of them unless told otherwise): a caller
+    // that journals the rest while the first ones are written lets them go when their entries
+    // are stored, then DriveClient::resume()s the job. Thread: any.
+    void release(qsizetype count) { m_released.store(count, std::memory_order_release); }
+
 private:
     class RequestWindow;
 
     void start() override;
+    void resumed() override;
     void sendMore();
     void endIfDone();
     bool mayStart(qsizetype index) const;
@@ -51,6 +58,7 @@ private:
     qsizetype m_next = 0;
     QList<qsizetype> m_onTheWay; // indices of the changes sent and not yet finished
     QList<qsizetype> m_writing;  // of those, the ones whose writes are not all answered yet
+    std::atomic<qsizetype> m_released;
     int m_done = 0;
     bool m_connectionFailed = false;
     bool m_sending = false;

@@ -505,6 +505,63 @@ private slots:
             QVERIFY(sentAt[kMinSpeedForward] > answeredAt[earlier]);
     }
 
+    // A download journals its first item before anything is sent and the rest while that item
+    // is written: the job sends nothing it was not let go, whatever else could go together,
+    // goes on when let, and ends with what it sent when stopped instead.
+    void heldChangesWaitUntilTheyAreLetGo_data()
+    {
+        QTest::addColumn<bool>("stopInstead");
+        QTest::newRow("let go") << false;
+        QTest::newRow("stopped") << true;
+    }
+    void heldChangesWaitUntilTheyAreLetGo()
+    {
+        QFETCH(bool, stopInstead);
+        Session session(simulated(Protocol::Hsp5, fast()));
+        QVERIFY(session.connected());
+        const auto change = [](quint16 address, qint32 raw) {
+            return ValueChange{address, true, {WriteStep{0x01, raw, false}}, {}, true};
+        };
+        const QList<ValueChange> changes{change(kFixedSpeed1, 124), change(kMinSpeedForward, 101),
+                                         change(kMaxSpeedForward, 2400)};
+        const QList<WriteOrder> independent(changes.size(), WriteOrder{false, false});
+        const auto job = std::make_shared<WriteChangesJob>(Protocol::Hsp5, changes, independent);
+        job->release(1);
+        session.traffic->clear();
+        const QFuture<WriteOutcome> future = session.client->run(job);
+        QVERIFY(QTest::qWaitFor([&] { return future.isResultReadyAt(0); }, kWaitMs));
+        QVERIFY2(future.resultAt(0).ok(), qPrintable(future.resultAt(0).error));
+        QVERIFY(!future.isFinished());
+        const auto writesSent = [&] {
+            QList<quint16> sent;
+            for (const TrafficRecord &record : session.records()) {
+                if (record.kind != TrafficRecord::Kind::Sent || !record.telegram
+                    || !record.telegram->isWrite())
+                    continue;
+                if (const auto *value = std::get_if<ParameterValue>(&record.telegram->data))
+                    sent << value->address;
+            }
+            return sent;
+        };
+        QCOMPARE(writesSent(), QList<quint16>{kFixedSpeed1});
+
+        if (stopInstead)
+            job->requestStop();
+        else
+            job->release(changes.size());
+        session.client->resume(job);
+        QVERIFY(waitFinished(future));
+        if (stopInstead) {
+            QCOMPARE(future.resultCount(), 1);
+            QCOMPARE(writesSent(), QList<quint16>{kFixedSpeed1});
+            return;
+        }
+        QCOMPARE(future.resultCount(), int(changes.size()));
+        for (int i = 0; i < int(changes.size()); ++i)
+            QVERIFY2(future.resultAt(i).ok(), qPrintable(future.resultAt(i).error));
+        QCOMPARE(writesSent(), (QList<quint16>{kFixedSpeed1, kMinSpeedForward, kMaxSpeedForward}));
+    }
+
     // The link cut after the client sent its Nth telegram of the download, at many points in
     // both protocols: each set of each value is on exactly one line, and the drive, read again,
     // agrees with every line.
