@@ -83,11 +83,16 @@ struct Journal::Statements
         : insertEntry(db)
         , completeEntry(db)
         , insertJob(db)
+        , beginTransaction(db)
+        , commit(db)
     { }
 
     QSqlQuery insertEntry;
     QSqlQuery completeEntry;
     QSqlQuery insertJob;
+    // Prepared once: a transaction's first telegram waits for them.
+    QSqlQuery beginTransaction;
+    QSqlQuery commit;
 };
 
 Journal::Journal(QString path)
@@ -226,16 +231,18 @@ bool Journal::prepare(Access access)
     query.finish();
 
     auto statements = std::make_unique<Statements>(db);
-    if (access == Access::Write
-        && (!statements->insertEntry.prepare(QString::fromLatin1(kInsertEntry))
-            || !statements->completeEntry.prepare(QString::fromLatin1(kCompleteEntry))
-            || !statements->insertJob.prepare(QString::fromLatin1(kInsertJob)))) {
-        const QSqlError prepareError = statements->insertEntry.lastError().isValid()
-            ? statements->insertEntry.lastError()
-            : statements->completeEntry.lastError().isValid()
-            ? statements->completeEntry.lastError()
-            : statements->insertJob.lastError();
-        return failed(prepareError);
+    if (access == Access::Write) {
+        const std::pair<QSqlQuery *, QString> prepared[] = {
+            { &statements->insertEntry, QString::fromLatin1(kInsertEntry) },
+            { &statements->completeEntry, QString::fromLatin1(kCompleteEntry) },
+            { &statements->insertJob, QString::fromLatin1(kInsertJob) },
+            { &statements->beginTransaction, QStringLiteral("BEGIN IMMEDIATE") },
+            { &statements->commit, QStringLiteral("COMMIT") },
+        };
+        for (const auto &[statement, text] : prepared) {
+            if (!statement->prepare(text))
+                return failed(statement->lastError());
+        }
     }
     m_statements = std::move(statements);
     m_entriesSinceCheckpoint = 0;
@@ -332,17 +339,22 @@ bool Journal::transaction(const std::function<bool()> &work)
         return work();
     if (!isOpen() || m_access != Access::Write)
         return fail(tr("the journal %1 is not open for writing").arg(m_path));
-    QSqlQuery query(QSqlDatabase::database(m_connection, false));
-    if (!query.exec(QStringLiteral("BEGIN IMMEDIATE")))
-        return fail(JournalProblem::of(m_path, query.lastError(), m_busyTimeoutMs));
+    QSqlQuery &begin = m_statements->beginTransaction;
+    if (!begin.exec())
+        return fail(JournalProblem::of(m_path, begin.lastError(), m_busyTimeoutMs));
+    begin.finish();
     m_inTransaction = true;
     const bool done = work();
     m_inTransaction = false;
-    if (done && query.exec(QStringLiteral("COMMIT")))
+    QSqlQuery &commit = m_statements->commit;
+    const bool committed = done && commit.exec();
+    const QString error = committed ? QString()
+        : done ? JournalProblem::of(m_path, commit.lastError(), m_busyTimeoutMs)
+               : m_error;
+    commit.finish();
+    if (committed)
         return true;
-    const QString error
-        = done ? JournalProblem::of(m_path, query.lastError(), m_busyTimeoutMs) : m_error;
-    query.exec(QStringLiteral("ROLLBACK"));
+    QSqlQuery(QSqlDatabase::database(m_connection, false)).exec(QStringLiteral("ROLLBACK"));
     return fail(error);
 }
 
