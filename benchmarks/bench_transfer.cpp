@@ -5,7 +5,8 @@
 // The user's cache is never read or written. Each download's write runs twice, on a fresh
 // drive: without the journal and with one (a temporary file), the entries begun before the
 // write and completed as the values come back; `bench_transfer [ROUNDS]` repeats it all and
-// prints each case's fastest, median and slowest write and the journal's share of the median.
+// prints each case's fastest, median and slowest write and the journal's share of the median;
+// `bench_transfer ROUNDS PROTOCOL:BAUD` runs that line alone.
 #include "bus/LinkFactory.h"
 #include "client/ClientTiming.h"
 #include "client/DriveClient.h"
@@ -268,10 +269,22 @@ int main(int argc, char **argv)
         std::fprintf(stderr, "%s\n", qPrintable(journal.errorString()));
         return 1;
     }
+    QList<Case> lines { Case { Protocol::Hsp5, 38400 }, Case { Protocol::Hsp5, 115200 },
+                        Case { Protocol::Din66019II, 38400 } };
+    if (argc > 2) {
+        // `bench_transfer ROUNDS hsp5:115200`: that line alone, for more rounds in less time.
+        const QStringList line = QString::fromLocal8Bit(argv[2]).split(u':');
+        const std::optional<Protocol> protocol = protocolFromName(line.value(0));
+        const qint32 baud = line.value(1).toInt();
+        if (!protocol || baud <= 0) {
+            std::fprintf(stderr, "usage: bench_transfer [ROUNDS [PROTOCOL:BAUD]]\n");
+            return 2;
+        }
+        lines = { Case { *protocol, baud } };
+    }
     QList<Case> cases;
     for (int round = 0; round < rounds; ++round) {
-        for (const Case &line : { Case { Protocol::Hsp5, 38400 }, Case { Protocol::Hsp5, 115200 },
-                                  Case { Protocol::Din66019II, 38400 } }) {
+        for (const Case &line : std::as_const(lines)) {
             // Alternating, so that a change in the machine's load falls on both alike.
             const bool journalFirst = round % 2 == 1;
             cases << Case { line.protocol, line.baud, journalFirst }
