@@ -189,8 +189,7 @@ bool MetadataCache::store(const DriveKind &kind, const DriveDescription &drive, 
             languages = root->value(kLanguagesKey).toObject();
     }
     languages.insert(QString::number(drive.language),
-                     QJsonDocument::fromJson(ParameterDocument::toJson(metadataOnly(drive)))
-                         .object());
+                     ParameterDocument::toJsonObject(metadataOnly(drive)));
     const QJsonObject root{
         {kFormatKey, kFormat},
         {kVersionKey, kVersion},

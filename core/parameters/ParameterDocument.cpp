@@ -141,11 +141,16 @@ const QString ParameterDocument::kFormat = QStringLiteral("drivedesk-parameters"
 
 QByteArray ParameterDocument::toJson(const DriveDescription &drive)
 {
+    return QJsonDocument(toJsonObject(drive)).toJson(QJsonDocument::Indented);
+}
+
+QJsonObject ParameterDocument::toJsonObject(const DriveDescription &drive)
+{
     const QList<GroupAddress> groupAddresses = ParameterId::groupsOf(drive);
     QJsonArray groups;
     for (const GroupDescription &group : drive.groups)
         groups.append(writeGroup(group, groupAddresses));
-    const QJsonObject root {
+    return QJsonObject {
         { QStringLiteral("format"), kFormat },
         { QStringLiteral("version"), kVersion },
         { QStringLiteral("drive"),
@@ -159,7 +164,6 @@ QByteArray ParameterDocument::toJson(const DriveDescription &drive)
           } },
         { QStringLiteral("groups"), groups },
     };
-    return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
 
 bool ParameterDocument::save(const QString &path, const DriveDescription &drive, QString *error)

@@ -4,6 +4,7 @@
 
 #include <QByteArray>
 #include <QCoreApplication>
+#include <QJsonObject>
 #include <QString>
 
 #include <optional>
@@ -22,6 +23,9 @@ public:
     static const QString kFormat; // "drivedesk-parameters"
 
     static QByteArray toJson(const DriveDescription &drive);
+    // The same document as an object, for a file that holds it inside its own (the metadata
+    // cache) without writing and parsing it again.
+    static QJsonObject toJsonObject(const DriveDescription &drive);
     // Nothing, with the place, the reason and the line and column ("uF.07, set 0: expected an
     // integer (line 40, column 17)"; outside a parameter "groups[2].name: ..."), for anything
     // that is not a valid version-1 parameter file.
