@@ -139,6 +139,9 @@ void ClientWorker::onAnswer(const Telegram &answer)
         return;
     }
     Request owned = takeInFlight(request->ticket);
+    // What was queued behind it goes out before the answer is handled: it never depended on
+    // the answer, and on a half-duplex line the drive would wait for the handling.
+    pump();
     complete(*owned, answer.ack == Ack::Ok ? Reply::Status::Ok : Reply::Status::Refused, &answer);
 }
 
