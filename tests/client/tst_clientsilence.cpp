@@ -247,10 +247,14 @@ private slots:
         connect(&run, &DownloadRun::failed, this, [&](const QString &why) { failed = why; });
         connect(&run, &DownloadRun::finished, this,
                 [&](const DownloadReport &written) { report = written; });
+        // Frozen when the fifth write went out: counted in telegrams, which the drive answers
+        // from this thread, not in progress reports, which come at most 25 times a second and
+        // may not come before a quick download is over.
         QElapsedTimer sinceFreeze;
-        connect(&run, &DownloadRun::progress, this, [&](int done, int, const QString &) {
-            if (run.stage() == DownloadRun::Stage::Writing && done >= 5
-                && !server.bus().isSilent()) {
+        int writesSent = 0;
+        connect(s.client.get(), &DriveClient::traffic, this, [&](const TrafficRecord &record) {
+            if (record.kind == TrafficRecord::Kind::Sent && record.telegram
+                && record.telegram->isWrite() && ++writesSent == 5) {
                 server.bus().setSilent(true);
                 sinceFreeze.start();
             }
