@@ -5,7 +5,6 @@
 #include "ReplyCheck.h"
 
 #include <QStringList>
-#include <QTimer>
 
 #include <algorithm>
 
@@ -318,23 +317,6 @@ void ClientWorker::cancelAll()
         tickets.push_back(request->ticket);
     for (quint64 ticket : tickets)
         cancelTicket(ticket);
-}
-
-void ClientWorker::failAll(Reply::Status status, const QString &detail)
-{
-    std::vector<Request> all;
-    for (Request &request : m_inFlight)
-        all.push_back(std::move(request));
-    for (Request &request : m_queue)
-        all.push_back(std::move(request));
-    m_inFlight.clear();
-    m_queue.clear();
-    if (m_deadlineTimer)
-        m_deadlineTimer->stop();
-    for (Request &request : all) {
-        if (!request->completed())
-            complete(*request, status, nullptr, detail);
-    }
 }
 
 ClientWorker::Request ClientWorker::takeInFlight(quint64 ticket)

@@ -1,9 +1,11 @@
 // How a ClientWorker opens its link (at a fixed rate or after a baud-rate search), loses it and
-// closes it, and the states and silence it reports on the way.
+// closes it, the states and silence it reports on the way, and the requests a lost link fails.
 #include "ClientWorker.h"
 
 #include "BaudRateSearch.h"
 #include "ClientTiming.h"
+
+#include <QTimer>
 
 namespace DriveDesk {
 
@@ -170,6 +172,23 @@ void ClientWorker::onLinkFailed(const QString &reason)
         dropLink();
         emit linkLost(reason);
         failAll(Reply::Status::LinkLost, reason);
+    }
+}
+
+void ClientWorker::failAll(Reply::Status status, const QString &detail)
+{
+    std::vector<Request> all;
+    for (Request &request : m_inFlight)
+        all.push_back(std::move(request));
+    for (Request &request : m_queue)
+        all.push_back(std::move(request));
+    m_inFlight.clear();
+    m_queue.clear();
+    if (m_deadlineTimer)
+        m_deadlineTimer->stop();
+    for (Request &request : all) {
+        if (!request->completed())
+            complete(*request, status, nullptr, detail);
     }
 }
 
