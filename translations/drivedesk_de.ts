@@ -2073,6 +2073,10 @@
         <source>the download ended first</source>
         <translation>der Download endete vorher</translation>
     </message>
+    <message>
+        <source>the journal cannot record the download: %1</source>
+        <translation>das Journal kann den Download nicht festhalten: %1</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::DriveInfoDialog</name>

@@ -2073,6 +2073,10 @@
         <source>the download ended first</source>
         <translation>the download ended first</translation>
     </message>
+    <message>
+        <source>the journal cannot record the download: %1</source>
+        <translation>the journal cannot record the download: %1</translation>
+    </message>
 </context>
 <context>
     <name>DriveDesk::DriveInfoDialog</name>
