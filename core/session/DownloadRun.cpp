@@ -3,6 +3,8 @@
 #include "parameters/SetList.h"
 #include "session/WriteChangesJob.h"
 
+#include <algorithm>
+
 namespace DriveDesk {
 
 DownloadRun::DownloadRun(DriveClient *client, Protocol protocol, DriveDescription file,
@@ -89,7 +91,14 @@ void DownloadRun::write()
     // telegram does not wait for the journal to take them all.
     const auto items = int(m_plan.items.size());
     const int first = m_journal ? std::min(1, items) : items;
-    if (QString error; m_journal && !beginJournal(0, first, &error)) {
+    // Only the journal's own failure may stop the download after its first item: what the
+    // plan cannot journal refuses it before anything is sent.
+    const auto undescribed = std::find_if(m_plan.items.cbegin(), m_plan.items.cend(),
+                                          [this](const DownloadItem &i) { return !parameterOf(i); });
+    QString error;
+    if (m_journal && undescribed != m_plan.items.cend())
+        error = tr("%1 is not described").arg(undescribed->id);
+    if (!error.isEmpty() || (m_journal && !beginJournal(0, first, &error))) {
         m_stage = Stage::Done;
         return emit failed(
             tr("the journal cannot record the download: %1; nothing was written").arg(error));
@@ -106,7 +115,7 @@ void DownloadRun::write()
     m_writing.setFuture(m_client->run(m_job, m_driveAddress));
     if (first == items)
         return;
-    if (QString error; beginJournal(first, items, &error)) {
+    if (beginJournal(first, items, &error)) {
         m_job->release(items);
     } else {
         // What was sent is journaled; nothing more goes out.
@@ -132,12 +141,7 @@ bool DownloadRun::beginJournal(int begin, int end, QString *error)
     QList<EditJournal::Write> writes;
     for (int index = begin; index < end; ++index) {
         const DownloadItem &item = m_plan.items.at(index);
-        const ParameterDescription *parameter = parameterOf(item);
-        if (!parameter) {
-            *error = tr("%1 is not described").arg(item.id);
-            return false;
-        }
-        EditJournal::Write write { item.id, parameter, item.change.steps, item.before };
+        EditJournal::Write write { item.id, parameterOf(item), item.change.steps, item.before };
         for (WriteStep &step : write.steps)
             step.setMask = SetList::setsWritten(item.change.setProgrammable, step.setMask);
         writes << write;
